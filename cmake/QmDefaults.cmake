@@ -1,0 +1,68 @@
+# Project-wide compile settings applied per target with qm_defaults(<target>), so that
+# third-party code (doctest, benchmark) is never compiled with our -Werror.
+set(QM_WARNINGS -Wall -Wextra -Wpedantic)
+if(QM_WERROR)
+  list(APPEND QM_WARNINGS -Werror)
+endif()
+
+if(QM_SANITIZE)
+  # Applied globally so that every object, including test mains, shares one runtime.
+  add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
+  add_link_options(-fsanitize=address,undefined)
+  add_compile_definitions(QM_ENABLE_ASSERTS=1)
+endif()
+
+function(qm_defaults target)
+  get_target_property(kind ${target} TYPE)
+  if(kind STREQUAL "INTERFACE_LIBRARY")
+    return()
+  endif()
+  target_compile_options(${target} PRIVATE ${QM_WARNINGS})
+  # QM_ASSERT is active in debug and test builds (STYLE.md section 4).
+  target_compile_definitions(${target} PRIVATE $<$<CONFIG:Debug>:QM_ENABLE_ASSERTS=1>)
+endfunction()
+
+
+# qm_module(<target> DIR <dir> [LINKS <targets...>]): one library per module folder.
+# Sources are the folder's *.cpp (and detail/*.cpp), excluding *_fuzz.cpp and main.cpp. Headers are
+# exposed through a per-target include root holding a single link <dir> -> source folder, so
+# `#include "atms/label.hpp"` works only for targets that link qm_atms: a wrong-way include fails to
+# compile because its path is not there (STYLE.md section 2).
+function(qm_module target)
+  cmake_parse_arguments(M "" "DIR" "LINKS" ${ARGN})
+  set(src_dir ${CMAKE_SOURCE_DIR}/${M_DIR})
+  file(GLOB sources CONFIGURE_DEPENDS ${src_dir}/*.cpp ${src_dir}/detail/*.cpp)
+  list(FILTER sources EXCLUDE REGEX "(_fuzz|/main)\\.cpp$")
+  set(inc_root ${CMAKE_BINARY_DIR}/include/${target})
+  file(MAKE_DIRECTORY ${inc_root})
+  if(NOT EXISTS ${inc_root}/${M_DIR})
+    file(CREATE_LINK ${src_dir} ${inc_root}/${M_DIR} SYMBOLIC)
+  endif()
+  if(sources)
+    add_library(${target} STATIC ${sources})
+    target_include_directories(${target} PUBLIC ${inc_root})
+    target_link_libraries(${target} PUBLIC qm_support ${M_LINKS})
+    qm_defaults(${target})
+  else()
+    add_library(${target} INTERFACE)
+    target_include_directories(${target} INTERFACE ${inc_root})
+    target_link_libraries(${target} INTERFACE qm_support ${M_LINKS})
+  endif()
+endfunction()
+
+# qm_module_tests(<module> LIBS <targets...>): every tests/<module>/*_test.cpp becomes its own
+# doctest executable <module>_<file> registered with ctest (one test file per header).
+function(qm_module_tests module)
+  cmake_parse_arguments(T "" "" "LIBS" ${ARGN})
+  file(GLOB tests CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*_test.cpp)
+  foreach(t ${tests})
+    get_filename_component(stem ${t} NAME_WE)
+    set(name ${module}_${stem})
+    add_executable(${name} ${t})
+    target_link_libraries(${name} PRIVATE ${T_LIBS} qm_doctest_main doctest::doctest)
+    target_compile_definitions(${name} PRIVATE QM_ENABLE_ASSERTS=1
+      QM_SOURCE_DIR="${CMAKE_SOURCE_DIR}" QM_BINARY_DIR="${CMAKE_BINARY_DIR}")
+    qm_defaults(${name})
+    add_test(NAME ${name} COMMAND ${name} WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+  endforeach()
+endfunction()
