@@ -1,0 +1,169 @@
+// atms/atms.hpp
+// Provides:   Atms, an assumption-based truth maintenance system (de Kleer 1986, "An assumption-based
+//             TMS"; the design of BPS atms.lisp, typed). Nodes carry an opaque DatumId; Horn clause
+//             justifications carry an opaque InformantId. Queries: labels, consistency, minimal
+//             nogoods, interpretations over choice sets, explanations.
+// Ownership:  an Atms owns its nodes, assumptions, environments and justifications; all are referred
+//             to by dense ids valid for the lifetime of the Atms. Nothing is ever removed. There is no
+//             global state: any number of Atms objects can coexist. Not thread safe.
+// Invariants: after every public call returns, each node's label is
+//               sound      every label env E derives the node from E and the premises,
+//               consistent no label env is nogood,
+//               minimal    no label env is a superset of another,
+//               complete   every consistent env deriving the node is a superset of a label env;
+//             the contradiction node's label is always empty (its would-be envs become nogoods).
+// Reentrancy: consumers and on_first_label callbacks never run during propagation; they are queued
+//             and run, FIFO, just before the public call that caused them returns. They may call any
+//             member (including justify); events they cause are appended to the same queue.
+// Errors:     every violated `Pre:` throws qm::InternalError (QM_REQUIRE), never UB.
+// Knows nothing of rules, patterns or mechanics.
+#pragma once
+#include "atms/consumer.hpp"
+#include "atms/environment.hpp"
+#include "atms/environment_table.hpp"
+#include "atms/explanation.hpp"
+#include "atms/fwd.hpp"
+#include "atms/ids.hpp"
+#include "atms/justification.hpp"
+#include "atms/label.hpp"
+#include <initializer_list>
+#include "atms/nogood_database.hpp"
+#include <cstddef>
+#include <deque>
+#include <functional>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace qm::atms {
+class Atms {
+public:
+    Atms();
+    Atms(const Atms&) = delete;
+    Atms& operator=(const Atms&) = delete;
+
+    // ---- building -------------------------------------------------------------------------------
+    NodeId add_node(DatumId d);        // a derived node; empty label until justified
+    NodeId add_premise(DatumId d);     // holds in {}: label {{}}
+    NodeId add_assumption(DatumId d);  // label {{a}} for a fresh assumption a
+    // Records the Horn clause antecedents -> consequent and propagates labels. Justifying an
+    // assumption node is allowed (de Kleer); justifying the contradiction node records nogoods.
+    // Duplicate antecedents are ignored. An empty antecedent list makes the consequent true.
+    // Pre: all ids valid; consequent is not a premise; no antecedent is the contradiction node.
+    JustId justify(InformantId why, std::span<const NodeId> antecedents, NodeId consequent);
+    JustId justify(InformantId why, std::initializer_list<NodeId> antecedents, NodeId consequent) {
+        return justify(why, std::span<const NodeId>(antecedents.begin(), antecedents.size()), consequent);
+    }
+    // = justify(why, antecedents, contradiction()): the antecedents cannot hold together.
+    JustId add_nogood(InformantId why, std::span<const NodeId> antecedents);
+    JustId add_nogood(InformantId why, std::initializer_list<NodeId> antecedents) {
+        return add_nogood(why, std::span<const NodeId>(antecedents.begin(), antecedents.size()));
+    }
+
+    // ---- nodes ----------------------------------------------------------------------------------
+    [[nodiscard]] NodeId contradiction() const noexcept { return contradiction_; }
+    [[nodiscard]] std::size_t node_count() const noexcept { return nodes_.size(); }
+    [[nodiscard]] std::size_t assumption_count() const noexcept { return assumption_nodes_.size(); }
+    [[nodiscard]] std::size_t justification_count() const noexcept { return justs_.size(); }
+    [[nodiscard]] std::size_t environment_count() const noexcept { return envs_.size(); }
+    // Pre (all node queries): the id was issued by this Atms.
+    [[nodiscard]] DatumId datum(NodeId n) const;
+    [[nodiscard]] bool is_premise(NodeId n) const;
+    [[nodiscard]] std::optional<AssumptionId> assumption_of(NodeId n) const;
+    // Pre: a was issued by this Atms.
+    [[nodiscard]] NodeId node_of(AssumptionId a) const;
+    [[nodiscard]] const std::vector<JustId>& justifications(NodeId n) const;  // those concluding n
+    [[nodiscard]] const std::vector<JustId>& consequences(NodeId n) const;    // those using n
+    [[nodiscard]] const Justification& justification(JustId j) const;        // Pre: j valid
+
+    // ---- labels and consistency -----------------------------------------------------------------
+    // The label: minimal consistent environments in which n holds, sorted by EnvId.
+    [[nodiscard]] const std::vector<EnvId>& label(NodeId n) const;
+    // Some label env is a subset of env, and env is consistent. Pre: n, env valid.
+    [[nodiscard]] bool holds_in(NodeId n, EnvId env) const;
+    [[nodiscard]] bool is_true(NodeId n) const;   // holds in {}
+    [[nodiscard]] bool is_in(NodeId n) const;     // holds in some consistent env (label non-empty)
+    [[nodiscard]] bool is_consistent(EnvId env) const;  // no nogood is a subset. Pre: env valid
+    // The interned environment of a set of assumptions (duplicates collapse). Pre: ids valid.
+    EnvId environment(std::span<const AssumptionId> as);
+    EnvId environment(std::initializer_list<AssumptionId> as) {
+        return environment(std::span<const AssumptionId>(as.begin(), as.size()));
+    }
+    [[nodiscard]] EnvId empty_environment() const noexcept { return empty_env_; }
+    [[nodiscard]] const Environment& env(EnvId e) const;  // Pre: e valid
+    [[nodiscard]] std::vector<EnvId> minimal_nogoods() const;  // sorted by EnvId
+
+    // ---- interpretations (interpretations.hpp has the algorithm) --------------------------------
+    // All consistent environments base + exactly one assumption from each choice set, found by
+    // backtracking with nogood pruning (never the full product), in lexicographic order of the
+    // choices (first set varies slowest). No choice sets: {base} if base is consistent. An empty
+    // set: none. Pre: ids valid; no assumption occurs in two sets.
+    std::vector<EnvId> interpretations(std::span<const std::vector<AssumptionId>> choice_sets);
+    std::vector<EnvId> interpretations(std::span<const std::vector<AssumptionId>> choice_sets, EnvId base);
+    // Streaming form: calls visit(env) for each interpretation without interning it; visit returns
+    // false to stop. Returns the number visited. Same preconditions.
+    std::size_t for_each_interpretation(std::span<const std::vector<AssumptionId>> choice_sets, EnvId base,
+                                        const std::function<bool(const Environment&)>& visit) const;
+
+    // ---- explanations ---------------------------------------------------------------------------
+    // A well-founded justification tree deriving n from premises and assumptions of env.
+    // Pre: holds_in(n, env).
+    [[nodiscard]] Explanation explain(NodeId n, EnvId env) const;
+    // The justifications deriving the contradiction from the assumptions of env.
+    // Pre: !is_consistent(env).
+    [[nodiscard]] Explanation explain_nogood(EnvId env) const;
+
+    // ---- consumers ------------------------------------------------------------------------------
+    // Runs f(n) exactly once: when n's label next becomes non-empty, or, if it is non-empty now,
+    // before this call returns (or, if called from inside a callback, after that callback).
+    // Pre: n valid and not the contradiction node (whose label is always empty).
+    void on_first_label(NodeId n, std::function<void(NodeId)> f);
+    // Pre: c is not already registered. c must outlive this Atms or be removed first.
+    void add_consumer(Consumer& c);
+    void remove_consumer(Consumer& c);  // Pre: c is registered
+
+private:
+    struct NodeData {
+        DatumId datum;
+        std::optional<AssumptionId> assumption;
+        bool premise = false;
+        std::vector<JustId> justifications;  // concluding this node
+        std::vector<JustId> consequences;    // having this node as an antecedent
+        std::vector<std::function<void(NodeId)>> first_label_callbacks;
+    };
+    struct Pending {  // a propagation work item (the BPS `propagate` call, made iterative)
+        JustId just;
+        std::optional<NodeId> changed;  // the antecedent whose label grew, if any
+        std::vector<EnvId> envs;        // its new label envs
+    };
+    struct Event {
+        enum class Kind { label_nonempty, nogood } kind;
+        std::uint32_t id;
+    };
+
+    NodeId new_node(DatumId d);
+    void require_node(NodeId n) const;
+    void require_env(EnvId e) const;
+    void propagate_all();
+    void propagate(const Pending& p);
+    void update(std::vector<EnvId> envs, NodeId consequent, JustId just);
+    void new_nogood(EnvId env);
+    void run_events();
+    [[nodiscard]] DerivationBase derivation_base(const Environment& e,
+                                                 std::vector<std::pair<NodeId, AssumptionId>>& scratch) const;
+
+    EnvironmentTable envs_;
+    NogoodDatabase nogoods_;
+    IdVector<NodeId, NodeData> nodes_;
+    IdVector<NodeId, Label> labels_;
+    std::vector<Justification> justs_;  // indexed by JustId
+    IdVector<AssumptionId, NodeId> assumption_nodes_;
+    std::vector<NodeId> premises_;
+    NodeId contradiction_{};
+    EnvId empty_env_{};
+    std::deque<Pending> work_;
+    std::deque<Event> events_;
+    std::vector<Consumer*> consumers_;
+    bool running_events_ = false;
+};
+}  // namespace qm::atms

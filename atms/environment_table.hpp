@@ -1,0 +1,59 @@
+// atms/environment_table.hpp
+// Provides:   EnvironmentTable, which interns environments (the BPS env table): equal assumption
+//             sets always get the same EnvId, so comparing environments is comparing ids. Per env it
+//             caches the size, the nogood flag and the nodes whose labels have held it; it indexes
+//             environments by assumption and memoises unions.
+// Ownership:  owns every Environment it hands out; ids and references stay valid for its lifetime
+//             (references into the table may be invalidated by interning; ids never are).
+// Invariants: the nogood flag of an env is true iff some nogood of the NogoodDatabase passed to
+//             intern()/join() is a subset of it, provided the owner calls mark_nogood on every
+//             superset when a nogood is added (Atms does).
+// Knows nothing of justifications or rules.
+#pragma once
+#include "atms/environment.hpp"
+#include "atms/ids.hpp"
+#include "atms/nogood_database.hpp"
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace qm::atms {
+class EnvironmentTable {
+public:
+    EnvironmentTable() = default;
+    EnvironmentTable(const EnvironmentTable&) = delete;
+    EnvironmentTable& operator=(const EnvironmentTable&) = delete;
+
+    // The id of e, creating it (with its nogood flag from `nogoods`) if new.
+    EnvId intern(const Environment& e, const NogoodDatabase& nogoods);
+    // The union of x and y, memoised. Pre: x, y valid.
+    EnvId join(EnvId x, EnvId y, const NogoodDatabase& nogoods);
+
+    [[nodiscard]] std::size_t size() const noexcept { return envs_.size(); }
+    [[nodiscard]] bool contains(EnvId e) const noexcept { return envs_.contains(e); }
+    [[nodiscard]] const Environment& operator[](EnvId e) const { return envs_[e].env; }
+    [[nodiscard]] std::uint32_t count(EnvId e) const { return envs_[e].count; }  // |e|
+    [[nodiscard]] bool is_nogood(EnvId e) const { return envs_[e].nogood; }
+    void mark_nogood(EnvId e) { envs_[e].nogood = true; }
+    // x is a subset of y (fast size check first).
+    [[nodiscard]] bool subset(EnvId x, EnvId y) const;
+    // Nodes whose label has held e (the BPS env-nodes field); may list nodes that dropped e since.
+    [[nodiscard]] const std::vector<NodeId>& nodes(EnvId e) const { return envs_[e].nodes; }
+    void add_node(EnvId e, NodeId n) { envs_[e].nodes.push_back(n); }
+    // Every interned env containing a, in creation order.
+    [[nodiscard]] const std::vector<EnvId>& containing(AssumptionId a) const;
+
+private:
+    struct Entry {
+        Environment env;
+        std::uint32_t count = 0;
+        bool nogood = false;
+        std::vector<NodeId> nodes;
+    };
+    IdVector<EnvId, Entry> envs_;
+    std::unordered_map<Environment, EnvId, EnvironmentHash> index_;
+    std::unordered_map<std::uint64_t, EnvId> joins_;  // key: (min id << 32) | max id
+    std::vector<std::vector<EnvId>> by_assumption_;   // indexed by AssumptionId::value
+    std::vector<EnvId> none_;
+};
+}  // namespace qm::atms

@@ -1,0 +1,43 @@
+// atms/nogood_database.hpp
+// Provides:   NogoodDatabase, the set of minimal nogoods (environments known to be inconsistent) with
+//             indexes that make the two consistency questions fast:
+//               subsumes(e)          is some nogood a subset of e?  (checks only nogoods whose
+//                                    lowest assumption is in e)
+//               subsumes_with(w, a)  is some nogood containing a a subset of w?  (the backtracking
+//                                    step of interpretations: w was consistent before a was added)
+// Ownership:  owns copies of its nogood environments; EnvIds refer to the owner's EnvironmentTable.
+// Invariants: live nogoods are pairwise incomparable (a new nogood retires its supersets).
+// Knows nothing of labels, nodes or rules.
+#pragma once
+#include "atms/environment.hpp"
+#include "atms/ids.hpp"
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace qm::atms {
+class NogoodDatabase {
+public:
+    [[nodiscard]] bool subsumes(const Environment& e) const noexcept;
+    [[nodiscard]] bool subsumes_with(std::span<const std::uint64_t> words, AssumptionId a) const noexcept;
+    // Adds env as a minimal nogood, retiring the live nogoods that are supersets of it.
+    // Pre: !subsumes(e) (an already subsumed nogood adds nothing and is the caller's bug).
+    void add(EnvId id, const Environment& e);
+    // Live nogoods, in order of addition.
+    [[nodiscard]] std::vector<EnvId> minimal() const;
+    [[nodiscard]] std::size_t size() const noexcept { return live_; }
+    [[nodiscard]] bool empty_env_is_nogood() const noexcept { return empty_nogood_; }
+
+private:
+    struct Entry {
+        EnvId id;
+        Environment env;
+        bool live = true;
+    };
+    std::vector<Entry> entries_;
+    std::vector<std::vector<std::uint32_t>> by_first_;    // lowest assumption -> entry indices
+    std::vector<std::vector<std::uint32_t>> containing_;  // assumption -> entry indices
+    std::size_t live_ = 0;
+    bool empty_nogood_ = false;
+};
+}  // namespace qm::atms
