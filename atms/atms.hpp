@@ -137,7 +137,7 @@ private:
         std::vector<EnvId> envs;        // its new label envs
     };
     struct Event {
-        enum class Kind { label_nonempty, nogood } kind;
+        enum class Kind { label_nonempty, callbacks, nogood } kind;
         std::uint32_t id;
     };
 

@@ -3,8 +3,9 @@
 //             indexes that make the two consistency questions fast:
 //               subsumes(e)          is some nogood a subset of e?  (checks only nogoods whose
 //                                    lowest assumption is in e)
-//               subsumes_with(w, a)  is some nogood containing a a subset of w?  (the backtracking
-//                                    step of interpretations: w was consistent before a was added)
+//               subsumes_with(w, a)  is some live nogood containing a a subset of w?  When w minus
+//                                    a is consistent (the backtracking step of interpretations),
+//                                    this equals subsumes(w).
 // Ownership:  owns copies of its nogood environments; EnvIds refer to the owner's EnvironmentTable.
 // Invariants: live nogoods are pairwise incomparable (a new nogood retires its supersets).
 // Knows nothing of labels, nodes or rules.

@@ -1,0 +1,77 @@
+// atms/explanation.cpp: explanations by forward chaining (BPS explain-node). Chaining with one
+// counter per justification derives each node through the first justification whose antecedents
+// are all derived, so the recorded reasons are well founded by construction.
+#include "atms/explanation.hpp"
+
+#include "atms/justification.hpp"
+#include "qm/assert.hpp"
+#include <algorithm>
+#include <cstdint>
+
+namespace qm::atms {
+namespace {
+enum class How : std::uint8_t { underived, premise, assumption, justified };
+}
+
+std::optional<Explanation> derive_explanation(std::span<const Justification> justs, std::size_t node_count,
+                                              const DerivationBase& base, NodeId goal) {
+    QM_REQUIRE(goal.value < node_count, "unknown node id");
+    std::vector<How> how(node_count, How::underived);
+    std::vector<std::uint32_t> reason(node_count, 0);       // JustId value when How::justified
+    std::vector<AssumptionId> assumption_of(node_count);    // when How::assumption
+    std::vector<std::vector<std::uint32_t>> users(node_count);
+    std::vector<std::size_t> missing(justs.size());
+    std::vector<NodeId> queue;
+
+    auto derive = [&](NodeId n, How h, std::uint32_t j) {
+        if (how[n.value] != How::underived) return;
+        how[n.value] = h;
+        reason[n.value] = j;
+        queue.push_back(n);
+    };
+    for (std::uint32_t j = 0; j < justs.size(); ++j) {
+        missing[j] = justs[j].antecedents.size();
+        for (NodeId a : justs[j].antecedents) users[a.value].push_back(j);
+    }
+    for (NodeId p : base.premises) derive(p, How::premise, 0);
+    for (auto [n, a] : base.assumptions) {
+        assumption_of[n.value] = a;
+        derive(n, How::assumption, 0);
+    }
+    for (std::uint32_t j = 0; j < justs.size(); ++j)
+        if (missing[j] == 0) derive(justs[j].consequent, How::justified, j);
+    for (std::size_t head = 0; head < queue.size() && how[goal.value] == How::underived; ++head) {
+        for (std::uint32_t j : users[queue[head].value])
+            if (--missing[j] == 0) derive(justs[j].consequent, How::justified, j);
+    }
+    if (how[goal.value] == How::underived) return std::nullopt;
+
+    // Post-order walk from the goal: antecedents before the step that uses them.
+    Explanation out;
+    out.node = goal;
+    std::vector<bool> done(node_count, false);
+    std::vector<std::pair<NodeId, bool>> stack{{goal, false}};
+    while (!stack.empty()) {
+        auto [n, expanded] = stack.back();
+        stack.pop_back();
+        if (done[n.value]) continue;
+        if (how[n.value] == How::premise) {
+            done[n.value] = true;
+            out.premises.push_back(n);
+        } else if (how[n.value] == How::assumption) {
+            done[n.value] = true;
+            out.assumptions.push_back(assumption_of[n.value]);
+        } else if (expanded) {
+            done[n.value] = true;
+            out.steps.push_back(JustId{reason[n.value]});
+        } else {
+            stack.emplace_back(n, true);
+            for (NodeId a : justs[reason[n.value]].antecedents)
+                if (!done[a.value]) stack.emplace_back(a, false);
+        }
+    }
+    std::sort(out.premises.begin(), out.premises.end());
+    std::sort(out.assumptions.begin(), out.assumptions.end());
+    return out;
+}
+}  // namespace qm::atms

@@ -1,0 +1,176 @@
+// tests/atms/interpretations_test.cpp: interpretation enumeration against brute-force products,
+// and N-queens solution counts (one choice set per row, pairwise nogoods for attacks).
+#include "atms/interpretations.hpp"
+
+#include "atms/atms.hpp"
+#include <algorithm>
+#include <cstdlib>
+#include <doctest/doctest.h>
+#include <random>
+
+using namespace qm::atms;
+
+namespace {
+std::uint64_t mask_of(const Environment& e) {
+    std::uint64_t m = 0;
+    for (AssumptionId a : e.assumptions()) m |= std::uint64_t{1} << a.value;
+    return m;
+}
+
+// All base + one-per-set products in lexicographic order, filtered by the nogood masks.
+void brute_force(const std::vector<std::vector<AssumptionId>>& sets, std::size_t depth, std::uint64_t acc,
+                 const std::vector<std::uint64_t>& nogoods, std::vector<std::uint64_t>& out) {
+    if (depth == sets.size()) {
+        if (std::none_of(nogoods.begin(), nogoods.end(), [&](std::uint64_t n) { return (n & acc) == n; }) &&
+            std::find(out.begin(), out.end(), acc) == out.end())
+            out.push_back(acc);
+        return;
+    }
+    for (AssumptionId a : sets[depth]) brute_force(sets, depth + 1, acc | (std::uint64_t{1} << a.value), nogoods, out);
+}
+
+std::size_t queens(int n) {
+    Atms atms;
+    std::vector<std::vector<AssumptionId>> rows(static_cast<std::size_t>(n));
+    std::vector<NodeId> node(static_cast<std::size_t>(n * n));
+    for (int r = 0; r < n; ++r)
+        for (int c = 0; c < n; ++c) {
+            node[static_cast<std::size_t>(r * n + c)] = atms.add_assumption(DatumId{static_cast<std::uint32_t>(r * n + c)});
+            rows[static_cast<std::size_t>(r)].push_back(*atms.assumption_of(node[static_cast<std::size_t>(r * n + c)]));
+        }
+    for (int r1 = 0; r1 < n; ++r1)
+        for (int c1 = 0; c1 < n; ++c1)
+            for (int r2 = r1 + 1; r2 < n; ++r2)
+                for (int c2 = 0; c2 < n; ++c2)
+                    if (c1 == c2 || std::abs(r1 - r2) == std::abs(c1 - c2))
+                        atms.add_nogood(InformantId{0}, {node[static_cast<std::size_t>(r1 * n + c1)],
+                                                         node[static_cast<std::size_t>(r2 * n + c2)]});
+    const auto solutions = atms.interpretations(rows);
+    for (EnvId e : solutions) {
+        REQUIRE(atms.is_consistent(e));
+        REQUIRE(atms.env(e).size() == static_cast<std::uint32_t>(n));
+    }
+    return solutions.size();
+}
+}  // namespace
+
+TEST_CASE("atms/interpretations: N-queens counts for N = 4..8") {
+    CHECK(queens(4) == 2);
+    CHECK(queens(5) == 10);
+    CHECK(queens(6) == 4);
+    CHECK(queens(7) == 40);
+    CHECK(queens(8) == 92);
+}
+
+TEST_CASE("atms/interpretations: random choice sets and nogoods agree with brute force") {
+    std::mt19937 rng(17);
+    auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+    for (int round = 0; round < 400; ++round) {
+        CAPTURE(round);
+        Atms atms;
+        const int k = pick(4, 12);
+        std::vector<NodeId> nodes;
+        for (int i = 0; i < k; ++i) nodes.push_back(atms.add_assumption(DatumId{0}));
+        // Partition a random subset of the assumptions into choice sets (some possibly empty).
+        std::vector<AssumptionId> order;
+        for (int i = 0; i < k; ++i) order.push_back(AssumptionId{static_cast<std::uint32_t>(i)});
+        std::shuffle(order.begin(), order.end(), rng);
+        std::vector<std::vector<AssumptionId>> sets(static_cast<std::size_t>(pick(0, 4)));
+        for (AssumptionId a : order)
+            if (!sets.empty() && pick(0, 5) > 0) sets[static_cast<std::size_t>(pick(0, static_cast<int>(sets.size()) - 1))].push_back(a);
+        std::vector<std::uint64_t> nogood_masks;
+        const int n_nogoods = pick(0, 6);
+        for (int i = 0; i < n_nogoods; ++i) {
+            std::vector<NodeId> ants;
+            std::uint64_t m = 0;
+            for (int j = pick(1, 3); j > 0; --j) {
+                const int a = pick(0, k - 1);
+                ants.push_back(nodes[static_cast<std::size_t>(a)]);
+                m |= std::uint64_t{1} << a;
+            }
+            atms.add_nogood(InformantId{0}, ants);
+            nogood_masks.push_back(m);
+        }
+        // A random base of 0-2 assumptions.
+        std::vector<AssumptionId> base_as;
+        std::uint64_t base_mask = 0;
+        for (int j = pick(0, 2); j > 0; --j) {
+            const auto a = static_cast<std::uint32_t>(pick(0, k - 1));
+            base_as.push_back(AssumptionId{a});
+            base_mask |= std::uint64_t{1} << a;
+        }
+        const EnvId base = atms.environment(base_as);
+        std::vector<std::uint64_t> expected;
+        brute_force(sets, 0, base_mask, nogood_masks, expected);
+        std::vector<std::uint64_t> got;
+        for (EnvId e : atms.interpretations(sets, base)) got.push_back(mask_of(atms.env(e)));
+        REQUIRE(got == expected);
+        // Without a base.
+        expected.clear();
+        brute_force(sets, 0, 0, nogood_masks, expected);
+        got.clear();
+        for (EnvId e : atms.interpretations(sets)) got.push_back(mask_of(atms.env(e)));
+        REQUIRE(got == expected);
+    }
+}
+
+TEST_CASE("atms/interpretations: the streaming form counts and stops early") {
+    Atms atms;
+    std::vector<std::vector<AssumptionId>> sets(3);
+    for (auto& s : sets)
+        for (int i = 0; i < 3; ++i) s.push_back(*atms.assumption_of(atms.add_assumption(DatumId{0})));
+    std::size_t calls = 0;
+    CHECK(atms.for_each_interpretation(sets, atms.empty_environment(), [&](const Environment&) {
+        ++calls;
+        return true;
+    }) == 27);
+    CHECK(calls == 27);
+    calls = 0;
+    CHECK(atms.for_each_interpretation(sets, atms.empty_environment(), [&](const Environment&) {
+        return ++calls < 5;
+    }) == 5);
+    CHECK(calls == 5);
+    // Streaming interns nothing.
+    const std::size_t envs = atms.environment_count();
+    (void)atms.for_each_interpretation(sets, atms.empty_environment(), [](const Environment&) { return true; });
+    CHECK(atms.environment_count() == envs);
+}
+
+TEST_CASE("atms/interpretations: edge cases: no sets, an empty set, an inconsistent base") {
+    Atms atms;
+    const NodeId a = atms.add_assumption(DatumId{0});
+    const NodeId b = atms.add_assumption(DatumId{0});
+    const AssumptionId aa = *atms.assumption_of(a), ab = *atms.assumption_of(b);
+    CHECK(atms.interpretations({}) == std::vector<EnvId>{atms.empty_environment()});
+    const std::vector<std::vector<AssumptionId>> with_empty{{aa}, {}};
+    CHECK(atms.interpretations(with_empty).empty());
+    atms.add_nogood(InformantId{0}, {a, b});
+    const std::vector<std::vector<AssumptionId>> one{{aa}};
+    CHECK(atms.interpretations(one, atms.environment({ab})).empty());
+    CHECK(atms.interpretations({}, atms.environment({aa, ab})).empty());
+}
+
+TEST_CASE("atms/interpretations: precondition violations are InternalError") {
+    Atms atms;
+    const AssumptionId a = *atms.assumption_of(atms.add_assumption(DatumId{0}));
+    const AssumptionId b = *atms.assumption_of(atms.add_assumption(DatumId{0}));
+    const std::vector<std::vector<AssumptionId>> twice{{a, b}, {b}};
+    CHECK_THROWS_AS((void)atms.interpretations(twice), qm::InternalError);
+    const std::vector<std::vector<AssumptionId>> unknown{{a, AssumptionId{9}}};
+    CHECK_THROWS_AS((void)atms.interpretations(unknown), qm::InternalError);
+    const std::vector<std::vector<AssumptionId>> fine{{a}};
+    CHECK_THROWS_AS((void)atms.interpretations(fine, EnvId{77}), qm::InternalError);
+}
+
+TEST_CASE("atms/interpretations: enumerate_interpretations works on a bare nogood database") {
+    NogoodDatabase db;
+    db.add(EnvId{0}, Environment::of(std::vector{AssumptionId{0}, AssumptionId{2}}));
+    const std::vector<std::vector<AssumptionId>> sets{{AssumptionId{0}, AssumptionId{1}}, {AssumptionId{2}, AssumptionId{3}}};
+    std::vector<std::uint64_t> seen;
+    const std::size_t n = enumerate_interpretations(db, 4, sets, Environment{}, [&](const Environment& e) {
+        seen.push_back(mask_of(e));
+        return true;
+    });
+    CHECK(n == 3);
+    CHECK(seen == std::vector<std::uint64_t>{0b1001, 0b0110, 0b1010});
+}

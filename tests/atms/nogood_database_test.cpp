@@ -1,0 +1,69 @@
+// tests/atms/nogood_database_test.cpp: subsumption queries against a brute-force scan.
+#include "atms/nogood_database.hpp"
+
+#include <algorithm>
+#include <doctest/doctest.h>
+#include <random>
+
+using namespace qm::atms;
+
+namespace {
+Environment random_env(std::mt19937& rng, int max_size, std::uint32_t universe) {
+    std::vector<AssumptionId> as;
+    const int k = std::uniform_int_distribution<int>(1, max_size)(rng);
+    for (int i = 0; i < k; ++i) as.push_back(AssumptionId{std::uniform_int_distribution<std::uint32_t>(0, universe - 1)(rng)});
+    return Environment::of(as);
+}
+}  // namespace
+
+TEST_CASE("atms/nogood_database: subsumes, subsumes_with and minimal agree with brute force") {
+    std::mt19937 rng(5);
+    for (int round = 0; round < 200; ++round) {
+        const std::uint32_t universe = round % 2 == 0 ? 8 : 130;
+        NogoodDatabase db;
+        std::vector<Environment> added;  // every nogood ever added
+        for (int i = 0; i < 15; ++i) {
+            const Environment n = random_env(rng, 3, universe);
+            auto subsumed_by = [&](const Environment& e) {
+                return std::any_of(added.begin(), added.end(), [&](const Environment& g) { return g.subset_of(e); });
+            };
+            REQUIRE(db.subsumes(n) == subsumed_by(n));
+            if (db.subsumes(n)) continue;
+            db.add(EnvId{static_cast<std::uint32_t>(added.size())}, n);
+            added.push_back(n);
+            // Live nogoods: exactly the added ones with no proper subset among the added.
+            std::vector<EnvId> expected;
+            for (std::uint32_t k = 0; k < added.size(); ++k)
+                if (std::none_of(added.begin(), added.end(),
+                                 [&](const Environment& g) { return !(g == added[k]) && g.subset_of(added[k]); }))
+                    expected.push_back(EnvId{k});
+            REQUIRE(db.minimal() == expected);
+            CHECK(db.size() == expected.size());
+            for (int q = 0; q < 10; ++q) {
+                const Environment e = random_env(rng, 5, universe);
+                CHECK(db.subsumes(e) == subsumed_by(e));
+                // Contract of subsumes_with: e minus a is consistent; then it answers subsumes(e).
+                const AssumptionId a = e.first();
+                std::vector<AssumptionId> rest = e.assumptions();
+                rest.erase(rest.begin());
+                if (!subsumed_by(Environment::of(rest))) CHECK(db.subsumes_with(e.words(), a) == subsumed_by(e));
+            }
+        }
+    }
+}
+
+TEST_CASE("atms/nogood_database: the empty nogood makes everything inconsistent") {
+    NogoodDatabase db;
+    db.add(EnvId{0}, Environment::of(std::vector{AssumptionId{1}}));
+    db.add(EnvId{1}, Environment{});
+    CHECK(db.empty_env_is_nogood());
+    CHECK(db.subsumes(Environment{}));
+    CHECK(db.minimal() == std::vector<EnvId>{EnvId{1}});
+}
+
+TEST_CASE("atms/nogood_database: adding a subsumed nogood is a clear error") {
+    NogoodDatabase db;
+    db.add(EnvId{0}, Environment::of(std::vector{AssumptionId{1}}));
+    CHECK_THROWS_AS(db.add(EnvId{1}, Environment::of(std::vector{AssumptionId{1}, AssumptionId{2}})),
+                    qm::InternalError);
+}
