@@ -1,0 +1,174 @@
+// tests/atms/atms_test.cpp: the Atms facade on de Kleer-style worked examples, and one case for
+// every precondition (each must be a clear qm::InternalError, never UB).
+#include "atms/atms.hpp"
+
+#include <doctest/doctest.h>
+
+using namespace qm::atms;
+
+namespace {
+struct Abc {
+    Atms atms;
+    NodeId a = atms.add_assumption(DatumId{10});
+    NodeId b = atms.add_assumption(DatumId{11});
+    NodeId c = atms.add_assumption(DatumId{12});
+    AssumptionId aa = *atms.assumption_of(a), ab = *atms.assumption_of(b), ac = *atms.assumption_of(c);
+    EnvId env(std::initializer_list<AssumptionId> as) { return atms.environment(as); }
+};
+}  // namespace
+
+TEST_CASE("atms/atms: nodes, premises and assumptions start with the right labels") {
+    Atms atms;
+    CHECK(atms.node_count() == 1);  // the contradiction node
+    CHECK(atms.label(atms.contradiction()).empty());
+    const NodeId p = atms.add_premise(DatumId{7});
+    const NodeId a = atms.add_assumption(DatumId{8});
+    const NodeId x = atms.add_node(DatumId{9});
+    CHECK(atms.datum(p) == DatumId{7});
+    CHECK(atms.is_premise(p));
+    CHECK_FALSE(atms.is_premise(a));
+    CHECK(atms.label(p) == std::vector<EnvId>{atms.empty_environment()});
+    CHECK(atms.is_true(p));
+    REQUIRE(atms.assumption_of(a).has_value());
+    CHECK(atms.node_of(*atms.assumption_of(a)) == a);
+    CHECK_FALSE(atms.assumption_of(x).has_value());
+    CHECK(atms.label(a) == std::vector<EnvId>{atms.environment({*atms.assumption_of(a)})});
+    CHECK_FALSE(atms.is_true(a));
+    CHECK(atms.is_in(a));
+    CHECK(atms.label(x).empty());
+    CHECK_FALSE(atms.is_in(x));
+}
+
+TEST_CASE("atms/atms: the classic A, B, C example with nogood {A,B}") {
+    Abc t;
+    Atms& atms = t.atms;
+    const NodeId x = atms.add_node(DatumId{0}), y = atms.add_node(DatumId{0}), z = atms.add_node(DatumId{0});
+    atms.justify(InformantId{1}, {t.a, t.b}, x);  // A ∧ B → x
+    atms.justify(InformantId{2}, {t.b, t.c}, y);  // B ∧ C → y
+    atms.justify(InformantId{3}, {x}, z);         // x → z
+    atms.justify(InformantId{4}, {y}, z);         // y → z
+    const EnvId ab = t.env({t.aa, t.ab}), bc = t.env({t.ab, t.ac}), abc = t.env({t.aa, t.ab, t.ac});
+    CHECK(atms.label(x) == std::vector<EnvId>{ab});
+    auto zl = std::vector<EnvId>{ab, bc};
+    std::sort(zl.begin(), zl.end());
+    CHECK(atms.label(z) == zl);
+    CHECK(atms.holds_in(z, abc));
+    CHECK_FALSE(atms.holds_in(z, t.env({t.aa, t.ac})));
+    atms.add_nogood(InformantId{5}, {t.a, t.b});
+    CHECK(atms.minimal_nogoods() == std::vector<EnvId>{ab});
+    CHECK_FALSE(atms.is_consistent(ab));
+    CHECK_FALSE(atms.is_consistent(abc));
+    CHECK(atms.is_consistent(bc));
+    CHECK(atms.label(x).empty());
+    CHECK(atms.label(z) == std::vector<EnvId>{bc});
+    CHECK_FALSE(atms.holds_in(z, abc));  // derivable there, but abc is inconsistent
+    // A smaller nogood retires the larger one.
+    atms.add_nogood(InformantId{6}, {t.b});
+    CHECK(atms.minimal_nogoods() == std::vector<EnvId>{t.env({t.ab})});
+    CHECK(atms.label(z).empty());
+    CHECK(atms.label(t.b).empty());
+    CHECK(atms.label(t.a) == std::vector<EnvId>{t.env({t.aa})});
+}
+
+TEST_CASE("atms/atms: a label is kept minimal when a smaller support arrives") {
+    Abc t;
+    const NodeId x = t.atms.add_node(DatumId{0});
+    t.atms.justify(InformantId{0}, {t.a, t.b}, x);
+    t.atms.justify(InformantId{0}, {t.a}, x);
+    CHECK(t.atms.label(x) == std::vector<EnvId>{t.env({t.aa})});
+    const NodeId p = t.atms.add_premise(DatumId{0});
+    t.atms.justify(InformantId{0}, {p}, x);
+    CHECK(t.atms.label(x) == std::vector<EnvId>{t.atms.empty_environment()});
+    CHECK(t.atms.is_true(x));
+}
+
+TEST_CASE("atms/atms: justifying an assumption widens its label (de Kleer allows it)") {
+    Abc t;
+    t.atms.justify(InformantId{0}, {t.b}, t.a);  // B → A
+    auto expected = std::vector<EnvId>{t.env({t.aa}), t.env({t.ab})};
+    std::sort(expected.begin(), expected.end());
+    CHECK(t.atms.label(t.a) == expected);
+}
+
+TEST_CASE("atms/atms: nogoods through derived nodes, and chains through justifications") {
+    Abc t;
+    Atms& atms = t.atms;
+    const NodeId x = atms.add_node(DatumId{0}), y = atms.add_node(DatumId{0});
+    atms.justify(InformantId{0}, {t.a}, x);
+    atms.justify(InformantId{0}, {t.c}, y);
+    atms.add_nogood(InformantId{1}, {x, y});  // so {A, C} is nogood
+    CHECK(atms.minimal_nogoods() == std::vector<EnvId>{t.env({t.aa, t.ac})});
+    const NodeId w = atms.add_node(DatumId{0});
+    atms.justify(InformantId{0}, {x, y}, w);  // only in the inconsistent {A, C}
+    CHECK(atms.label(w).empty());
+    // Justifications added after the nogood see it at once.
+    atms.justify(InformantId{0}, {x, t.b}, w);
+    CHECK(atms.label(w) == std::vector<EnvId>{t.env({t.aa, t.ab})});
+}
+
+TEST_CASE("atms/atms: the empty nogood makes everything inconsistent") {
+    Abc t;
+    const NodeId p = t.atms.add_premise(DatumId{0});
+    t.atms.add_nogood(InformantId{0}, {p});
+    CHECK_FALSE(t.atms.is_consistent(t.atms.empty_environment()));
+    CHECK(t.atms.label(p).empty());
+    CHECK(t.atms.label(t.a).empty());
+    CHECK(t.atms.minimal_nogoods() == std::vector<EnvId>{t.atms.empty_environment()});
+    const NodeId q = t.atms.add_premise(DatumId{0});
+    CHECK(t.atms.label(q).empty());
+    CHECK_FALSE(t.atms.is_consistent(t.env({t.ab})));
+}
+
+TEST_CASE("atms/atms: justify records the clause, ignoring duplicate antecedents") {
+    Abc t;
+    const NodeId x = t.atms.add_node(DatumId{0});
+    const JustId j = t.atms.justify(InformantId{42}, {t.a, t.b, t.a}, x);
+    const Justification& just = t.atms.justification(j);
+    CHECK(just.informant == InformantId{42});
+    CHECK(just.antecedents == std::vector<NodeId>{t.a, t.b});
+    CHECK(just.consequent == x);
+    CHECK(t.atms.justifications(x) == std::vector<JustId>{j});
+    CHECK(t.atms.consequences(t.a) == std::vector<JustId>{j});
+    CHECK(t.atms.justification_count() == 1);
+    const JustId empty = t.atms.justify(InformantId{1}, std::span<const NodeId>{}, x);  // x is true
+    CHECK(t.atms.is_true(x));
+    CHECK(t.atms.justification(empty).antecedents.empty());
+}
+
+TEST_CASE("atms/atms: several Atms objects are independent") {
+    Atms one, two;
+    const NodeId a = one.add_assumption(DatumId{0});
+    one.add_nogood(InformantId{0}, {a});
+    const NodeId b = two.add_assumption(DatumId{0});
+    CHECK(one.label(a).empty());
+    CHECK_FALSE(two.label(b).empty());
+    CHECK(two.minimal_nogoods().empty());
+}
+
+TEST_CASE("atms/atms: every precondition violation is an InternalError") {
+    Abc t;
+    Atms& atms = t.atms;
+    const NodeId p = atms.add_premise(DatumId{0});
+    const NodeId bad{999};
+    CHECK_THROWS_AS(atms.justify(InformantId{0}, {t.a}, bad), qm::InternalError);              // unknown consequent
+    CHECK_THROWS_AS(atms.justify(InformantId{0}, {bad}, t.a), qm::InternalError);              // unknown antecedent
+    CHECK_THROWS_AS(atms.justify(InformantId{0}, {t.a}, p), qm::InternalError);                // premise consequent
+    CHECK_THROWS_AS(atms.justify(InformantId{0}, {atms.contradiction()}, t.a), qm::InternalError);
+    CHECK_THROWS_AS(atms.add_nogood(InformantId{0}, {bad}), qm::InternalError);
+    CHECK_THROWS_AS((void)atms.label(bad), qm::InternalError);
+    CHECK_THROWS_AS((void)atms.datum(bad), qm::InternalError);
+    CHECK_THROWS_AS((void)atms.is_premise(bad), qm::InternalError);
+    CHECK_THROWS_AS((void)atms.assumption_of(bad), qm::InternalError);
+    CHECK_THROWS_AS((void)atms.node_of(AssumptionId{77}), qm::InternalError);
+    CHECK_THROWS_AS((void)atms.justifications(bad), qm::InternalError);
+    CHECK_THROWS_AS((void)atms.consequences(bad), qm::InternalError);
+    CHECK_THROWS_AS((void)atms.justification(JustId{5}), qm::InternalError);
+    CHECK_THROWS_AS((void)atms.holds_in(t.a, EnvId{12345}), qm::InternalError);
+    CHECK_THROWS_AS((void)atms.holds_in(bad, atms.empty_environment()), qm::InternalError);
+    CHECK_THROWS_AS((void)atms.is_consistent(EnvId{12345}), qm::InternalError);
+    CHECK_THROWS_AS((void)atms.env(EnvId{12345}), qm::InternalError);
+    CHECK_THROWS_AS((void)atms.environment({AssumptionId{77}}), qm::InternalError);
+    CHECK_THROWS_AS((void)atms.explain(bad, atms.empty_environment()), qm::InternalError);
+    // Nothing was recorded by the failed calls.
+    CHECK(atms.justification_count() == 0);
+}
