@@ -1,0 +1,144 @@
+// engine/engine.cpp: building the engine's facts and nodes; queries.
+#include "engine/engine.hpp"
+#include "qm/assert.hpp"
+
+namespace qm::engine {
+
+Engine::Engine(CompiledProgram program, ValueTable values, const BuiltinRegistry& builtins)
+    : program_(std::move(program)), values_(std::move(values)), builtins_(builtins) {
+    atms_.add_consumer(*this);
+    for (std::size_t i = 0; i < program_.rules.size(); ++i) {
+        rule_cursor_.push_back(0);
+        rule_matched_.push_back(0);
+    }
+    for (const auto& p : program_.premises) {
+        FactId f = intern_fact(p.predicate, p.args);
+        Firing why{Firing::Kind::premise, std::nullopt, {}, std::nullopt, p.where};
+        atms_.justify(new_firing(std::move(why)), std::span<const atms::NodeId>{}, fact_nodes_[f].node);
+        note_if_in(f);
+    }
+    for (const auto& a : program_.assumptions) {
+        FactId f = intern_fact(a.predicate, a.args);
+        Firing why{Firing::Kind::assumption, std::nullopt, {}, std::nullopt, a.where};
+        assume_fact(f, new_firing(std::move(why)), {});
+        note_if_in(f);
+    }
+}
+
+Engine::~Engine() { atms_.remove_consumer(*this); }
+
+atms::DatumId Engine::new_datum(Datum d) { return datums_.push_back(d); }
+
+atms::InformantId Engine::new_firing(Firing f) {
+    firings_.push_back(std::move(f));
+    return atms::InformantId{static_cast<std::uint32_t>(firings_.size() - 1)};
+}
+
+FactId Engine::intern_fact(ValueId predicate, std::span<const ValueId> args) {
+    QM_REQUIRE(values_.value(predicate).kind == ValueKind::symbol, "a predicate is a symbol");
+    auto [f, fresh] = facts_.intern(predicate, args);
+    if (fresh) {
+        atms::NodeId n = atms_.add_node(new_datum({Datum::Kind::fact, f.value}));
+        FactId check = fact_nodes_.push_back(FactNodes{n, std::nullopt});
+        QM_ASSERT(check == f, "fact ids and fact node records stay aligned");
+    }
+    return f;
+}
+
+// The assumption node standing for f (created on first use), kept apart from f's own node so that
+// `assume` with antecedents can justify f from {assumption} + antecedents: f then holds wherever
+// the assumption and the antecedents hold (BPS assume! inside a rule).
+atms::NodeId Engine::ensure_assumption(FactId f) {
+    FactNodes& nodes = fact_nodes_[f];
+    if (!nodes.assumption) {
+        nodes.assumption = atms_.add_assumption(new_datum({Datum::Kind::assumption_of_fact, f.value}));
+        auto a = atms_.assumption_of(*nodes.assumption);
+        QM_ASSERT(a.has_value(), "an assumption node has an assumption");
+        if (is_choice_assumption_.size() <= a->value) is_choice_assumption_.resize(a->value + 1, false);
+    }
+    return *nodes.assumption;
+}
+
+void Engine::assume_fact(FactId f, atms::InformantId why, std::span<const atms::NodeId> antecedents) {
+    atms::NodeId a = ensure_assumption(f);
+    std::vector<atms::NodeId> ants(antecedents.begin(), antecedents.end());
+    ants.push_back(a);
+    atms_.justify(why, ants, fact_nodes_[f].node);
+}
+
+FactId Engine::add_premise(ValueId predicate, std::span<const ValueId> args) {
+    QM_REQUIRE(!closed_world_used_, "premises cannot be added after `not` or an aggregate was evaluated");
+    FactId f = intern_fact(predicate, args);
+    Firing why{Firing::Kind::premise, std::nullopt, {}, std::nullopt, SourceLocation{"<api>", 1, 1}};
+    atms_.justify(new_firing(std::move(why)), std::span<const atms::NodeId>{}, fact_nodes_[f].node);
+    note_if_in(f);
+    return f;
+}
+
+FactId Engine::add_assumption(ValueId predicate, std::span<const ValueId> args) {
+    QM_REQUIRE(!closed_world_used_, "assumptions cannot be added after `not` or an aggregate was evaluated");
+    FactId f = intern_fact(predicate, args);
+    Firing why{Firing::Kind::assumption, std::nullopt, {}, std::nullopt, SourceLocation{"<api>", 1, 1}};
+    assume_fact(f, new_firing(std::move(why)), {});
+    note_if_in(f);
+    return f;
+}
+
+void Engine::label_became_nonempty(atms::NodeId n) {
+    const Datum& d = datums_[atms_.datum(n)];
+    if (d.kind != Datum::Kind::fact) return;
+    pending_activation_.push_back(FactId{d.index});
+}
+
+// Events for nodes created already holding may or may not be delivered; activation is idempotent.
+void Engine::note_if_in(FactId f) {
+    if (atms_.is_in(fact_nodes_[f].node)) pending_activation_.push_back(f);
+}
+
+std::optional<FactId> Engine::find(ValueId predicate, std::span<const ValueId> args) const {
+    return facts_.find(predicate, args);
+}
+
+atms::NodeId Engine::node(FactId f) const {
+    QM_REQUIRE(fact_nodes_.contains(f), "fact id out of range");
+    return fact_nodes_[f].node;
+}
+
+std::optional<atms::AssumptionId> Engine::assumption(FactId f) const {
+    QM_REQUIRE(fact_nodes_.contains(f), "fact id out of range");
+    if (!fact_nodes_[f].assumption) return std::nullopt;
+    return atms_.assumption_of(*fact_nodes_[f].assumption);
+}
+
+std::string Engine::print(FactId f) const {
+    const Fact& fact = facts_.fact(f);
+    std::string out = "(" + values_.print(fact.predicate);
+    for (ValueId a : fact.args) out += " " + values_.print(a);
+    return out + ")";
+}
+
+std::string Engine::print(atms::AssumptionId a) const {
+    const Datum& d = datums_[atms_.datum(atms_.node_of(a))];
+    if (d.kind == Datum::Kind::closed_world) return "(closed-world " + std::to_string(d.index) + ")";
+    return print(FactId{d.index});
+}
+
+std::optional<FactId> Engine::fact_of(atms::NodeId n) const {
+    if (n == atms_.contradiction()) return std::nullopt;
+    const Datum& d = datums_[atms_.datum(n)];
+    if (d.kind == Datum::Kind::closed_world) return std::nullopt;
+    return FactId{d.index};
+}
+
+std::vector<atms::EnvId> Engine::interpretations() { return atms_.interpretations(choice_sets_); }
+
+std::vector<atms::EnvId> Engine::interpretations(atms::EnvId base) {
+    return atms_.interpretations(choice_sets_, base);
+}
+
+const Firing& Engine::firing(atms::InformantId i) const {
+    QM_REQUIRE(i.value < firings_.size(), "informant id out of range");
+    return firings_[i.value];
+}
+
+}  // namespace qm::engine

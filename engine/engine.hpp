@@ -1,0 +1,152 @@
+// engine/engine.hpp
+// Provides:   Engine, the pattern-directed rule engine over an ATMS (an ATMoSphere analogue; the BPS
+//             atre layered on atms). Every fact is an ATMS node; its label comes from the ATMS. Each
+//             rule firing adds one justification from exactly the matched fact nodes to each
+//             consequent, with the firing (rule, file:line, binding) as informant. `false` adds
+//             nogoods; `assume` makes assumptions; `[exactly one ...]` declares choice sets.
+//             The C++ API for drivers: add premises and assumptions, run (generically or relative
+//             to a context environment), look up facts, nodes and labels, enumerate interpretations.
+// Ownership:  an Engine owns its Atms, its facts, its values and its compiled program; ids it hands
+//             out (FactId, NodeId, EnvId, InformantId) are valid for its lifetime.
+// Invariants: a rule never fires twice on the same binding (in the same context, for a rule with a
+//             negation or aggregate); strata run in order; output order is deterministic.
+// Semantics:  of `not`, aggregates and contexts: docs/RULES.md "## Semantics".
+// Errors:     a rule that cannot be evaluated soundly (negation over an assumption-dependent fact
+//             without a context, ...) or a builtin error is reported into the Diagnostics given to
+//             run(), located at the condition; API misuse throws qm::InternalError.
+// Knows nothing of mechanics.
+#pragma once
+#include "atms/atms.hpp"
+#include "engine/agenda.hpp"
+#include "engine/builtin_registry.hpp"
+#include "engine/compiled_rule.hpp"
+#include "engine/fact_store.hpp"
+#include "engine/firing.hpp"
+#include "engine/matcher.hpp"
+#include "engine/value_table.hpp"
+#include "qm/diagnostics.hpp"
+#include <optional>
+#include <set>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace qm::engine {
+
+// The result of running relative to a context: the environment in which the context's conclusions
+// hold (the context plus its closed-world assumption).
+struct ContextRun {
+    std::uint32_t context = 0;
+    atms::EnvId environment{};             // C + {closed-world of C}
+    atms::AssumptionId closed_world{};
+};
+
+class Engine final : private atms::Consumer {
+public:
+    Engine(CompiledProgram program, ValueTable values, const BuiltinRegistry& builtins = default_builtins());
+    ~Engine() override;
+    Engine(const Engine&) = delete;
+    Engine& operator=(const Engine&) = delete;
+
+    // ---- building -------------------------------------------------------------------------------
+    [[nodiscard]] ValueTable& values() noexcept { return values_; }
+    [[nodiscard]] const ValueTable& values() const noexcept { return values_; }
+    // Pre: predicate is a symbol; no rule with a negation or aggregate has been evaluated yet
+    // (a closed world, once used, must not grow: docs/RULES.md "## Semantics").
+    FactId add_premise(ValueId predicate, std::span<const ValueId> args);
+    FactId add_assumption(ValueId predicate, std::span<const ValueId> args);
+
+    // ---- running --------------------------------------------------------------------------------
+    // Runs every stratum to quiescence; `not` and aggregates are decided generically (a fact whose
+    // label depends on assumptions makes them undecidable: a diagnostic).
+    void run(Diagnostics& diagnostics);
+    // Runs every stratum; `not` and aggregates are decided in the context environment C.
+    // Pre: context was issued by atms().
+    ContextRun run_in_context(atms::EnvId context, Diagnostics& diagnostics);
+
+    // ---- facts and labels -----------------------------------------------------------------------
+    [[nodiscard]] const FactStore& facts() const noexcept { return facts_; }
+    [[nodiscard]] std::optional<FactId> find(ValueId predicate, std::span<const ValueId> args) const;
+    [[nodiscard]] std::span<const FactId> facts_of(ValueId predicate) const { return facts_.with_predicate(predicate); }
+    [[nodiscard]] atms::NodeId node(FactId f) const;                          // Pre: f valid
+    [[nodiscard]] std::optional<atms::AssumptionId> assumption(FactId f) const;  // if f was assumed
+    [[nodiscard]] const std::vector<atms::EnvId>& label(FactId f) const { return atms_.label(node(f)); }
+    [[nodiscard]] std::string print(FactId f) const;                          // "(queen 1 2)"
+    // The fact (or closed-world marker) an assumption stands for, as text.
+    [[nodiscard]] std::string print(atms::AssumptionId a) const;
+    // The fact a node stands for; empty for the contradiction and closed-world nodes.
+    [[nodiscard]] std::optional<FactId> fact_of(atms::NodeId n) const;
+    [[nodiscard]] const atms::Atms& atms() const noexcept { return atms_; }
+    [[nodiscard]] atms::Atms& atms() noexcept { return atms_; }
+
+    // ---- choice sets and interpretations --------------------------------------------------------
+    [[nodiscard]] const std::vector<std::vector<atms::AssumptionId>>& choice_sets() const noexcept { return choice_sets_; }
+    [[nodiscard]] std::vector<atms::EnvId> interpretations();
+    [[nodiscard]] std::vector<atms::EnvId> interpretations(atms::EnvId base);
+
+    // ---- provenance -----------------------------------------------------------------------------
+    [[nodiscard]] const CompiledProgram& program() const noexcept { return program_; }
+    [[nodiscard]] const Firing& firing(atms::InformantId i) const;  // Pre: i issued by this engine
+    [[nodiscard]] std::size_t firing_count() const noexcept { return firings_.size(); }
+    [[nodiscard]] std::size_t rule_firings() const noexcept { return rule_firings_; }
+
+private:
+    struct Datum {
+        enum class Kind : std::uint8_t { fact, assumption_of_fact, closed_world } kind = Kind::fact;
+        std::uint32_t index = 0;  // FactId or context index
+    };
+    struct FactNodes {
+        atms::NodeId node;
+        std::optional<atms::NodeId> assumption;
+    };
+    struct Context {
+        atms::EnvId base;
+        atms::NodeId node;
+        atms::AssumptionId assumption;
+        atms::EnvId environment;
+        std::uint32_t assumptions_closed = 0;  // assumptions below this id have their nogood
+    };
+
+    void label_became_nonempty(atms::NodeId n) override;
+
+    // engine.cpp
+    atms::DatumId new_datum(Datum d);
+    FactId intern_fact(ValueId predicate, std::span<const ValueId> args);
+    atms::NodeId ensure_assumption(FactId f);
+    atms::InformantId new_firing(Firing f);
+    void note_if_in(FactId f);
+    // engine_run.cpp
+    void run_strata(std::optional<std::uint32_t> context, Diagnostics& diagnostics);
+    void match_rule(RuleId r, std::optional<Seed> seed, std::optional<std::uint32_t> context,
+                    Diagnostics& diagnostics);
+    bool drain(std::uint32_t stratum, std::optional<std::uint32_t> context, Diagnostics& diagnostics);
+    void close_contexts();
+    // engine_closed_world.cpp
+    [[nodiscard]] ClosedWorldStatus status(FactId f, std::optional<std::uint32_t> context);  // may intern envs
+    [[nodiscard]] std::string why_undecidable(FactId f, std::optional<std::uint32_t> context) const;
+    // engine_consequents.cpp
+    void execute(const RuleInstance& instance, Diagnostics& diagnostics);
+    std::optional<FactId> instantiate(const CompiledAtom& atom, const Binding& b, Diagnostics& diagnostics);
+    void assume_fact(FactId f, atms::InformantId why, std::span<const atms::NodeId> antecedents);
+
+    CompiledProgram program_;
+    ValueTable values_;
+    const BuiltinRegistry& builtins_;
+    atms::Atms atms_;
+    FactStore facts_;
+    IdVector<FactId, FactNodes> fact_nodes_;
+    IdVector<atms::DatumId, Datum> datums_;
+    std::vector<Firing> firings_;                        // indexed by InformantId
+    Agenda agenda_;
+    std::vector<FactId> activation_log_;                 // facts in the order they became active
+    std::vector<FactId> pending_activation_;             // label became non-empty, not yet logged
+    IdVector<RuleId, std::size_t> rule_cursor_;          // activation_log_ prefix each rule has seen
+    IdVector<RuleId, std::uint8_t> rule_matched_;               // a full match has been done
+    std::vector<std::vector<atms::AssumptionId>> choice_sets_;
+    std::set<std::vector<atms::AssumptionId>> choice_set_keys_;
+    std::vector<bool> is_choice_assumption_;             // indexed by AssumptionId
+    std::vector<Context> contexts_;
+    bool closed_world_used_ = false;
+    std::size_t rule_firings_ = 0;
+};
+}  // namespace qm::engine

@@ -1,0 +1,123 @@
+// engine/engine_consequents.cpp: executing a rule instance. Each consequent gets one ATMS
+// justification from exactly the instance's antecedent fact nodes (plus the closed-world assumption
+// of the context, for a rule with `not` or an aggregate run in a context), with the firing as informant.
+#include "engine/engine.hpp"
+#include "qm/assert.hpp"
+#include <algorithm>
+
+namespace qm::engine {
+
+std::optional<FactId> Engine::instantiate(const CompiledAtom& atom, const Binding& b, Diagnostics& diagnostics) {
+    std::vector<ValueId> args;
+    args.reserve(atom.args.size());
+    for (const auto& t : atom.args) {
+        Evaluation e = evaluate(t, b, values_, builtins_);
+        if (!e.value) {
+            diagnostics.error(atom.where, e.error.empty() ? "consequent has an unbound variable" : e.error);
+            return std::nullopt;
+        }
+        args.push_back(*e.value);
+    }
+    return intern_fact(atom.predicate, args);
+}
+
+void Engine::execute(const RuleInstance& instance, Diagnostics& diagnostics) {
+    const CompiledRule& rule = program_.rules[instance.rule];
+    ++rule_firings_;
+    atms::InformantId why = new_firing(Firing{Firing::Kind::rule, instance.rule, instance.binding, instance.context, rule.where});
+    std::vector<atms::NodeId> ants;
+    ants.reserve(instance.antecedents.size() + 1);
+    for (FactId f : instance.antecedents) ants.push_back(fact_nodes_[f].node);
+    if (instance.context) ants.push_back(contexts_[*instance.context].node);
+
+    Binding b = instance.binding;
+    // The elements of a consequent quantifier's set that pass its tests.
+    auto elements = [&](const CompiledConsequent& c) -> std::vector<ValueId> {
+        std::vector<ValueId> out;
+        Evaluation set = evaluate(c.set, b, values_, builtins_);
+        if (!set.value || values_.value(*set.value).kind != ValueKind::set) {
+            diagnostics.error(c.where, set.error.empty() ? "quantifier set is not a set" : set.error);
+            return out;
+        }
+        for (ValueId e : values_.value(*set.value).elements) {
+            b[c.slot] = e;
+            bool pass = true;
+            for (const auto& t : c.tests) {
+                std::vector<ValueId> args;
+                for (const auto& a : t.args) {
+                    Evaluation v = evaluate(a, b, values_, builtins_);
+                    if (!v.value) {
+                        if (!v.error.empty()) diagnostics.error(t.where, v.error);
+                        pass = false;
+                        break;
+                    }
+                    args.push_back(*v.value);
+                }
+                if (!pass) break;
+                BuiltinResult r = builtins_.apply(t.test, values_, args);
+                if (!r.error.empty()) diagnostics.error(t.where, r.error);
+                if (!r.holds) {
+                    pass = false;
+                    break;
+                }
+            }
+            if (pass) out.push_back(e);
+        }
+        b[c.slot].reset();
+        return out;
+    };
+
+    for (const auto& c : rule.consequents) {
+        switch (c.kind) {
+            case CompiledConsequent::Kind::assert_atom:
+                if (auto f = instantiate(c.atom, b, diagnostics)) {
+                    atms_.justify(why, ants, fact_nodes_[*f].node);
+                    note_if_in(*f);
+                }
+                break;
+            case CompiledConsequent::Kind::falsity: atms_.add_nogood(why, ants); break;
+            case CompiledConsequent::Kind::assume_atom:
+                if (auto f = instantiate(c.atom, b, diagnostics)) {
+                    assume_fact(*f, why, ants);
+                    note_if_in(*f);
+                }
+                break;
+            case CompiledConsequent::Kind::for_all_assert:
+                for (ValueId e : elements(c)) {
+                    b[c.slot] = e;
+                    if (auto f = instantiate(c.atom, b, diagnostics)) {
+                        atms_.justify(why, ants, fact_nodes_[*f].node);
+                        note_if_in(*f);
+                    }
+                }
+                b[c.slot].reset();
+                break;
+            case CompiledConsequent::Kind::exactly_one: {
+                // Law 1 style uniqueness: each element an assumption, pairwise nogoods, one choice set.
+                std::vector<atms::AssumptionId> set;
+                std::vector<atms::NodeId> nodes;
+                for (ValueId e : elements(c)) {
+                    b[c.slot] = e;
+                    if (auto f = instantiate(c.atom, b, diagnostics)) {
+                        assume_fact(*f, why, ants);
+                        note_if_in(*f);
+                        atms::NodeId a = *fact_nodes_[*f].assumption;
+                        if (std::find(nodes.begin(), nodes.end(), a) != nodes.end()) continue;
+                        nodes.push_back(a);
+                        set.push_back(*atms_.assumption_of(a));
+                    }
+                }
+                b[c.slot].reset();
+                for (std::size_t i = 0; i < nodes.size(); ++i)
+                    for (std::size_t j = i + 1; j < nodes.size(); ++j) atms_.add_nogood(why, {nodes[i], nodes[j]});
+                for (atms::AssumptionId a : set) is_choice_assumption_[a.value] = true;
+                std::vector<atms::AssumptionId> key = set;
+                std::sort(key.begin(), key.end());
+                if (choice_set_keys_.insert(key).second) choice_sets_.push_back(std::move(set));
+                break;
+            }
+        }
+    }
+}
+
+}  // namespace qm::engine

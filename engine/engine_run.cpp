@@ -1,0 +1,145 @@
+// engine/engine_run.cpp: the strata loop, semi-naive matching and the agenda.
+#include "engine/engine.hpp"
+#include "qm/assert.hpp"
+
+namespace qm::engine {
+
+void Engine::run(Diagnostics& diagnostics) { run_strata(std::nullopt, diagnostics); }
+
+ContextRun Engine::run_in_context(atms::EnvId context, Diagnostics& diagnostics) {
+    std::uint32_t index = 0;
+    while (index < contexts_.size() && contexts_[index].base != context) ++index;
+    if (index == contexts_.size()) {
+        atms::NodeId n = atms_.add_assumption(new_datum({Datum::Kind::closed_world, index}));
+        auto a = atms_.assumption_of(n);
+        QM_ASSERT(a.has_value(), "an assumption node has an assumption");
+        std::vector<atms::AssumptionId> members = atms_.env(context).assumptions();
+        members.push_back(*a);
+        contexts_.push_back(Context{context, n, *a, atms_.environment(members), 0});
+        if (is_choice_assumption_.size() <= a->value) is_choice_assumption_.resize(a->value + 1, false);
+    }
+    run_strata(index, diagnostics);
+    const Context& c = contexts_[index];
+    return ContextRun{index, c.environment, c.assumption};
+}
+
+void Engine::run_strata(std::optional<std::uint32_t> context, Diagnostics& diagnostics) {
+    for (std::uint32_t s = 0; s < program_.stratum_count; ++s) {
+        // A rule with `not` or an aggregate is matched afresh in every run (its answers depend on
+        // the context); a monotonic rule is matched in full once, then only against new facts.
+        for (std::size_t i = 0; i < program_.rules.size(); ++i) {
+            RuleId r{static_cast<std::uint32_t>(i)};
+            const CompiledRule& rule = program_.rules[r];
+            if (rule.stratum != s) continue;
+            if (rule.non_monotonic || !rule_matched_[r]) {
+                // Facts waiting to be logged are covered by this full match.
+                drain(s, context, diagnostics);
+                rule_cursor_[r] = activation_log_.size();
+                rule_matched_[r] = 1;
+                match_rule(r, std::nullopt, context, diagnostics);
+            }
+        }
+        drain(s, context, diagnostics);
+    }
+    close_contexts();
+}
+
+// Executes queued instances and matches newly active facts against the rules of strata <= s
+// until nothing changes. Rules of later strata see the new facts through their cursors.
+bool Engine::drain(std::uint32_t s, std::optional<std::uint32_t> context, Diagnostics& diagnostics) {
+    bool changed = false;
+    for (;;) {
+        if (!agenda_.empty()) {
+            execute(agenda_.pop(), diagnostics);
+            changed = true;
+            continue;
+        }
+        bool logged = false;
+        for (FactId f : pending_activation_) {
+            if (facts_.activate(f)) {
+                activation_log_.push_back(f);
+                logged = true;
+            }
+        }
+        pending_activation_.clear();
+        bool matched = false;
+        for (std::size_t i = 0; i < program_.rules.size(); ++i) {
+            RuleId r{static_cast<std::uint32_t>(i)};
+            const CompiledRule& rule = program_.rules[r];
+            if (rule.stratum > s || !rule_matched_[r]) continue;
+            std::size_t end = activation_log_.size();
+            if (rule_cursor_[r] == end) continue;
+            bool full = false;
+            for (std::size_t k = rule_cursor_[r]; k < end && !full; ++k) {
+                ValueId p = facts_.fact(activation_log_[k]).predicate;
+                for (const auto& c : rule.conditions) {
+                    bool inner = c.kind == CompiledCondition::Kind::for_all || c.kind == CompiledCondition::Kind::exists;
+                    if (!inner) continue;
+                    for (const auto& a : c.atoms) full = full || a.predicate == p;
+                }
+            }
+            std::size_t begin = rule_cursor_[r];
+            rule_cursor_[r] = end;
+            matched = true;
+            if (full) {
+                match_rule(r, std::nullopt, context, diagnostics);
+                continue;
+            }
+            for (std::size_t k = begin; k < end; ++k) {
+                FactId f = activation_log_[k];
+                ValueId p = facts_.fact(f).predicate;
+                for (std::uint32_t c = 0; c < rule.conditions.size(); ++c) {
+                    const auto& cond = rule.conditions[c];
+                    if (cond.kind == CompiledCondition::Kind::match && cond.atom.predicate == p)
+                        match_rule(r, Seed{c, f}, context, diagnostics);
+                }
+            }
+        }
+        if (!logged && !matched && agenda_.empty()) return changed;
+        changed = true;
+    }
+}
+
+void Engine::match_rule(RuleId r, std::optional<Seed> seed, std::optional<std::uint32_t> context,
+                        Diagnostics& diagnostics) {
+    const CompiledRule& rule = program_.rules[r];
+    std::optional<std::uint32_t> rule_context = rule.non_monotonic ? context : std::nullopt;
+    if (rule.non_monotonic) closed_world_used_ = true;
+    ClosedWorld world{[this, rule_context](FactId f) { return status(f, rule_context); },
+                      [this, rule_context](FactId f) { return why_undecidable(f, rule_context); }};
+    Matcher matcher(facts_, values_, builtins_, world);
+    std::set<std::pair<std::string, std::string>> reported;
+    matcher.match(
+        rule, seed,
+        [&](const Binding& b, std::span<const FactId> ants) {
+            agenda_.push(RuleInstance{r, b, std::vector<FactId>(ants.begin(), ants.end()), rule_context});
+        },
+        [&](const MatchError& e) {
+            std::string where = e.where.file + ":" + std::to_string(e.where.line) + ":" + std::to_string(e.where.column);
+            if (reported.insert({where, e.message}).second)
+                diagnostics.error(e.where, "rule '" + rule.name + "': " + e.message);
+        });
+}
+
+// Records, for every context, the nogoods {closed-world of C, X} for assumptions X outside C and
+// outside every choice set: the closed world of C is the world where nothing else is assumed.
+void Engine::close_contexts() {
+    for (std::size_t i = 0; i < contexts_.size(); ++i) {
+        Context& c = contexts_[i];
+        std::uint32_t count = static_cast<std::uint32_t>(atms_.assumption_count());
+        if (c.assumptions_closed == count) continue;
+        const atms::Environment& base = atms_.env(c.base);
+        Firing why{Firing::Kind::closed_world, std::nullopt, {}, static_cast<std::uint32_t>(i), SourceLocation{"<context>", 1, 1}};
+        std::optional<atms::InformantId> informant;
+        for (std::uint32_t k = c.assumptions_closed; k < count; ++k) {
+            atms::AssumptionId a{k};
+            if (a == c.assumption || base.contains(a)) continue;
+            if (a.value < is_choice_assumption_.size() && is_choice_assumption_[a.value]) continue;
+            if (!informant) informant = new_firing(why);
+            atms_.add_nogood(*informant, {c.node, atms_.node_of(a)});
+        }
+        c.assumptions_closed = count;
+    }
+}
+
+}  // namespace qm::engine

@@ -1,0 +1,289 @@
+// engine/matcher.cpp: depth-first evaluation of a rule's conditions in written order.
+#include "engine/matcher.hpp"
+#include "qm/assert.hpp"
+#include <array>
+#include <limits>
+
+namespace qm::engine {
+
+// The state of one match() call: the binding, a trail of slots bound (for undo) and the
+// antecedents gathered so far.
+struct Matcher::Run {
+    Matcher& m;
+    const CompiledRule& rule;
+    std::optional<Seed> seed;
+    const OnMatch& on_match;
+    const OnError& on_error;
+    Binding binding;
+    std::vector<Slot> trail;
+    std::vector<FactId> antecedents;
+
+    void bind(Slot s, ValueId v) {
+        binding[s] = v;
+        trail.push_back(s);
+    }
+    void undo(std::size_t mark) {
+        while (trail.size() > mark) {
+            binding[trail.back()].reset();
+            trail.pop_back();
+        }
+    }
+    void error(const SourceLocation& where, std::string message) { on_error(MatchError{where, std::move(message)}); }
+
+    // Evaluates a ground term; reports builtin errors. Empty when not ground or on error.
+    std::optional<ValueId> value_of(const CompiledTerm& t, const SourceLocation& where) {
+        Evaluation e = evaluate(t, binding, m.values_, m.builtins_);
+        if (!e.error.empty()) error(where, e.error);
+        return e.value;
+    }
+
+    // Unifies atom with fact f, binding unbound variables. Leaves bindings on the trail.
+    bool unify(const CompiledAtom& atom, FactId f) {
+        const Fact& fact = m.facts_.fact(f);
+        if (fact.predicate != atom.predicate || fact.args.size() != atom.args.size()) return false;
+        for (std::size_t i = 0; i < atom.args.size(); ++i) {
+            const CompiledTerm& t = atom.args[i];
+            if (t.kind == CompiledTerm::Kind::variable && !binding[t.slot]) {
+                bind(t.slot, fact.args[i]);
+                continue;
+            }
+            if (!is_ground(t, binding)) return false;  // a call over unbound variables cannot match
+            auto v = value_of(t, atom.where);
+            if (!v || *v != fact.args[i]) return false;
+        }
+        return true;
+    }
+
+    // Active facts that may unify with atom: the smallest argument index list among ground args.
+    std::span<const FactId> candidates(const CompiledAtom& atom) {
+        std::span<const FactId> best = m.facts_.active_with_predicate(atom.predicate);
+        for (std::uint32_t i = 0; i < atom.args.size(); ++i) {
+            const CompiledTerm& t = atom.args[i];
+            if (t.kind == CompiledTerm::Kind::call || !is_ground(t, binding)) continue;
+            ValueId v = t.kind == CompiledTerm::Kind::constant ? t.constant : *binding[t.slot];
+            auto s = m.facts_.active_with_argument(atom.predicate, i, v);
+            if (s.size() < best.size()) best = s;
+        }
+        return best;
+    }
+
+    // Matches atoms[k..] against active facts, then calls next().
+    void match_atoms(std::span<const CompiledAtom> atoms, const std::function<void()>& next) {
+        if (atoms.empty()) return next();
+        const CompiledAtom& atom = atoms.front();
+        for (FactId f : candidates(atom)) {
+            std::size_t mark = trail.size();
+            if (unify(atom, f)) {
+                antecedents.push_back(f);
+                match_atoms(atoms.subspan(1), next);
+                antecedents.pop_back();
+            }
+            undo(mark);
+        }
+    }
+
+    bool tests_hold(std::span<const CompiledTest> tests) {
+        for (const auto& t : tests)
+            if (!test_holds(t)) return false;
+        return true;
+    }
+
+    bool test_holds(const CompiledTest& t) {
+        std::vector<ValueId> args;
+        for (const auto& a : t.args) {
+            auto v = value_of(a, t.where);
+            if (!v) {
+                if (is_ground(a, binding)) return false;  // builtin error, already reported
+                error(t.where, "builtin test '" + m.builtins_.get(t.test).name + "' uses an unbound variable");
+                return false;
+            }
+            args.push_back(*v);
+        }
+        BuiltinResult r = m.builtins_.apply(t.test, m.values_, args);
+        if (!r.error.empty()) {
+            error(t.where, r.error);
+            return false;
+        }
+        return r.holds;
+    }
+
+    // The elements of a quantifier's set, or empty after reporting an error.
+    std::optional<std::vector<ValueId>> elements(const CompiledTerm& set, const SourceLocation& where) {
+        auto v = value_of(set, where);
+        if (!v) return std::nullopt;
+        const Value& value = m.values_.value(*v);
+        if (value.kind != ValueKind::set) {
+            error(where, "'" + m.values_.print(*v) + "' is not a set");
+            return std::nullopt;
+        }
+        return value.elements;
+    }
+
+    // Calls each(f, status) for every fact unifying with atom (any activity), leaving no bindings.
+    // Returns false if some fact was undecidable (reported).
+    template <class Each>
+    bool closed_world_scan(const CompiledAtom& atom, Each&& each) {
+        bool decidable = true;
+        for (FactId f : m.facts_.with_predicate(atom.predicate)) {
+            std::size_t mark = trail.size();
+            if (unify(atom, f)) {
+                ClosedWorldStatus s = m.closed_world_.status(f);
+                if (s == ClosedWorldStatus::undecidable) {
+                    error(atom.where, m.closed_world_.why_undecidable(f));
+                    decidable = false;
+                } else if (s == ClosedWorldStatus::holds) {
+                    each(f);
+                }
+            }
+            undo(mark);
+        }
+        return decidable;
+    }
+
+    void step(std::size_t i) {
+        if (i == rule.conditions.size()) return on_match(binding, antecedents);
+        const CompiledCondition& c = rule.conditions[i];
+        switch (c.kind) {
+            case CompiledCondition::Kind::match: return step_match(i, c);
+            case CompiledCondition::Kind::test: return step_test(i, c);
+            case CompiledCondition::Kind::negation: return step_negation(i, c);
+            case CompiledCondition::Kind::for_all: return step_for_all(i, c);
+            case CompiledCondition::Kind::exists: return step_exists(i, c);
+            case CompiledCondition::Kind::aggregate: return step_aggregate(i, c);
+        }
+    }
+
+    void step_match(std::size_t i, const CompiledCondition& c) {
+        if (seed && seed->condition == i) {
+            std::size_t mark = trail.size();
+            if (unify(c.atom, seed->fact)) {
+                antecedents.push_back(seed->fact);
+                step(i + 1);
+                antecedents.pop_back();
+            }
+            undo(mark);
+            return;
+        }
+        match_atoms(std::span<const CompiledAtom>(&c.atom, 1), [&] { step(i + 1); });
+    }
+
+    void step_test(std::size_t i, const CompiledCondition& c) {
+        const CompiledTest& t = c.test;
+        // `(= ?x TERM)` with ?x unbound binds ?x (the checker guarantees TERM is ground here).
+        if (m.equals_ && t.test == *m.equals_ && t.args.size() == 2 &&
+            t.args[0].kind == CompiledTerm::Kind::variable && !binding[t.args[0].slot]) {
+            auto v = value_of(t.args[1], t.where);
+            if (!v) {
+                if (!is_ground(t.args[1], binding)) error(t.where, "'=' has unbound variables on both sides");
+                return;
+            }
+            std::size_t mark = trail.size();
+            bind(t.args[0].slot, *v);
+            step(i + 1);
+            undo(mark);
+            return;
+        }
+        if (test_holds(t)) step(i + 1);
+    }
+
+    void step_negation(std::size_t i, const CompiledCondition& c) {
+        bool some_holds = false;
+        bool decidable = closed_world_scan(c.atom, [&](FactId) { some_holds = true; });
+        if (decidable && !some_holds) step(i + 1);
+    }
+
+    void step_for_all(std::size_t i, const CompiledCondition& c) {
+        auto elements_of = elements(c.set, c.where);
+        if (!elements_of) return;
+        std::size_t pushed = 0;
+        bool all = true;
+        for (ValueId e : *elements_of) {
+            std::size_t mark = trail.size();
+            bind(c.slot, e);
+            if (tests_hold(c.tests)) {
+                for (const auto& atom : c.atoms) {
+                    std::vector<ValueId> args;
+                    for (const auto& a : atom.args) {
+                        auto v = value_of(a, atom.where);
+                        if (!v) break;
+                        args.push_back(*v);
+                    }
+                    std::optional<FactId> f;
+                    if (args.size() == atom.args.size()) f = m.facts_.find(atom.predicate, args);
+                    if (!f || !m.facts_.is_active(*f)) {
+                        all = false;
+                        break;
+                    }
+                    antecedents.push_back(*f);
+                    ++pushed;
+                }
+            }
+            undo(mark);
+            if (!all) break;
+        }
+        if (all) step(i + 1);
+        antecedents.resize(antecedents.size() - pushed);
+    }
+
+    void step_exists(std::size_t i, const CompiledCondition& c) {
+        auto elements_of = elements(c.set, c.where);
+        if (!elements_of) return;
+        for (ValueId e : *elements_of) {
+            std::size_t mark = trail.size();
+            if (binding[c.slot] && *binding[c.slot] != e) continue;
+            if (!binding[c.slot]) bind(c.slot, e);
+            if (tests_hold(c.tests)) match_atoms(c.atoms, [&] { step(i + 1); });
+            undo(mark);
+        }
+    }
+
+    void step_aggregate(std::size_t i, const CompiledCondition& c) {
+        auto start = value_of(c.start, c.where);
+        if (!start) return;
+        ValueId total = *start;
+        std::vector<FactId> folded;
+        bool ok = true;
+        bool decidable = closed_world_scan(c.atom, [&](FactId f) {
+            if (!ok) return;
+            auto v = value_of(c.value, c.where);
+            if (!v) {
+                ok = false;
+                return;
+            }
+            BuiltinResult r = m.builtins_.apply(c.function, m.values_, std::array<ValueId, 2>{total, *v});
+            if (!r.error.empty() || !r.value) {
+                error(c.where, r.error.empty() ? "aggregate function returned no value" : r.error);
+                ok = false;
+                return;
+            }
+            total = *r.value;
+            folded.push_back(f);
+        });
+        if (!decidable || !ok) return;
+        std::size_t mark = trail.size();
+        if (binding[c.slot] && *binding[c.slot] != total) return;
+        if (!binding[c.slot]) bind(c.slot, total);
+        antecedents.insert(antecedents.end(), folded.begin(), folded.end());
+        step(i + 1);
+        antecedents.resize(antecedents.size() - folded.size());
+        undo(mark);
+    }
+};
+
+Matcher::Matcher(const FactStore& facts, ValueTable& values, const BuiltinRegistry& builtins,
+                 const ClosedWorld& closed_world)
+    : facts_(facts), values_(values), builtins_(builtins), closed_world_(closed_world),
+      equals_(builtins.find("=")) {}
+
+void Matcher::match(const CompiledRule& rule, std::optional<Seed> seed, const OnMatch& on_match,
+                    const OnError& on_error) {
+    if (seed) {
+        QM_REQUIRE(seed->condition < rule.conditions.size() &&
+                       rule.conditions[seed->condition].kind == CompiledCondition::Kind::match,
+                   "a seed names a match condition");
+    }
+    Run run{*this, rule, seed, on_match, on_error, Binding(rule.slot_count()), {}, {}};
+    run.step(0);
+}
+
+}  // namespace qm::engine

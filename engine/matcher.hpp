@@ -1,0 +1,62 @@
+// engine/matcher.hpp
+// Provides:   Matcher, which enumerates the matches of a compiled rule's conditions against the
+//             active facts, in written order (depth first, candidates in activation order, so the
+//             output order is deterministic). A seed restricts one `match` condition to one fact:
+//             the engine seeds with each newly active fact (semi-naive evaluation).
+//             ClosedWorld is how the engine tells the matcher whether a fact holds for `not` and for
+//             aggregates; the matcher itself never consults the ATMS.
+// Ownership:  borrows the store, table and registry; holds no state between calls.
+// Invariants: every match reports as antecedents exactly the facts its conditions used: one per
+//             `match`, one per atom per element of a `for all`, the witness facts of an `exists`,
+//             and the facts folded by an aggregate.
+// Knows nothing of the ATMS.
+#pragma once
+#include "engine/binding.hpp"
+#include "engine/compiled_rule.hpp"
+#include "engine/fact_store.hpp"
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+
+namespace qm::engine {
+
+enum class ClosedWorldStatus : std::uint8_t { holds, absent, undecidable };
+
+struct ClosedWorld {
+    // Whether the fact holds for the purpose of `not` and aggregates (see docs/RULES.md "## Semantics").
+    std::function<ClosedWorldStatus(FactId)> status;
+    // Why status() answered undecidable, for the diagnostic.
+    std::function<std::string(FactId)> why_undecidable;
+};
+
+struct Seed {
+    std::uint32_t condition;  // index of a `match` condition
+    FactId fact;
+};
+
+struct MatchError {
+    SourceLocation where;
+    std::string message;
+};
+
+class Matcher {
+public:
+    using OnMatch = std::function<void(const Binding&, std::span<const FactId> antecedents)>;
+    using OnError = std::function<void(const MatchError&)>;
+
+    Matcher(const FactStore& facts, ValueTable& values, const BuiltinRegistry& builtins,
+            const ClosedWorld& closed_world);
+    // Pre: a seed names a `match` condition of rule and an active fact.
+    void match(const CompiledRule& rule, std::optional<Seed> seed, const OnMatch& on_match,
+               const OnError& on_error);
+
+private:
+    struct Run;
+    const FactStore& facts_;
+    ValueTable& values_;
+    const BuiltinRegistry& builtins_;
+    const ClosedWorld& closed_world_;
+    std::optional<BuiltinId> equals_;
+};
+}  // namespace qm::engine

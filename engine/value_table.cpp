@@ -1,0 +1,108 @@
+// engine/value_table.cpp: interning and ordering of ground values.
+#include "engine/value_table.hpp"
+#include "qm/assert.hpp"
+#include <algorithm>
+
+namespace qm::engine {
+
+ValueId ValueTable::symbol(std::string_view name) {
+    QM_REQUIRE(!name.empty(), "a symbol has a name");
+    Value v;
+    v.kind = ValueKind::symbol;
+    v.text = std::string(name);
+    return intern(std::move(v));
+}
+
+ValueId ValueTable::integer(std::int64_t i) {
+    Value v;
+    v.kind = ValueKind::integer;
+    v.integer = i;
+    return intern(std::move(v));
+}
+
+ValueId ValueTable::direction(std::string_view signs) {
+    QM_REQUIRE(!signs.empty(), "a direction has at least one component");
+    QM_REQUIRE(signs.find_first_not_of("+0-?") == std::string_view::npos, "a direction holds only signs");
+    Value v;
+    v.kind = ValueKind::direction;
+    v.text = std::string(signs);
+    return intern(std::move(v));
+}
+
+ValueId ValueTable::set(std::vector<ValueId> elements) {
+    for (ValueId e : elements) QM_REQUIRE(values_.contains(e), "set element id out of range");
+    std::sort(elements.begin(), elements.end(), [this](ValueId a, ValueId b) { return less(a, b); });
+    elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
+    Value v;
+    v.kind = ValueKind::set;
+    v.elements = std::move(elements);
+    return intern(std::move(v));
+}
+
+const Value& ValueTable::value(ValueId id) const {
+    QM_REQUIRE(values_.contains(id), "value id out of range");
+    return values_[id];
+}
+
+bool ValueTable::less(ValueId a, ValueId b) const {
+    if (a == b) return false;
+    const Value& x = value(a);
+    const Value& y = value(b);
+    auto rank = [](ValueKind k) {
+        switch (k) {
+            case ValueKind::integer: return 0;
+            case ValueKind::symbol: return 1;
+            case ValueKind::direction: return 2;
+            case ValueKind::set: return 3;
+        }
+        return 4;
+    };
+    if (x.kind != y.kind) return rank(x.kind) < rank(y.kind);
+    switch (x.kind) {
+        case ValueKind::integer: return x.integer < y.integer;
+        case ValueKind::symbol: return x.text < y.text;
+        case ValueKind::direction:
+            if (x.text.size() != y.text.size()) return x.text.size() < y.text.size();
+            return x.text < y.text;
+        case ValueKind::set:
+            return std::lexicographical_compare(x.elements.begin(), x.elements.end(), y.elements.begin(),
+                                                y.elements.end(),
+                                                [this](ValueId p, ValueId q) { return less(p, q); });
+    }
+    return false;
+}
+
+std::string ValueTable::render(const Value& v) const {
+    switch (v.kind) {
+        case ValueKind::symbol: return v.text;
+        case ValueKind::integer: return std::to_string(v.integer);
+        case ValueKind::direction: {
+            std::string out = "(";
+            for (std::size_t i = 0; i < v.text.size(); ++i) {
+                if (i > 0) out += ' ';
+                out += v.text[i];
+            }
+            return out + ")";
+        }
+        case ValueKind::set: {
+            std::string out = "{";
+            for (std::size_t i = 0; i < v.elements.size(); ++i) {
+                if (i > 0) out += ' ';
+                out += printed_[v.elements[i]];
+            }
+            return out + "}";
+        }
+    }
+    return {};
+}
+
+ValueId ValueTable::intern(Value v) {
+    std::string text = render(v);
+    if (auto it = by_text_.find(text); it != by_text_.end()) return it->second;
+    ValueId id = values_.push_back(std::move(v));
+    printed_.push_back(text);
+    by_text_.emplace(std::move(text), id);
+    return id;
+}
+
+}  // namespace qm::engine
