@@ -1,0 +1,53 @@
+// engine/json_writer.cpp
+#include "engine/json_writer.hpp"
+#include <cstdio>
+
+namespace qm::engine {
+namespace {
+
+std::string env_list(const std::vector<EnvText>& envs) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < envs.size(); ++i) {
+        if (i > 0) out += ", ";
+        out += "[";
+        for (std::size_t k = 0; k < envs[i].size(); ++k) out += (k > 0 ? ", " : "") + json_string(envs[i][k]);
+        out += "]";
+    }
+    return out + "]";
+}
+
+}  // namespace
+
+std::string json_string(std::string_view text) {
+    std::string out = "\"";
+    for (char c : text) {
+        switch (c) {
+            case '"': out += "\\\""; break;
+            case '\\': out += "\\\\"; break;
+            case '\n': out += "\\n"; break;
+            case '\t': out += "\\t"; break;
+            default:
+                if (static_cast<unsigned char>(c) < 0x20) {
+                    char buf[8];
+                    std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(c));
+                    out += buf;
+                } else {
+                    out += c;
+                }
+        }
+    }
+    return out + "\"";
+}
+
+std::string to_json(const RunReport& report) {
+    std::string out = "{\"facts\": [";
+    for (std::size_t i = 0; i < report.facts.size(); ++i) {
+        if (i > 0) out += ", ";
+        out += "{\"fact\": " + json_string(report.facts[i].fact) + ", \"label\": " + env_list(report.facts[i].label) + "}";
+    }
+    out += "], \"nogoods\": " + env_list(report.nogoods);
+    out += ", \"interpretations\": " + env_list(report.interpretations) + "}";
+    return out;
+}
+
+}  // namespace qm::engine

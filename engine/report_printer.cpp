@@ -1,0 +1,30 @@
+// engine/report_printer.cpp
+#include "engine/report_printer.hpp"
+
+namespace qm::engine {
+namespace {
+
+std::string env(const EnvText& e) {
+    std::string out = "{";
+    for (std::size_t i = 0; i < e.size(); ++i) out += (i > 0 ? ", " : "") + e[i];
+    return out + "}";
+}
+
+}  // namespace
+
+std::string print_report(const RunReport& report) {
+    std::string out = "facts (" + std::to_string(report.facts.size()) + "):\n";
+    for (const auto& f : report.facts) {
+        out += "  " + f.fact + "  ";
+        if (f.label.empty()) out += "ruled out";
+        for (std::size_t i = 0; i < f.label.size(); ++i) out += (i > 0 ? " " : "") + env(f.label[i]);
+        out += "\n";
+    }
+    out += "nogoods (" + std::to_string(report.nogoods.size()) + "):\n";
+    for (const auto& n : report.nogoods) out += "  " + env(n) + "\n";
+    out += "interpretations (" + std::to_string(report.interpretations.size()) + "):\n";
+    for (const auto& i : report.interpretations) out += "  " + env(i) + "\n";
+    return out;
+}
+
+}  // namespace qm::engine

@@ -1,0 +1,38 @@
+// engine/why.hpp
+// Provides:   why(), the explanation of a fact for drivers and `qm-atms run --why`: for a fact that
+//             holds, one justification tree per label environment (ATMS explain); for a fact that is
+//             ruled out (it has support, but every supporting environment is nogood), the minimal
+//             nogoods that exclude it and the derivation of each. Every step names the informant:
+//             the rule, its file:line and the binding of the firing (or "premise"/"assumption").
+// Ownership:  plain values, independent of the Engine once built.
+// Knows nothing of mechanics.
+#pragma once
+#include "engine/engine.hpp"
+#include "engine/run_report.hpp"
+#include <string>
+#include <vector>
+
+namespace qm::engine {
+
+struct WhyStep {
+    std::string informant;                 // "rule same-column at queens4.rules:12", "premise at ..."
+    std::vector<std::string> binding;      // "?r1 = 1", in slot order; bound slots only
+    std::vector<std::string> antecedents;  // node texts; an assumption node reads "assume (f)"
+    std::string consequent;                // fact text, or "false"
+};
+
+struct Derivation {
+    EnvText environment;                   // where it holds (or the nogood)
+    std::vector<WhyStep> steps;            // leaves first
+};
+
+struct Why {
+    enum class Status : std::uint8_t { holds, ruled_out, unsupported } status = Status::unsupported;
+    std::string fact;
+    std::vector<Derivation> derivations;   // holds: one per label environment
+    std::vector<Derivation> nogoods;       // ruled_out: each excluding nogood and its derivation
+};
+
+// Pre: f issued by engine; the engine has been run.
+[[nodiscard]] Why why(Engine& engine, FactId f);
+}  // namespace qm::engine
