@@ -39,7 +39,7 @@ FactId Engine::intern_fact(ValueId predicate, std::span<const ValueId> args) {
     auto [f, fresh] = facts_.intern(predicate, args);
     if (fresh) {
         atms::NodeId n = atms_.add_node(new_datum({Datum::Kind::fact, f.value}));
-        FactId check = fact_nodes_.push_back(FactNodes{n, std::nullopt});
+        [[maybe_unused]] FactId check = fact_nodes_.push_back(FactNodes{n, std::nullopt});
         QM_ASSERT(check == f, "fact ids and fact node records stay aligned");
     }
     return f;

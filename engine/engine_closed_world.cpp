@@ -16,7 +16,10 @@ std::string print_label(const Engine& e, const std::vector<atms::EnvId>& label) 
         if (i > 0) out += ", ";
         out += "{";
         auto as = e.atms().env(label[i]).assumptions();
-        for (std::size_t k = 0; k < as.size(); ++k) out += (k > 0 ? ", " : "") + e.print(as[k]);
+        for (std::size_t k = 0; k < as.size(); ++k) {
+            if (k > 0) out += ", ";
+            out += e.print(as[k]);
+        }
         out += "}";
     }
     return out + "}";

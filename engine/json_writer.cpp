@@ -10,7 +10,10 @@ std::string env_list(const std::vector<EnvText>& envs) {
     for (std::size_t i = 0; i < envs.size(); ++i) {
         if (i > 0) out += ", ";
         out += "[";
-        for (std::size_t k = 0; k < envs[i].size(); ++k) out += (k > 0 ? ", " : "") + json_string(envs[i][k]);
+        for (std::size_t k = 0; k < envs[i].size(); ++k) {
+            if (k > 0) out += ", ";
+            out += json_string(envs[i][k]);
+        }
         out += "]";
     }
     return out + "]";

@@ -6,7 +6,10 @@ namespace {
 
 std::string env(const EnvText& e) {
     std::string out = "{";
-    for (std::size_t i = 0; i < e.size(); ++i) out += (i > 0 ? ", " : "") + e[i];
+    for (std::size_t i = 0; i < e.size(); ++i) {
+        if (i > 0) out += ", ";
+        out += e[i];
+    }
     return out + "}";
 }
 
@@ -17,7 +20,10 @@ std::string print_report(const RunReport& report) {
     for (const auto& f : report.facts) {
         out += "  " + f.fact + "  ";
         if (f.label.empty()) out += "ruled out";
-        for (std::size_t i = 0; i < f.label.size(); ++i) out += (i > 0 ? " " : "") + env(f.label[i]);
+        for (std::size_t i = 0; i < f.label.size(); ++i) {
+            if (i > 0) out += ' ';
+            out += env(f.label[i]);
+        }
         out += "\n";
     }
     out += "nogoods (" + std::to_string(report.nogoods.size()) + "):\n";

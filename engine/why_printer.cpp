@@ -6,7 +6,10 @@ namespace {
 
 std::string join(const std::vector<std::string>& xs, const char* sep) {
     std::string out;
-    for (std::size_t i = 0; i < xs.size(); ++i) out += (i > 0 ? sep : "") + xs[i];
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+        if (i > 0) out += sep;
+        out += xs[i];
+    }
     return out;
 }
 
