@@ -1,0 +1,28 @@
+// engine/ground_atom_text.hpp
+// Provides:   parse_ground_atom(), which reads one ground atom written in the rule language's
+//             notation, e.g. "(queen 1 2)", "(trans-motion block (+ 0))", "(s {(+ 0) (0 +)})", for
+//             `qm-atms run --why 'FACT'` and for drivers that name facts as text.
+// Ownership:  interns the values it reads into the given ValueTable.
+// Errors:     bad text gives an error message and a 1-based column; it never throws.
+// Knows nothing of the ATMS.
+#pragma once
+#include "engine/value_table.hpp"
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace qm::engine {
+struct GroundAtom {
+    ValueId predicate;
+    std::vector<ValueId> args;
+};
+
+struct GroundAtomParse {
+    std::optional<GroundAtom> atom;  // set on success
+    std::string error;               // otherwise: what was wrong
+    std::uint32_t column = 1;        // and where (1-based)
+};
+
+[[nodiscard]] GroundAtomParse parse_ground_atom(std::string_view text, ValueTable& values);
+}  // namespace qm::engine
