@@ -35,6 +35,13 @@ void register_integer_builtins(BuiltinRegistry& r) {
         if (__builtin_sub_overflow(x, y, &out)) return BuiltinResult::fail("integer overflow in '-'");
         return BuiltinResult::of(v.integer(out));
     });
+    r.add("*", BuiltinKind::function, 2, 2, [](ValueTable& v, std::span<const ValueId> a) {
+        if (!integers(v, a)) return not_integers("*");
+        std::int64_t out = 0;
+        if (__builtin_mul_overflow(v.value(a[0]).integer, v.value(a[1]).integer, &out))
+            return BuiltinResult::fail("integer overflow in '*'");
+        return BuiltinResult::of(v.integer(out));
+    });
     r.add("abs", BuiltinKind::function, 1, 1, [](ValueTable& v, std::span<const ValueId> a) {
         if (!integers(v, a)) return not_integers("abs");
         std::int64_t x = v.value(a[0]).integer;

@@ -1,0 +1,66 @@
+// tests/engine/builtin_registry_test.cpp: the registry's contract and the comparison and integer
+// builtins, checked against C++ arithmetic on seeded random integers.
+#include "engine/builtin_registry.hpp"
+#include <doctest/doctest.h>
+#include <random>
+
+using namespace qm::engine;
+
+namespace {
+BuiltinResult apply(ValueTable& v, const char* name, std::vector<ValueId> args) {
+    const auto& b = default_builtins();
+    auto id = b.find(name);
+    REQUIRE(id.has_value());
+    return b.apply(*id, v, args);
+}
+}  // namespace
+
+TEST_CASE("engine/builtin_registry: names are unique and arity is a precondition") {
+    BuiltinRegistry r;
+    auto fn = [](ValueTable&, std::span<const ValueId>) { return BuiltinResult::truth(true); };
+    BuiltinId t = r.add("t", BuiltinKind::test, 1, 2, fn);
+    CHECK(r.find("t") == t);
+    CHECK(!r.find("u").has_value());
+    CHECK_THROWS_AS(r.add("t", BuiltinKind::test, 1, 1, fn), qm::InternalError);
+    CHECK_THROWS_AS(r.add("bad", BuiltinKind::test, 2, 1, fn), qm::InternalError);
+    ValueTable v;
+    CHECK_THROWS_AS((void)r.apply(t, v, {}), qm::InternalError);
+    CHECK(r.apply(t, v, std::vector<ValueId>{v.integer(1)}).holds);
+}
+
+TEST_CASE("engine/builtin_registry: integer arithmetic and comparisons agree with C++ on random integers") {
+    std::mt19937 rng(11);
+    std::uniform_int_distribution<int> d(-50, 50);
+    ValueTable v;
+    for (int i = 0; i < 500; ++i) {
+        int x = d(rng), y = d(rng);
+        ValueId a = v.integer(x), b = v.integer(y);
+        CHECK(apply(v, "+", {a, b}).value == v.integer(x + y));
+        CHECK(apply(v, "-", {a, b}).value == v.integer(x - y));
+        CHECK(apply(v, "-", {a}).value == v.integer(-x));
+        CHECK(apply(v, "*", {a, b}).value == v.integer(x * y));
+        CHECK(apply(v, "abs", {a}).value == v.integer(x < 0 ? -x : x));
+        CHECK(apply(v, "min", {a, b}).value == v.integer(std::min(x, y)));
+        CHECK(apply(v, "max", {a, b}).value == v.integer(std::max(x, y)));
+        CHECK(apply(v, "<", {a, b}).holds == (x < y));
+        CHECK(apply(v, "<=", {a, b}).holds == (x <= y));
+        CHECK(apply(v, ">", {a, b}).holds == (x > y));
+        CHECK(apply(v, ">=", {a, b}).holds == (x >= y));
+        CHECK(apply(v, "=", {a, b}).holds == (x == y));
+        CHECK(apply(v, "!=", {a, b}).holds == (x != y));
+    }
+}
+
+TEST_CASE("engine/builtin_registry: range generates a set; errors are reported, not thrown") {
+    ValueTable v;
+    auto r = apply(v, "range", {v.integer(1), v.integer(4)});
+    REQUIRE(r.value.has_value());
+    CHECK(v.print(*r.value) == "{1 2 3 4}");
+    CHECK(v.print(*apply(v, "range", {v.integer(3), v.integer(1)}).value) == "{}");
+    CHECK(!apply(v, "range", {v.integer(0), v.integer(1000000)}).error.empty());
+    CHECK(!apply(v, "+", {v.symbol("a"), v.integer(1)}).error.empty());
+    CHECK(!apply(v, "*", {v.integer(INT64_MAX), v.integer(2)}).error.empty());
+    CHECK(!apply(v, "abs", {v.integer(INT64_MIN)}).error.empty());
+    // Comparison of different kinds follows the table's total order: integers before symbols.
+    CHECK(apply(v, "<", {v.integer(9), v.symbol("a")}).holds);
+}
