@@ -1,0 +1,62 @@
+// geometry/detail/place_parts.hpp (internal)
+// Provides:   the builder's intermediate geometry shared by its stages: divisions (FSDs and
+//             external divisions as axis-parallel segments), line places with their end joins,
+//             and FaceLocator, which names the full face containing a free configuration.
+// Ownership:  values owned by one build_place_vocabulary() call.
+#pragma once
+#include "geometry/cspace.hpp"
+#include "geometry/pair_oracle.hpp"
+#include "geometry/place_vocabulary.hpp"
+#include <optional>
+#include <vector>
+
+namespace qm::geometry::detail {
+
+// An axis-parallel segment from `start` running `length` along axis `axis` in direction `dir`.
+struct Division {
+    PlaceKind kind = PlaceKind::fsd;
+    int axis = 0;
+    int dir = 1;
+    Eigen::Vector2d start;
+    double length = 0.0;
+    std::string label;
+    std::vector<std::pair<double, PlaceId>> joins;  // (parameter along, join place), incl. both ends
+    [[nodiscard]] Eigen::Vector2d at(double t) const {
+        Eigen::Vector2d p = start;
+        p[axis] += dir * t;
+        return p;
+    }
+};
+
+// A CSEG or division piece between two joins (either may be absent on a loop).
+struct LineInfo {
+    PlaceId place{0};
+    std::optional<PlaceId> start, end;
+    Eigen::Vector2d mid;     // a point in the middle of the piece
+    Eigen::Vector2d normal;  // CSEG: unit normal into free space; division: unit normal of one side
+    Eigen::Vector2d tangent; // unit direction from start towards end at mid
+    bool two_sided = false;  // divisions have free space on both sides
+};
+
+class FaceLocator {
+public:
+    FaceLocator(const CSpaceResult& space, const std::vector<Division>& divisions);
+    // Labels the faces; returns the number of faces. face_of_sample() is valid afterwards.
+    int label();
+    [[nodiscard]] std::optional<int> face_at(const Eigen::Vector2d& q) const;
+    [[nodiscard]] int face_of_sample(int i, int j) const { return face_[static_cast<std::size_t>(i + n0_ * j)]; }
+
+private:
+    [[nodiscard]] bool crosses_division(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const;
+    const CSpaceResult& space_;
+    const std::vector<Division>& divisions_;
+    int n0_, n1_;
+    std::vector<std::uint8_t> cut_[2];  // cut_[k][s]: edge from sample s along axis k is cut
+    std::vector<int> face_;             // -1 for blocked samples
+};
+
+// Adjacency of every place under every motion direction (8.1.3); appends to vocabulary.
+void add_adjacency(const PairOracle& oracle, const CSpaceRequest& request, const std::vector<LineInfo>& lines,
+                   const FaceLocator& faces, const std::vector<PlaceId>& face_places, PlaceVocabulary& vocabulary);
+
+}  // namespace qm::geometry::detail

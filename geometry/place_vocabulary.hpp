@@ -1,0 +1,61 @@
+// geometry/place_vocabulary.hpp
+// Provides:   PlaceVocabulary, the symbolic places of one kinematic pair's configuration space
+//             (thesis 4.2, 8.1.2): CSEGs (Def 28) with their qualitative normal into free space,
+//             joins (Defs 29-30) with their normals and concavity, free space divisions (Def 31),
+//             external place divisions (8.2.1, 9.2) and full faces (Def 32); and Adjacent facts
+//             (8.1.3) under every motion direction, flagged instantaneous or interval.
+// Ownership:  a value type; places refer to each other by PlaceId (index into places).
+// Invariants: places[k].id == PlaceId{k}; every adjacency names existing places.
+// Knows nothing of the ATMS or the engine: the CLI turns places into facts.
+#pragma once
+#include "geometry/qualitative_sign.hpp"
+#include "qm/id.hpp"
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace qm::geometry {
+
+using PlaceId = qm::Id<struct PlaceTag>;
+
+enum class PlaceKind { cseg, join, fsd, external_division, face };
+[[nodiscard]] const char* to_string(PlaceKind k) noexcept;
+
+enum class JoinKind {
+    normal_change,  // the CSEG normal changes qualitatively (a significant point, 8.1.2)
+    fsd_end,        // an FSD ends on a CSEG
+    crossing,       // two divisions cross
+    limit,          // the boundary leaves the domain of a translation axis
+};
+[[nodiscard]] const char* to_string(JoinKind k) noexcept;
+
+struct Place {
+    PlaceId id{0};
+    PlaceKind kind = PlaceKind::face;
+    std::vector<QualDirection> normals;  // CSEG: one; join: those of the CSEGs meeting there
+    std::optional<bool> concave;         // joins between two CSEGs: Def 29 (true) / Def 30 (false)
+    JoinKind join_kind = JoinKind::normal_change;
+    int axis = -1;                       // FSD / external division: the axis it runs along
+    std::string label;                   // external division: the force change it marks
+    std::vector<Eigen::Vector2d> points; // CSEG/FSD: polyline; join: one point; face: one sample
+    double extent = 0.0;                 // face: number of grid samples it covers
+};
+
+struct Adjacency {
+    PlaceId from{0};
+    PlaceId to{0};
+    QualDirection motion;         // (motion of part 0, motion of part 1)
+    bool instantaneous = false;   // the current place has zero width in this motion (8.1.3)
+    bool constrained = false;     // motion into blocked space: the next place is the current one
+    friend bool operator==(const Adjacency&, const Adjacency&) = default;
+};
+
+struct PlaceVocabulary {
+    std::vector<Place> places;
+    std::vector<Adjacency> adjacency;
+    [[nodiscard]] std::size_t count(PlaceKind k) const;
+    [[nodiscard]] const Place& at(PlaceId id) const { return places[id.value]; }
+};
+
+}  // namespace qm::geometry
