@@ -1,0 +1,128 @@
+// alex/scene_ast.hpp
+// Provides:   the raw AST of an Alex scene file as the parser (alex/scene_parser.hpp) produces it,
+//             before any check: names are as spelled, signs are raw tokens ("+", "--", "?x"), and
+//             sections come in source order. Both notations of docs/SCENE_FORMAT.md (s-expression,
+//             Figures 6.1/7.2/7.8, and `Keyword : items`, Figures 7.12/7.16) produce this same AST.
+//             Also SourceText (a file's text with line lookup) and PositionTable, which maps each
+//             node's position tag to its byte offset so that the checker can point at the source.
+// Ownership:  plain values. Every node derives from x3::position_tagged; id_first indexes the
+//             PositionTable filled by the same parse.
+// Knows nothing of the checked model (alex/scene.hpp) or of mechanics.
+#pragma once
+#include "qm/diagnostics.hpp"
+#include <boost/optional.hpp>
+#include <boost/spirit/home/x3/support/ast/position_tagged.hpp>
+#include <boost/spirit/home/x3/support/ast/variant.hpp>
+#include <algorithm>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace qm::alex {
+
+// The text of one input (a file, or a command-line argument), with 1-based line/column lookup.
+class SourceText {
+public:
+    SourceText(std::string file, std::string text) : file_(std::move(file)), text_(std::move(text)) {
+        line_starts_.push_back(0);
+        for (std::size_t i = 0; i < text_.size(); ++i)
+            if (text_[i] == '\n') line_starts_.push_back(i + 1);
+    }
+    [[nodiscard]] const std::string& file() const noexcept { return file_; }
+    [[nodiscard]] const std::string& text() const noexcept { return text_; }
+    [[nodiscard]] SourceLocation locate(std::size_t offset) const {
+        const std::size_t line = line_index(offset);
+        return {file_, static_cast<std::uint32_t>(line + 1),
+                static_cast<std::uint32_t>(std::min(offset, text_.size()) - line_starts_[line] + 1)};
+    }
+    // The whole line holding `offset`, without its newline (for the caret display).
+    [[nodiscard]] std::string line_at(std::size_t offset) const {
+        const std::size_t line = line_index(offset);
+        const std::size_t b = line_starts_[line];
+        std::size_t e = text_.find('\n', b);
+        if (e == std::string::npos) e = text_.size();
+        if (e > b && text_[e - 1] == '\r') --e;
+        return text_.substr(b, e - b);
+    }
+
+private:
+    [[nodiscard]] std::size_t line_index(std::size_t offset) const {
+        auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), std::min(offset, text_.size()));
+        return static_cast<std::size_t>(it - line_starts_.begin()) - 1;
+    }
+    std::string file_;
+    std::string text_;
+    std::vector<std::size_t> line_starts_;
+};
+
+namespace ast {
+namespace x3 = boost::spirit::x3;
+
+struct Name : x3::position_tagged { std::string text; };
+struct SignToken : x3::position_tagged { std::string text; };  // "+", "0", "-", "?x" or a bad token
+struct Direction : x3::position_tagged { std::vector<SignToken> parts; };
+
+struct Description : x3::position_tagged { Name kind; Name object; };          // (rigid-ob block)
+struct SurfaceEntry : x3::position_tagged { Name name; Direction normal; Direction origin; };
+struct ObjectSurfaces : x3::position_tagged { Name object; std::vector<SurfaceEntry> surfaces; };
+struct ConstraintEntry : x3::position_tagged { Name object; std::vector<Direction> directions; };
+struct ForceEntry : x3::position_tagged { Name object; Direction direction; Direction origin; boost::optional<Name> cause; };
+struct ContactEntry : x3::position_tagged { Name first; Name second; };
+struct MotionEntry : x3::position_tagged { Name object; Direction translation; Direction rotation; };
+
+struct Descriptor : x3::variant<ContactEntry, ForceEntry, MotionEntry> {
+    using base_type::base_type;
+    using base_type::operator=;
+};
+struct Situation : x3::position_tagged { std::vector<Descriptor> descriptors; };
+
+struct Individuals : x3::position_tagged { std::vector<Name> names; };
+struct Descriptions : x3::position_tagged { std::vector<Description> entries; };
+struct Surfaces : x3::position_tagged { std::vector<ObjectSurfaces> entries; };
+struct TransConstraints : x3::position_tagged { std::vector<ConstraintEntry> entries; };
+struct RotConstraints : x3::position_tagged { std::vector<ConstraintEntry> entries; };
+struct Forces : x3::position_tagged { std::vector<ForceEntry> entries; };
+// Situation is a section only in the keyword notation (`Situation : Contact (a b), ...`).
+struct Section : x3::variant<Individuals, Descriptions, Surfaces, TransConstraints, RotConstraints, Forces, Situation> {
+    using base_type::base_type;
+    using base_type::operator=;
+};
+
+struct Dimensions : x3::position_tagged { std::string text; };  // an integer token
+
+struct Scenario : x3::position_tagged {
+    Dimensions dimensions;
+    Name name;
+    std::vector<Section> sections;
+    std::vector<Situation> situations;
+};
+
+// A query fact as written: `Rotational-Motion (follower (-))`, `Contact a b`, `Force obj`.
+struct QueryFact : x3::position_tagged {
+    Name predicate;
+    Name first;
+    boost::optional<Name> second;       // Contact only
+    boost::optional<Direction> direction;  // the motion/freedom predicates only
+};
+
+}  // namespace ast
+
+// Maps a node's position tag (id_first) to the byte offset where the node starts.
+class PositionTable {
+public:
+    int add(std::size_t offset) {
+        offsets_.push_back(offset);
+        return static_cast<int>(offsets_.size() - 1);
+    }
+    // Offset of a node; 0 for an untagged node (id_first < 0).
+    [[nodiscard]] std::size_t offset_of(const ast::x3::position_tagged& node) const {
+        return node.id_first >= 0 && static_cast<std::size_t>(node.id_first) < offsets_.size()
+                   ? offsets_[static_cast<std::size_t>(node.id_first)]
+                   : 0;
+    }
+
+private:
+    std::vector<std::size_t> offsets_;
+};
+
+}  // namespace qm::alex

@@ -1,0 +1,366 @@
+// alex/scene_parser_def.hpp
+// Provides:   the Spirit X3 grammar of Alex scenes (docs/SCENE_FORMAT.md; thesis Figure 6.1 and
+//             the notations of Figures 7.2, 7.8, 7.12, 7.16), of `--given` motions and of query
+//             facts. Include only from scene_parser.cpp: X3's compile cost is paid in one TU.
+// Ownership:  rules are constants; per-parse state (positions, diagnostics) is injected with
+//             x3::with<state_tag>.
+// Invariants: every rule whose attribute is position_tagged records its start offset on success
+//             (annotate); the top-level rules turn the first expectation failure into one located
+//             diagnostic (report_errors) and fail, so no exception escapes a parse.
+#pragma once
+#include "alex/scene_ast.hpp"
+#include "qm/diagnostics.hpp"
+#include <boost/fusion/include/adapt_struct.hpp>
+#include <boost/spirit/home/x3.hpp>
+#include <string>
+#include <type_traits>
+
+BOOST_FUSION_ADAPT_STRUCT(qm::alex::ast::Description, kind, object)
+BOOST_FUSION_ADAPT_STRUCT(qm::alex::ast::SurfaceEntry, name, normal, origin)
+BOOST_FUSION_ADAPT_STRUCT(qm::alex::ast::ObjectSurfaces, object, surfaces)
+BOOST_FUSION_ADAPT_STRUCT(qm::alex::ast::ConstraintEntry, object, directions)
+BOOST_FUSION_ADAPT_STRUCT(qm::alex::ast::ForceEntry, object, direction, origin, cause)
+BOOST_FUSION_ADAPT_STRUCT(qm::alex::ast::ContactEntry, first, second)
+BOOST_FUSION_ADAPT_STRUCT(qm::alex::ast::MotionEntry, object, translation, rotation)
+BOOST_FUSION_ADAPT_STRUCT(qm::alex::ast::Scenario, dimensions, name, sections, situations)
+BOOST_FUSION_ADAPT_STRUCT(qm::alex::ast::QueryFact, predicate, first, second, direction)
+
+namespace qm::alex::parser {
+namespace x3 = boost::spirit::x3;
+using Iterator = std::string::const_iterator;
+
+// The keyword notation's header names the scene before its dimension count (`Gears 2`).
+struct KeywordScenario {
+    ast::Name name;
+    ast::Dimensions dimensions;
+    std::vector<ast::Section> sections;
+};
+}  // namespace qm::alex::parser
+BOOST_FUSION_ADAPT_STRUCT(qm::alex::parser::KeywordScenario, name, dimensions, sections)
+
+namespace qm::alex::parser {
+
+struct ParseState {
+    Iterator begin;
+    PositionTable* positions = nullptr;
+    Diagnostics* diags = nullptr;
+    const SourceText* src = nullptr;
+    bool failed = false;
+};
+struct state_tag;
+
+// Skips blanks and `;` comments (to end of line) from offset i.
+inline std::size_t skip_blanks(const std::string& t, std::size_t i) {
+    while (i < t.size()) {
+        if (std::isspace(static_cast<unsigned char>(t[i]))) {
+            ++i;
+        } else if (t[i] == ';') {
+            while (i < t.size() && t[i] != '\n') ++i;
+        } else {
+            break;
+        }
+    }
+    return i;
+}
+
+// The token starting at offset i, quoted, for "but found ..." (or "end of input").
+inline std::string token_at(const std::string& t, std::size_t i) {
+    if (i >= t.size()) return "end of input";
+    if (std::string_view("(),:").find(t[i]) != std::string_view::npos) return std::string("'") + t[i] + "'";
+    std::size_t e = i;
+    while (e < t.size() && e - i < 40 && !std::isspace(static_cast<unsigned char>(t[e])) &&
+           std::string_view("(),:;").find(t[e]) == std::string_view::npos)
+        ++e;
+    std::string tok = t.substr(i, e - i);
+    for (char& c : tok)
+        if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
+    return "'" + tok + "'";
+}
+
+inline void report_expected(ParseState& st, Iterator where, const std::string& what) {
+    const std::string& t = st.src->text();
+    const std::size_t at = skip_blanks(t, static_cast<std::size_t>(where - st.begin));
+    st.diags->error(st.src->locate(at), "expected " + what + " but found " + token_at(t, at), st.src->line_at(at));
+}
+
+// on_success: records where each position_tagged node starts (after leading blanks).
+struct annotate {
+    template <class It, class Attr, class Ctx>
+    void on_success(const It& first, const It& last, Attr& node, const Ctx& ctx) const {
+        if constexpr (std::is_base_of_v<x3::position_tagged, Attr>) {
+            ParseState& st = x3::get<state_tag>(ctx);
+            It f = first;
+            x3::skip_over(f, last, ctx);
+            node.id_first = st.positions->add(static_cast<std::size_t>(f - st.begin));
+        }
+    }
+};
+
+// on_error: the first expectation failure becomes the diagnostic; the parse then fails.
+struct report_errors {
+    template <class It, class Exception, class Ctx>
+    x3::error_handler_result on_error(It&, const It&, const Exception& x, const Ctx& ctx) const {
+        ParseState& st = x3::get<state_tag>(ctx);
+        if (!st.failed) report_expected(st, x.where(), x.which());
+        st.failed = true;
+        return x3::error_handler_result::fail;
+    }
+};
+
+// --- lexical pieces --------------------------------------------------------------------------
+inline const auto name_char = x3::alnum | x3::char_('-') | x3::char_('_');
+inline const auto skipper = x3::space | x3::lexeme[';' >> *(x3::char_ - x3::eol) >> (x3::eol | x3::eoi)];
+
+// A case-insensitive keyword, not followed by a name character. Pre: s is lower case.
+inline auto kw(const char* s) { return x3::lexeme[x3::no_case[x3::lit(s)] >> !name_char]; }
+
+// Semantic action storing the matched text (x3::raw) into a member of the rule's attribute.
+template <class Node>
+inline auto store_text(std::string Node::*member) {
+    return [member](auto& ctx) {
+        const auto& r = x3::_attr(ctx);
+        (x3::_val(ctx).*member).assign(r.begin(), r.end());
+    };
+}
+// Semantic action moving the parsed attribute into a member of the rule's attribute.
+template <class Node, class M>
+inline auto store(M Node::*member) {
+    return [member](auto& ctx) { x3::_val(ctx).*member = std::move(x3::_attr(ctx)); };
+}
+
+// --- rule ids --------------------------------------------------------------------------------
+#define QM_ALEX_RULE_ID(id) struct id : annotate {}
+QM_ALEX_RULE_ID(name_class);
+QM_ALEX_RULE_ID(sign_class);
+QM_ALEX_RULE_ID(direction_class);
+QM_ALEX_RULE_ID(dimensions_class);
+QM_ALEX_RULE_ID(description_sx_class);
+QM_ALEX_RULE_ID(description_kw_class);
+QM_ALEX_RULE_ID(surface_entry_class);
+QM_ALEX_RULE_ID(object_surfaces_sx_class);
+QM_ALEX_RULE_ID(object_surfaces_kw_class);
+QM_ALEX_RULE_ID(constraint_sx_class);
+QM_ALEX_RULE_ID(constraint_kw_class);
+QM_ALEX_RULE_ID(force_body_class);
+QM_ALEX_RULE_ID(force_entry_sx_class);
+QM_ALEX_RULE_ID(contact_sx_class);
+QM_ALEX_RULE_ID(force_sx_class);
+QM_ALEX_RULE_ID(motion_sx_class);
+QM_ALEX_RULE_ID(contact_kw_class);
+QM_ALEX_RULE_ID(force_kw_class);
+QM_ALEX_RULE_ID(motion_kw_class);
+QM_ALEX_RULE_ID(descriptor_sx_class);
+QM_ALEX_RULE_ID(descriptor_body_sx_class);
+QM_ALEX_RULE_ID(descriptor_kw_class);
+QM_ALEX_RULE_ID(situation_sx_class);
+QM_ALEX_RULE_ID(situation_kw_class);
+QM_ALEX_RULE_ID(individuals_sx_class);
+QM_ALEX_RULE_ID(individuals_kw_class);
+QM_ALEX_RULE_ID(descriptions_sx_class);
+QM_ALEX_RULE_ID(descriptions_kw_class);
+QM_ALEX_RULE_ID(surfaces_sx_class);
+QM_ALEX_RULE_ID(surfaces_kw_class);
+QM_ALEX_RULE_ID(trans_sx_class);
+QM_ALEX_RULE_ID(trans_kw_class);
+QM_ALEX_RULE_ID(rot_sx_class);
+QM_ALEX_RULE_ID(rot_kw_class);
+QM_ALEX_RULE_ID(forces_sx_class);
+QM_ALEX_RULE_ID(forces_kw_class);
+QM_ALEX_RULE_ID(section_sx_class);
+QM_ALEX_RULE_ID(section_kw_class);
+QM_ALEX_RULE_ID(defstates_class);
+QM_ALEX_RULE_ID(scenario_sx_class);
+QM_ALEX_RULE_ID(keyword_scenario_class);
+QM_ALEX_RULE_ID(scenario_kw_class);
+#undef QM_ALEX_RULE_ID
+struct scene_file_class : annotate, report_errors {};
+struct given_class : annotate, report_errors {};
+struct query_class : annotate, report_errors {};
+
+// --- rules -----------------------------------------------------------------------------------
+const x3::rule<name_class, ast::Name> name = "a name";
+const x3::rule<sign_class, ast::SignToken> sign = "a sign";
+const x3::rule<direction_class, ast::Direction> direction = "a direction like (0 +)";
+const x3::rule<dimensions_class, ast::Dimensions> dimensions = "the number of dimensions (2 or 3)";
+const x3::rule<description_sx_class, ast::Description> description_sx = "an object description like (rigid-ob block)";
+const x3::rule<description_kw_class, ast::Description> description_kw = "an object description like rigid-ob(block)";
+const x3::rule<surface_entry_class, ast::SurfaceEntry> surface_entry = "a surface entry like (top (0 +) (0 -))";
+const x3::rule<object_surfaces_sx_class, ast::ObjectSurfaces> object_surfaces_sx = "an object's surfaces";
+const x3::rule<object_surfaces_kw_class, ast::ObjectSurfaces> object_surfaces_kw = "an object's surfaces";
+const x3::rule<constraint_sx_class, ast::ConstraintEntry> constraint_sx = "a constraint entry like (table (?x ?y))";
+const x3::rule<constraint_kw_class, ast::ConstraintEntry> constraint_kw = "a constraint entry like table (?x ?y)";
+const x3::rule<force_body_class, ast::ForceEntry> force_body = "a force";
+const x3::rule<force_entry_sx_class, ast::ForceEntry> force_entry_sx = "a force entry like (block (0 -) (0 0))";
+const x3::rule<contact_sx_class, ast::ContactEntry> contact_sx = "a contact";
+const x3::rule<force_sx_class, ast::ForceEntry> force_sx = "a force";
+const x3::rule<motion_sx_class, ast::MotionEntry> motion_sx = "a motion";
+const x3::rule<contact_kw_class, ast::ContactEntry> contact_kw = "a contact";
+const x3::rule<force_kw_class, ast::ForceEntry> force_kw = "a force";
+const x3::rule<motion_kw_class, ast::MotionEntry> motion_kw = "a motion";
+const x3::rule<descriptor_sx_class, ast::Descriptor> descriptor_sx = "a situation descriptor";
+const x3::rule<descriptor_body_sx_class, ast::Descriptor> descriptor_body_sx =
+    "Contact, Force or Motion";
+const x3::rule<descriptor_kw_class, ast::Descriptor> descriptor_kw =
+    "a situation descriptor (Contact, Force or Motion)";
+const x3::rule<situation_sx_class, ast::Situation> situation_sx = "a situation";
+const x3::rule<situation_kw_class, ast::Situation> situation_kw = "a situation";
+const x3::rule<individuals_sx_class, ast::Individuals> individuals_sx = "Individuals";
+const x3::rule<individuals_kw_class, ast::Individuals> individuals_kw = "Individuals";
+const x3::rule<descriptions_sx_class, ast::Descriptions> descriptions_sx = "Descriptions";
+const x3::rule<descriptions_kw_class, ast::Descriptions> descriptions_kw = "Descriptions";
+const x3::rule<surfaces_sx_class, ast::Surfaces> surfaces_sx = "Surfaces";
+const x3::rule<surfaces_kw_class, ast::Surfaces> surfaces_kw = "Surfaces";
+const x3::rule<trans_sx_class, ast::TransConstraints> trans_sx = "Translational-Constraints";
+const x3::rule<trans_kw_class, ast::TransConstraints> trans_kw = "Translational-Constraints";
+const x3::rule<rot_sx_class, ast::RotConstraints> rot_sx = "Rotational-Constraints";
+const x3::rule<rot_kw_class, ast::RotConstraints> rot_kw = "Rotational-Constraints";
+const x3::rule<forces_sx_class, ast::Forces> forces_sx = "Forces";
+const x3::rule<forces_kw_class, ast::Forces> forces_kw = "Forces";
+const x3::rule<section_sx_class, ast::Section> section_sx = "a section";
+const x3::rule<section_kw_class, ast::Section> section_kw = "a section";
+const x3::rule<defstates_class, std::vector<ast::Situation>> defstates = "(Defstates ...)";
+const x3::rule<scenario_sx_class, ast::Scenario> scenario_sx = "(Defscenario ...)";
+const x3::rule<keyword_scenario_class, KeywordScenario> keyword_scenario = "a scene";
+const x3::rule<scenario_kw_class, ast::Scenario> scenario_kw = "a scene";
+const x3::rule<scene_file_class, ast::Scenario> scene_file = "a scene";
+const x3::rule<given_class, ast::MotionEntry> given = "a motion like 'pallet (0 0) (+)'";
+const x3::rule<query_class, ast::QueryFact> query = "a fact";
+
+
+// Rules with semantic actions get their attribute as `unused` in on_success, so each is an
+// un-annotated inner rule wrapped by the annotated rule of the same name.
+const x3::rule<struct name_inner_class, ast::Name> name_inner = "name";
+const x3::rule<struct sign_inner_class, ast::SignToken> sign_inner = "sign";
+const x3::rule<struct direction_inner_class, ast::Direction> direction_inner = "direction";
+const x3::rule<struct dimensions_inner_class, ast::Dimensions> dimensions_inner = "dimensions";
+const x3::rule<struct situation_sx_inner_class, ast::Situation> situation_sx_inner = "situation sx";
+const x3::rule<struct situation_kw_inner_class, ast::Situation> situation_kw_inner = "situation kw";
+const x3::rule<struct individuals_sx_inner_class, ast::Individuals> individuals_sx_inner = "individuals sx";
+const x3::rule<struct individuals_kw_inner_class, ast::Individuals> individuals_kw_inner = "individuals kw";
+const x3::rule<struct descriptions_sx_inner_class, ast::Descriptions> descriptions_sx_inner = "descriptions sx";
+const x3::rule<struct descriptions_kw_inner_class, ast::Descriptions> descriptions_kw_inner = "descriptions kw";
+const x3::rule<struct surfaces_sx_inner_class, ast::Surfaces> surfaces_sx_inner = "surfaces sx";
+const x3::rule<struct surfaces_kw_inner_class, ast::Surfaces> surfaces_kw_inner = "surfaces kw";
+const x3::rule<struct trans_sx_inner_class, ast::TransConstraints> trans_sx_inner = "trans sx";
+const x3::rule<struct trans_kw_inner_class, ast::TransConstraints> trans_kw_inner = "trans kw";
+const x3::rule<struct rot_sx_inner_class, ast::RotConstraints> rot_sx_inner = "rot sx";
+const x3::rule<struct rot_kw_inner_class, ast::RotConstraints> rot_kw_inner = "rot kw";
+const x3::rule<struct forces_sx_inner_class, ast::Forces> forces_sx_inner = "forces sx";
+const x3::rule<struct forces_kw_inner_class, ast::Forces> forces_kw_inner = "forces kw";
+
+// Unnamed-attribute rules that exist only to give expectation failures readable names.
+const x3::rule<struct name_list_class, std::vector<ast::Name>> name_list = "names separated by ','";
+const x3::rule<struct defscenario_kw_class> defscenario_kw = "'Defscenario'";
+const x3::rule<struct sx_end_class> sx_section_end =
+    "a section keyword (Individuals, Descriptions, Surfaces, Translational-Constraints, "
+    "Rotational-Constraints, Forces) or ')'";
+const x3::rule<struct kw_end_class> kw_section_end =
+    "a section keyword (Individuals, Descriptions, Surfaces, Translational-Constraints, "
+    "Rotational-Constraints, Forces, Situation) followed by ':'";
+const x3::rule<struct eoi_class> end_of_input = "end of input";
+const x3::rule<struct colon_class> colon = "':'";
+
+// A name starts with a letter; a word followed by ':' is a section keyword, never a name.
+const auto name_def = name_inner;
+const auto name_inner_def = (x3::raw[x3::lexeme[x3::alpha >> *name_char]] >> !x3::lit(':'))[store_text(&ast::Name::text)];
+// Any token up to a blank, parenthesis, comma, colon or comment: the checker judges it, so that
+// `--` or `++` get a helpful message instead of a bare syntax error.
+const auto sign_def = sign_inner;
+const auto sign_inner_def = x3::raw[x3::lexeme[+(x3::char_ - x3::space - x3::char_("(),:;"))]][store_text(&ast::SignToken::text)];
+const auto direction_def = direction_inner;
+const auto direction_inner_def = (x3::lit('(') >> *sign > ')')[store(&ast::Direction::parts)];
+const auto dimensions_def = dimensions_inner;
+const auto dimensions_inner_def = x3::raw[x3::lexeme[+x3::digit >> !name_char]][store_text(&ast::Dimensions::text)];
+
+const auto description_sx_def = x3::lit('(') >> name > name > ')';
+const auto description_kw_def = name >> '(' > name > ')';
+const auto surface_entry_def = x3::lit('(') >> name > direction > direction > ')';
+const auto object_surfaces_sx_def = x3::lit('(') >> name > *surface_entry > ')';
+const auto object_surfaces_kw_def = name > (surface_entry % ',');
+const auto constraint_sx_def = x3::lit('(') >> name > *direction > ')';
+const auto constraint_kw_def = name > +direction;
+const auto force_body_def = name > direction > direction > -name;
+const auto force_entry_sx_def = x3::lit('(') >> force_body > ')';
+
+const auto contact_sx_def = kw("contact") > name > name;
+const auto force_sx_def = kw("force") > force_body;
+const auto motion_sx_def = kw("motion") > name > direction > direction;
+const auto descriptor_body_sx_def = contact_sx | force_sx | motion_sx;
+const auto descriptor_sx_def = x3::lit('(') >> descriptor_body_sx > ')';
+const auto situation_sx_def = situation_sx_inner;
+const auto situation_sx_inner_def = (x3::lit('(') >> *descriptor_sx > ')')[store(&ast::Situation::descriptors)];
+const auto contact_kw_def = kw("contact") > '(' > name > name > ')';
+const auto force_kw_def = kw("force") > '(' > force_body > ')';
+const auto motion_kw_def = kw("motion") > '(' > name > direction > direction > ')';
+const auto descriptor_kw_def = contact_kw | force_kw | motion_kw;
+const auto situation_kw_def = situation_kw_inner;
+const auto situation_kw_inner_def =
+    (kw("situation") > colon > -(descriptor_kw % ','))[([](auto& ctx) {
+        auto& items = x3::_attr(ctx);
+        if (items) x3::_val(ctx).descriptors = std::move(*items);
+    })];
+
+const auto individuals_sx_def = individuals_sx_inner;
+const auto individuals_sx_inner_def = (kw("individuals") > '(' > *name > ')')[store(&ast::Individuals::names)];
+const auto individuals_kw_def = individuals_kw_inner;
+const auto individuals_kw_inner_def =
+    (kw("individuals") > colon > name_list)[store(&ast::Individuals::names)];
+const auto name_list_def = (x3::lit('(') > (name % ',') > ')') | (name % ',');
+const auto descriptions_sx_def = descriptions_sx_inner;
+const auto descriptions_sx_inner_def = (kw("descriptions") > '(' > *description_sx > ')')[store(&ast::Descriptions::entries)];
+const auto descriptions_kw_def = descriptions_kw_inner;
+const auto descriptions_kw_inner_def = (kw("descriptions") > colon > (description_kw % ','))[store(&ast::Descriptions::entries)];
+const auto surfaces_sx_def = surfaces_sx_inner;
+const auto surfaces_sx_inner_def = (kw("surfaces") > '(' > *object_surfaces_sx > ')')[store(&ast::Surfaces::entries)];
+const auto surfaces_kw_def = surfaces_kw_inner;
+const auto surfaces_kw_inner_def = (kw("surfaces") > colon > (object_surfaces_kw % -x3::lit(',')))[store(&ast::Surfaces::entries)];
+const auto trans_sx_def = trans_sx_inner;
+const auto trans_sx_inner_def = (kw("translational-constraints") > '(' > *constraint_sx > ')')[store(&ast::TransConstraints::entries)];
+const auto trans_kw_def = trans_kw_inner;
+const auto trans_kw_inner_def = (kw("translational-constraints") > colon > (constraint_kw % ','))[store(&ast::TransConstraints::entries)];
+const auto rot_sx_def = rot_sx_inner;
+const auto rot_sx_inner_def = (kw("rotational-constraints") > '(' > *constraint_sx > ')')[store(&ast::RotConstraints::entries)];
+const auto rot_kw_def = rot_kw_inner;
+const auto rot_kw_inner_def = (kw("rotational-constraints") > colon > (constraint_kw % ','))[store(&ast::RotConstraints::entries)];
+const auto forces_sx_def = forces_sx_inner;
+const auto forces_sx_inner_def = (kw("forces") > '(' > *force_entry_sx > ')')[store(&ast::Forces::entries)];
+const auto forces_kw_def = forces_kw_inner;
+const auto forces_kw_inner_def = (kw("forces") > colon > (force_body % ','))[store(&ast::Forces::entries)];
+
+const auto section_sx_def = individuals_sx | descriptions_sx | surfaces_sx | trans_sx | rot_sx | forces_sx;
+const auto section_kw_def = individuals_kw | descriptions_kw | surfaces_kw | trans_kw | rot_kw | forces_kw | situation_kw;
+
+const auto defscenario_kw_def = kw("defscenario");
+const auto sx_section_end_def = x3::lit(')');
+const auto kw_section_end_def = x3::eoi;
+const auto end_of_input_def = x3::eoi;
+const auto colon_def = x3::lit(':');
+
+const auto defstates_def = x3::lit('(') >> kw("defstates") > *situation_sx > ')';
+const auto scenario_sx_def = x3::lit('(') > defscenario_kw > dimensions > name > *section_sx > sx_section_end >
+                             (defstates | x3::attr(std::vector<ast::Situation>{})) > end_of_input;
+const auto keyword_scenario_def = name > dimensions > *section_kw > kw_section_end;
+const auto scenario_kw_def = keyword_scenario[([](auto& ctx) {
+    KeywordScenario& k = x3::_attr(ctx);
+    ast::Scenario& s = x3::_val(ctx);
+    s.name = std::move(k.name);
+    s.dimensions = std::move(k.dimensions);
+    s.sections = std::move(k.sections);
+})];
+const auto scene_file_def = (&x3::lit('(') >> scenario_sx) | scenario_kw;
+
+const auto given_def = name > direction > direction > end_of_input;
+// The parentheses around the arguments are optional; balance is checked before parsing.
+const auto query_def = name > -x3::lit('(') > name > -name > -direction > -x3::lit(')') > end_of_input;
+
+BOOST_SPIRIT_DEFINE(name_inner, sign_inner, direction_inner, dimensions_inner, situation_sx_inner, situation_kw_inner, individuals_sx_inner, individuals_kw_inner, descriptions_sx_inner, descriptions_kw_inner, surfaces_sx_inner, surfaces_kw_inner, trans_sx_inner, trans_kw_inner, rot_sx_inner, rot_kw_inner, forces_sx_inner, forces_kw_inner)
+BOOST_SPIRIT_DEFINE(name, sign, direction, dimensions, description_sx, description_kw, surface_entry,
+                    object_surfaces_sx, object_surfaces_kw, constraint_sx, constraint_kw, force_body,
+                    force_entry_sx, contact_sx, force_sx, motion_sx, contact_kw, force_kw, motion_kw,
+                    descriptor_sx, descriptor_body_sx, descriptor_kw, situation_sx, situation_kw)
+BOOST_SPIRIT_DEFINE(individuals_sx, individuals_kw, descriptions_sx, descriptions_kw, surfaces_sx, surfaces_kw,
+                    trans_sx, trans_kw, rot_sx, rot_kw, forces_sx, forces_kw, section_sx, section_kw,
+                    name_list, defscenario_kw, sx_section_end, kw_section_end, end_of_input, colon, defstates,
+                    scenario_sx, keyword_scenario, scenario_kw, scene_file, given, query)
+
+}  // namespace qm::alex::parser
