@@ -54,7 +54,8 @@ void add_adjacency(const PairOracle& oracle, const CSpaceRequest& r, const std::
     auto in_domain = [&](const Eigen::Vector2d& q) {
         for (int k = 0; k < 2; ++k) {
             const auto& a = r.axes[static_cast<std::size_t>(k)];
-            if (!a.periodic && (q[k] < a.lo || q[k] > a.hi)) return false;
+            const double slack = 1e-9 * a.span();  // points on a translation limit are inside
+            if (!a.periodic && (q[k] < a.lo - slack || q[k] > a.hi + slack)) return false;
         }
         return true;
     };

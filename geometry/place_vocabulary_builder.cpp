@@ -6,8 +6,10 @@
 #include "geometry/detail/place_parts.hpp"
 #include "qm/assert.hpp"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace qm::geometry {
 namespace {
@@ -39,7 +41,8 @@ struct Builder {
     [[nodiscard]] bool in_domain(const Eigen::Vector2d& q) const {
         for (int k = 0; k < 2; ++k) {
             const auto& a = r.axes[static_cast<std::size_t>(k)];
-            if (!a.periodic && (q[k] < a.lo || q[k] > a.hi)) return false;
+            const double slack = 1e-9 * a.span();  // points on a translation limit are inside
+            if (!a.periodic && (q[k] < a.lo - slack || q[k] > a.hi + slack)) return false;
         }
         return true;
     }
@@ -74,6 +77,9 @@ struct Builder {
     void make_chains(const std::vector<BoundaryChain>& traced);
     void absorb_short_runs(std::vector<ChainNode>& nodes, bool is_closed);
     void insert_normal_joins(std::size_t c);
+    void collapse_point_runs(std::size_t c);
+    Eigen::Vector2d corner(const ChainNode& a, const ChainNode& b);
+    bool duplicate(const Division& d) const;
     void grow_fsds();
     bool runs_along_boundary(const Division& d, const CSpaceAxis& ax);
     void add_external_divisions();
@@ -119,20 +125,76 @@ void Builder::absorb_short_runs(std::vector<ChainNode>& nodes, bool is_closed) {
     }
 }
 
+// Where a join between boundary points a and b lies: the crossing of their tangent lines when
+// the normals differ enough to make it well conditioned and it lies near them (a corner), moved
+// onto the boundary along the mean normal.
+Eigen::Vector2d Builder::corner(const ChainNode& a, const ChainNode& b) {
+    const Eigen::Vector2d pb = a.q + difference(r, a.q, b.q);
+    const Eigen::Vector2d mid = 0.5 * (a.q + pb);
+    Eigen::Vector2d guess = mid;
+    const double det = a.normal.x() * b.normal.y() - a.normal.y() * b.normal.x();
+    if (std::abs(det) > 0.2) {
+        Eigen::Matrix2d m;
+        m << a.normal.x(), a.normal.y(), b.normal.x(), b.normal.y();
+        const Eigen::Vector2d x = m.inverse() * Eigen::Vector2d(a.normal.dot(a.q), b.normal.dot(pb));
+        if ((x - mid).cwiseQuotient(cell()).norm() < 1.5) guess = x;
+    }
+    return project(guess, a.normal + b.normal);
+}
+
+// A run of a normal with a zero component (e.g. (0 +)) shorter than half a grid cell, between
+// two other normals, is where a curved CSEG's normal passes an axis: a point, not a segment.
+// It becomes one join at the run's middle point (a straight join, Defs 29-30).
+void Builder::collapse_point_runs(std::size_t c) {
+    auto& nodes = chains[c];
+    const std::size_t n = nodes.size();
+    if (n < 3) return;
+    const Eigen::Vector2d scale = cell().cwiseInverse();
+    for (std::size_t start = 0; start < n;) {
+        std::size_t end = start;
+        while (end + 1 < n && nodes[end + 1].qual == nodes[start].qual) ++end;
+        const std::size_t next = start;
+        start = end + 1;
+        const auto q = nodes[next].qual;
+        if (q.s[0] != 0 && q.s[1] != 0) continue;
+        if ((next == 0 || end + 1 == n) && !closed[c]) continue;
+        if (next == 0 && end + 1 == n) continue;
+        const auto& before = nodes[(next + n - 1) % n];
+        const auto& after = nodes[(end + 1) % n];
+        if (before.qual == q || after.qual == q || before.join || after.join) continue;
+        double len = 0;
+        for (std::size_t k = next; k < end; ++k) len += difference(r, nodes[k].q, nodes[k + 1].q).cwiseProduct(scale).norm();
+        if (len >= 0.5) continue;
+        auto& m = nodes[(next + end) / 2];
+        const PlaceId j = add_join(JoinKind::normal_change, m.q, {before.qual, after.qual});
+        v.places[j.value].concave = difference(r, m.q, after.q).dot(before.normal) > 0;
+        for (std::size_t k = next; k <= end; ++k) nodes[k].point = -1;
+        m.join = j;
+        for (std::size_t k = next; k <= end; ++k)
+            if (k != (next + end) / 2) nodes[k].qual = k < (next + end) / 2 ? before.qual : after.qual;
+    }
+    // Drop the collapsed run's other points (no boundary point, no join).
+    std::erase_if(nodes, [](const ChainNode& x) { return x.point < 0 && !x.join; });
+}
+
 // Joins where the qualitative normal changes (8.1.2), placed on the boundary between the two
 // points, with Defs 29-30 deciding concave or convex.
 void Builder::insert_normal_joins(std::size_t c) {
+    collapse_point_runs(c);
     auto& nodes = chains[c];
     std::vector<ChainNode> out;
     const std::size_t n = nodes.size();
     for (std::size_t k = 0; k < n; ++k) {
+        if (nodes[k].join) {  // a run collapsed to a join by collapse_point_runs
+            out.push_back(nodes[k]);
+            continue;
+        }
         out.push_back(nodes[k]);
         if (k + 1 == n && !closed[c]) break;
         const auto& a = nodes[k];
         const auto& b = nodes[(k + 1) % n];
-        if (a.qual == b.qual) continue;
-        const Eigen::Vector2d mid = a.q + 0.5 * difference(r, a.q, b.q);
-        const Eigen::Vector2d q = project(mid, a.normal + b.normal);
+        if (a.qual == b.qual || b.join) continue;
+        const Eigen::Vector2d q = corner(a, b);
         const PlaceId j = add_join(JoinKind::normal_change, q, {a.qual, b.qual});
         // Def 29: concave if the CSEG beyond the join lies in the half plane of this side's normal.
         v.places[j.value].concave = difference(r, q, b.q).dot(a.normal) > 0;
@@ -161,6 +223,20 @@ bool Builder::runs_along_boundary(const Division& d, const CSpaceAxis& ax) {
     return false;
 }
 
+// Two joins at the same height start the same division; keep one.
+bool Builder::duplicate(const Division& d) const {
+    const int other = 1 - d.axis;
+    for (const auto& e : divisions) {
+        if (e.axis != d.axis || std::abs(difference(r, e.start, d.start)[other]) > 8 * r.boundary_tolerance) continue;
+        const auto& ax = r.axes[static_cast<std::size_t>(d.axis)];
+        double t = e.dir * (d.start[d.axis] - e.start[e.axis]);
+        if (ax.periodic) t = std::fmod(std::fmod(t, ax.span()) + ax.span(), ax.span());
+        if (t >= -8 * r.boundary_tolerance && t <= e.length + 8 * r.boundary_tolerance && e.dir == d.dir) return true;
+        if (e.length >= ax.span() && ax.periodic) return true;  // a loop covers the whole line
+    }
+    return false;
+}
+
 // Def 31: from each significant point follow each axis until the next contact.
 void Builder::grow_fsds() {
     const std::size_t joins = v.places.size();
@@ -172,9 +248,9 @@ void Builder::grow_fsds() {
             for (int dir : {1, -1}) {
                 const auto& ax = r.axes[static_cast<std::size_t>(axis)];
                 Division d{PlaceKind::fsd, axis, dir, origin, 0.0, {}, {{0.0, PlaceId{static_cast<std::uint32_t>(jp)}}}};
-                const double first = std::max(8 * r.boundary_tolerance, 1e-4 * ax.step());
+                const double first = std::max(8 * r.boundary_tolerance, 0.05 * ax.step());
                 if (!in_domain(d.at(first)) || blocked(d.at(first))) continue;
-                if (runs_along_boundary(d, ax)) continue;
+                if (runs_along_boundary(d, ax) || duplicate(d)) continue;
                 double t = first;
                 bool ended = false;
                 while (!ended) {
