@@ -48,7 +48,7 @@ bool run(const Rule& rule, const std::string& what, const SourceText& src, Posit
          Attr& out) {
     const std::string& t = src.text();
     if (parser::skip_blanks(t, 0) == t.size()) {
-        diags.error(src.locate(t.size()), "empty input: expected " + what, src.line_at(t.size()));
+        diags.error(src.locate(0), "empty input: expected " + what);
         return false;
     }
     if (!balanced(src, diags)) return false;

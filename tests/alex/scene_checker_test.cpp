@@ -1,0 +1,88 @@
+// tests/alex/scene_checker_test.cpp: alex/scene_checker.hpp - golden error cases. Each
+// tests/alex/errors/<case>.def is read (parser + checker) and the printed diagnostics must equal
+// <case>.err exactly (STYLE.md section 7). Set QM_UPDATE_GOLDEN=1 to write missing .err files
+// (then review them by hand before committing).
+#include "alex/scene_checker.hpp"
+#include "alex/scene_parser.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using namespace qm::alex;
+
+namespace {
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+std::string diagnostics_for(const fs::path& def) {
+    qm::Diagnostics diags;
+    auto s = read_scene(def.filename().string(), slurp(def), diags);
+    CHECK_FALSE(s.has_value());
+    CHECK(diags.has_errors());
+    std::ostringstream os;
+    diags.print(os);
+    return os.str();
+}
+}  // namespace
+
+TEST_CASE("alex/scene_checker: golden error cases") {
+    const fs::path dir = fs::path(QM_SOURCE_DIR) / "tests/alex/errors";
+    std::vector<fs::path> cases;
+    for (const auto& e : fs::directory_iterator(dir))
+        if (e.path().extension() == ".def") cases.push_back(e.path());
+    std::sort(cases.begin(), cases.end());
+    CHECK(cases.size() >= 20);
+    for (const auto& def : cases) {
+        INFO(def.filename().string());
+        const std::string got = diagnostics_for(def);
+        fs::path err = def;
+        err.replace_extension(".err");
+        if (!fs::exists(err) && std::getenv("QM_UPDATE_GOLDEN")) std::ofstream(err, std::ios::binary) << got;
+        REQUIRE(fs::exists(err));
+        CHECK(got == slurp(err));
+    }
+}
+
+TEST_CASE("alex/scene_checker: several errors in one run, in source order") {
+    qm::Diagnostics diags;
+    auto s = read_scene("m.def",
+                        "(Defscenario 2 s Individuals (a a)\n"
+                        " Surfaces ((a (p (0 +) (0 -))) (z (q (0 -) (0 +))))\n"
+                        " Forces ((y (0 -) (0 0))))\n"
+                        "(Defstates ((Contact p r) (Motion x (0 0) (0))))",
+                        diags);
+    CHECK_FALSE(s.has_value());
+    const auto items = diags.sorted();
+    REQUIRE(items.size() == 5);
+    CHECK(items[0].message == "duplicate object 'a'");
+    CHECK(items[1].message == "object 'z' in Surfaces is not declared in Individuals");
+    CHECK(items[2].message == "object 'y' in a force is not declared in Individuals");
+    CHECK(items[3].message == "unknown surface 'r'");
+    CHECK(items[4].message == "object 'x' in a motion is not declared in Individuals");
+    CHECK(items[4].where.line == 4);
+    for (const auto& d : items) CHECK(!d.source_line.empty());
+}
+
+TEST_CASE("alex/scene_checker: a clean AST checks without diagnostics; locations come from the PositionTable") {
+    const SourceText src("ok.def", "(Defscenario 2 s Individuals (a b)\n Surfaces ((a (p (0 +) (0 -))) (b (q (0 -) (0 +)))))"
+                                   "\n(Defstates ((Contact p q)))");
+    qm::Diagnostics diags;
+    auto parsed = parse_scene_ast(src, diags);
+    REQUIRE(parsed.has_value());
+    auto scene = check_scene(parsed->scenario, parsed->positions, src, diags);
+    REQUIRE(scene.has_value());
+    CHECK(diags.size() == 0);
+    CHECK(scene->surfaces[SurfaceId{1}].where.line == 2);
+    CHECK(scene->surfaces[SurfaceId{1}].where.column == 36);
+    CHECK(scene->situations[0].contacts[0].where.line == 3);
+    CHECK(scene->objects[ObjectId{1}].where.column == 33);
+}

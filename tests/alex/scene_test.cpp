@@ -1,0 +1,67 @@
+// tests/alex/scene_test.cpp: alex/scene.hpp - pattern matching, lookups, ownership, equality.
+#include "alex/scene.hpp"
+
+#include <doctest/doctest.h>
+
+using namespace qm::alex;
+
+namespace {
+const Sign signs[] = {Sign::minus, Sign::zero, Sign::plus};
+}
+
+TEST_CASE("alex/scene: a pattern's variables match any sign, its signs only themselves") {
+    // Brute force over all 2-D directions against all patterns of fixed signs and variables.
+    for (int mask = 0; mask < 4; ++mask)
+        for (Sign px : signs)
+            for (Sign py : signs) {
+                DirectionPattern p{{(mask & 1) ? std::nullopt : std::optional(px), "x"},
+                                   {(mask & 2) ? std::nullopt : std::optional(py), "y"}};
+                for (Sign x : signs)
+                    for (Sign y : signs) {
+                        const bool expect = ((mask & 1) || x == px) && ((mask & 2) || y == py);
+                        CHECK(matches(p, {x, y}) == expect);
+                    }
+            }
+    // (rack (?x +)): every translation with positive y (spec README).
+    DirectionPattern rack{{std::nullopt, "x"}, {Sign::plus, ""}};
+    CHECK(matches(rack, {Sign::minus, Sign::plus}));
+    CHECK_FALSE(matches(rack, {Sign::plus, Sign::zero}));
+}
+
+TEST_CASE("alex/scene: lookups and ownership") {
+    Scene s;
+    const ObjectId a = s.objects.push_back({"a", "rigid-ob", {}, {}, {}, {}});
+    const ObjectId b = s.objects.push_back({"b", "rigid-ob", {}, {}, {}, {}});
+    const SurfaceId p = s.surfaces.push_back({"p", a, {Sign::zero, Sign::plus}, {Sign::zero, Sign::minus}, {}});
+    const SurfaceId q = s.surfaces.push_back({"q", b, {Sign::zero, Sign::minus}, {Sign::zero, Sign::plus}, {}});
+    s.objects[a].surfaces.push_back(p);
+    s.objects[b].surfaces.push_back(q);
+    CHECK(s.find_object("b") == b);
+    CHECK_FALSE(s.find_object("c").has_value());
+    CHECK(s.find_surface("q") == q);
+    CHECK(s.owner(p) == a);
+    CHECK(s.owner(q) == b);
+    CHECK_THROWS_AS(static_cast<void>(s.owner(SurfaceId{7})), qm::InternalError);  // Pre: a surface of this scene
+    CHECK(s.rotation_arity() == 1);
+    s.dimensions = 3;
+    CHECK(s.rotation_arity() == 3);
+    CHECK(s.translation_arity() == 3);
+}
+
+TEST_CASE("alex/scene: equality compares content, never source locations") {
+    Scene x;
+    x.name = "s";
+    x.objects.push_back({"a", "rigid-ob", {}, {}, {}, {"f.def", 3, 4}});
+    Scene y = x;
+    y.objects[ObjectId{0}].where = {"g.def", 9, 9};
+    y.where = {"g.def", 1, 1};
+    CHECK(x == y);
+    y.objects[ObjectId{0}].trans_constraints.push_back({{std::nullopt, "x"}, {std::nullopt, "y"}});
+    CHECK_FALSE(x == y);
+    Scene z = x;
+    z.situations.push_back({});
+    CHECK_FALSE(x == z);
+    CHECK(sign_char(Sign::minus) == '-');
+    CHECK(sign_char(Sign::zero) == '0');
+    CHECK(sign_char(Sign::plus) == '+');
+}
