@@ -503,12 +503,23 @@ PlaceResult build_place_vocabulary(const PairOracle& oracle, const PlaceRequest&
     std::vector<int> size(static_cast<std::size_t>(n_faces), 0);
     std::vector<Eigen::Vector2d> sample(static_cast<std::size_t>(n_faces));
     const auto& r = request.cspace;
-    for (int j = 0; j < r.axes[1].samples; ++j)
-        for (int i = 0; i < r.axes[0].samples; ++i) {
-            const int f = faces.face_of_sample(i, j);
-            if (f < 0) continue;
-            if (size[static_cast<std::size_t>(f)]++ == 0) sample[static_cast<std::size_t>(f)] = {r.axes[0].sample(i), r.axes[1].sample(j)};
-        }
+    // A face's representative sample: the one nearest the mean of its samples (for labels).
+    std::vector<Eigen::Vector2d> sum(static_cast<std::size_t>(n_faces), Eigen::Vector2d::Zero());
+    for (int pass = 0; pass < 2; ++pass)
+        for (int j = 0; j < r.axes[1].samples; ++j)
+            for (int i = 0; i < r.axes[0].samples; ++i) {
+                const int f = faces.face_of_sample(i, j);
+                if (f < 0) continue;
+                const auto fi = static_cast<std::size_t>(f);
+                const Eigen::Vector2d x(r.axes[0].sample(i), r.axes[1].sample(j));
+                if (pass == 0) {
+                    ++size[fi];
+                    sum[fi] += x;
+                    sample[fi] = x;
+                } else if ((x - sum[fi] / size[fi]).norm() < (sample[fi] - sum[fi] / size[fi]).norm()) {
+                    sample[fi] = x;
+                }
+            }
     for (int f = 0; f < n_faces; ++f) {
         Place p;
         p.kind = PlaceKind::face;

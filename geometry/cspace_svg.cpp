@@ -1,0 +1,84 @@
+// geometry/cspace_svg.cpp
+#include "geometry/cspace_svg.hpp"
+
+#include "qm/assert.hpp"
+
+#include <cmath>
+
+namespace qm::geometry {
+
+void write_cspace_svg(std::ostream& os, const CSpaceResult& space, const PlaceVocabulary& v, const SvgOptions& o) {
+    QM_REQUIRE(space.status == CSpaceStatus::ok, "write_cspace_svg needs a classified space");
+    const auto& r = space.request;
+    const double margin = 40;
+    const double w = o.width - 2 * margin, h = o.height - 2 * margin;
+    auto X = [&](double q0) { return margin + w * (q0 - r.axes[0].lo) / r.axes[0].span(); };
+    auto Y = [&](double q1) { return o.height - margin - h * (q1 - r.axes[1].lo) / r.axes[1].span(); };
+    const auto precision = os.precision(6);
+    os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << o.width << "\" height=\"" << o.height << "\">\n"
+       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+    if (!o.title.empty()) os << "<text x=\"" << margin << "\" y=\"20\" font-size=\"14\">" << o.title << "</text>\n";
+    // Blocked space: one shaded cell per blocked sample, centred on it.
+    const double cw = w * r.axes[0].step() / r.axes[0].span(), ch = h * r.axes[1].step() / r.axes[1].span();
+    os << "<g fill=\"#bbbbbb\" stroke=\"none\">\n";
+    for (int j = 0; j < r.axes[1].samples; ++j)
+        for (int i = 0; i < r.axes[0].samples; ++i)
+            if (space.is_blocked(i, j))
+                os << "<rect x=\"" << X(r.axes[0].sample(i)) - cw / 2 << "\" y=\"" << Y(r.axes[1].sample(j)) - ch / 2 << "\" width=\""
+                   << cw << "\" height=\"" << ch << "\"/>\n";
+    os << "</g>\n<rect x=\"" << margin << "\" y=\"" << margin << "\" width=\"" << w << "\" height=\"" << h
+       << "\" fill=\"none\" stroke=\"black\"/>\n";
+    // Polylines, broken where they wrap around a periodic axis.
+    auto polyline = [&](const std::vector<Eigen::Vector2d>& pts, const char* style) {
+        std::vector<Eigen::Vector2d> run;
+        auto flush = [&] {
+            if (run.size() >= 2) {
+                os << "<polyline fill=\"none\" " << style << " points=\"";
+                for (const auto& p : run) os << X(p.x()) << ',' << Y(p.y()) << ' ';
+                os << "\"/>\n";
+            }
+            run.clear();
+        };
+        for (std::size_t k = 0; k < pts.size(); ++k) {
+            if (!run.empty()) {
+                const Eigen::Vector2d d = pts[k] - run.back();
+                if (std::abs(d.x()) > 0.5 * r.axes[0].span() || std::abs(d.y()) > 0.5 * r.axes[1].span()) flush();
+            }
+            run.push_back(pts[k]);
+        }
+        flush();
+    };
+    for (const Place& p : v.places) {
+        if (p.kind == PlaceKind::cseg) polyline(p.points, "stroke=\"black\" stroke-width=\"2\"");
+        if (p.kind == PlaceKind::fsd) {
+            auto pts = p.points;
+            // A division is a straight segment; unwrap its end so it is drawn the short way round.
+            if (pts.size() == 2) {
+                pts[1] = pts[0] + difference(r, pts[0], pts[1]);
+                if (difference(r, pts[0], pts[1]).norm() == 0) pts[1][p.axis] += r.axes[static_cast<std::size_t>(p.axis)].span();
+            }
+            polyline(pts, "stroke=\"#3050c0\" stroke-dasharray=\"5,3\"");
+        }
+        if (p.kind == PlaceKind::external_division) polyline(p.points, "stroke=\"#c03030\" stroke-dasharray=\"2,2\"");
+        if (p.kind == PlaceKind::join)
+            os << "<circle cx=\"" << X(p.points.front().x()) << "\" cy=\"" << Y(p.points.front().y())
+               << "\" r=\"3\" fill=\"white\" stroke=\"black\"/>\n";
+    }
+    if (o.numbers) {
+        os << "<g font-size=\"9\" font-family=\"sans-serif\">\n";
+        for (const Place& p : v.places) {
+            Eigen::Vector2d at = p.points.empty() ? Eigen::Vector2d::Zero() : p.points[p.points.size() / 2];
+            if ((p.kind == PlaceKind::fsd || p.kind == PlaceKind::external_division) && p.points.size() == 2)
+                at = wrap(r, p.points[0] + 0.5 * difference(r, p.points[0], p.points[1]));
+            const char* colour = p.kind == PlaceKind::face ? "#006000" : p.kind == PlaceKind::join ? "#800000" : "black";
+            os << "<text x=\"" << X(at.x()) + 3 << "\" y=\"" << Y(at.y()) - 3 << "\" fill=\"" << colour << "\">" << p.id.value
+               << "</text>\n";
+        }
+        os << "</g>\n";
+    }
+    os << "<text x=\"" << o.width / 2 << "\" y=\"" << o.height - 10 << "\" font-size=\"11\">q0</text>\n"
+       << "<text x=\"8\" y=\"" << o.height / 2 << "\" font-size=\"11\">q1</text>\n</svg>\n";
+    os.precision(precision);
+}
+
+}  // namespace qm::geometry
