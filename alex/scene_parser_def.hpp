@@ -114,6 +114,8 @@ inline const auto skipper = x3::space | x3::lexeme[';' >> *(x3::char_ - x3::eol)
 // A case-insensitive keyword, not followed by a name character. Pre: s is lower case.
 inline auto kw(const char* s) { return x3::lexeme[x3::no_case[x3::lit(s)] >> !name_char]; }
 
+// Note: `a >> b > c` is written `(a >> b) > c` (the C++ precedence) so that clang does not warn.
+
 // Semantic action storing the matched text (x3::raw) into a member of the rule's attribute.
 template <class Node>
 inline auto store_text(std::string Node::*member) {
@@ -268,27 +270,29 @@ const auto name_inner_def = (x3::raw[x3::lexeme[x3::alpha >> *name_char]] >> !x3
 const auto sign_def = sign_inner;
 const auto sign_inner_def = x3::raw[x3::lexeme[+(x3::char_ - x3::space - x3::char_("(),:;"))]][store_text(&ast::SignToken::text)];
 const auto direction_def = direction_inner;
-const auto direction_inner_def = (x3::lit('(') >> *sign > ')')[store(&ast::Direction::parts)];
+const auto direction_inner_def = ((x3::lit('(') >> *sign) > ')')[store(&ast::Direction::parts)];
 const auto dimensions_def = dimensions_inner;
 const auto dimensions_inner_def = x3::raw[x3::lexeme[+x3::digit >> !name_char]][store_text(&ast::Dimensions::text)];
 
-const auto description_sx_def = x3::lit('(') >> name > name > ')';
-const auto description_kw_def = name >> '(' > name > ')';
-const auto surface_entry_def = x3::lit('(') >> name > direction > direction > ')';
-const auto object_surfaces_sx_def = x3::lit('(') >> name > *surface_entry > ')';
-const auto object_surfaces_kw_def = name > (surface_entry % ',');
-const auto constraint_sx_def = x3::lit('(') >> name > *direction > ')';
+const auto description_sx_def = (x3::lit('(') >> name) > name > ')';
+const auto description_kw_def = (name >> '(') > name > ')';
+const auto surface_entry_def = (x3::lit('(') >> name) > direction > direction > ')';
+const auto object_surfaces_sx_def = (x3::lit('(') >> name) > *surface_entry > ')';
+// A group starts with an object name; the situation words are not taken as one, so that the
+// figures' `CONTACT (a b)` is reported as a misplaced keyword rather than a surface group.
+const auto object_surfaces_kw_def = (!(kw("contact") | kw("force") | kw("motion")) >> name) > (surface_entry % ',');
+const auto constraint_sx_def = (x3::lit('(') >> name) > *direction > ')';
 const auto constraint_kw_def = name > +direction;
 const auto force_body_def = name > direction > direction > -name;
-const auto force_entry_sx_def = x3::lit('(') >> force_body > ')';
+const auto force_entry_sx_def = (x3::lit('(') >> force_body) > ')';
 
 const auto contact_sx_def = kw("contact") > name > name;
 const auto force_sx_def = kw("force") > force_body;
 const auto motion_sx_def = kw("motion") > name > direction > direction;
 const auto descriptor_body_sx_def = contact_sx | force_sx | motion_sx;
-const auto descriptor_sx_def = x3::lit('(') >> descriptor_body_sx > ')';
+const auto descriptor_sx_def = x3::lit('(') > descriptor_body_sx > ')';
 const auto situation_sx_def = situation_sx_inner;
-const auto situation_sx_inner_def = (x3::lit('(') >> *descriptor_sx > ')')[store(&ast::Situation::descriptors)];
+const auto situation_sx_inner_def = ((x3::lit('(') >> *descriptor_sx) > ')')[store(&ast::Situation::descriptors)];
 const auto contact_kw_def = kw("contact") > '(' > name > name > ')';
 const auto force_kw_def = kw("force") > '(' > force_body > ')';
 const auto motion_kw_def = kw("motion") > '(' > name > direction > direction > ')';
@@ -336,7 +340,7 @@ const auto kw_section_end_def = x3::eoi;
 const auto end_of_input_def = x3::eoi;
 const auto colon_def = x3::lit(':');
 
-const auto defstates_def = x3::lit('(') >> kw("defstates") > *situation_sx > ')';
+const auto defstates_def = (x3::lit('(') >> kw("defstates")) > *situation_sx > ')';
 const auto scenario_sx_def = x3::lit('(') > defscenario_kw > dimensions > name > *section_sx > sx_section_end >
                              (defstates | x3::attr(std::vector<ast::Situation>{})) > end_of_input;
 const auto keyword_scenario_def = name > dimensions > *section_kw > kw_section_end;

@@ -5,6 +5,14 @@
 #include "alex/scene_parser.hpp"
 #include "alex/scene_printer.hpp"
 
+// The fuzz build instruments only this target, not the qm_alex library it links, so libFuzzer
+// would be blind to the parser's branches. Compiling the reader's sources into this TU
+// instruments them; the linker then takes no object from libqm_alex.a for these symbols.
+#include "alex/scene.cpp"
+#include "alex/scene_checker.cpp"
+#include "alex/scene_parser.cpp"
+#include "alex/scene_printer.cpp"
+
 #include <cstdint>
 #include <cstdlib>
 #include <string>
