@@ -27,7 +27,9 @@ void write_cspace_svg(std::ostream& os, const CSpaceResult& space, const PlaceVo
                 os << "<rect x=\"" << X(r.axes[0].sample(i)) - cw / 2 << "\" y=\"" << Y(r.axes[1].sample(j)) - ch / 2 << "\" width=\""
                    << cw << "\" height=\"" << ch << "\"/>\n";
     os << "</g>\n<rect x=\"" << margin << "\" y=\"" << margin << "\" width=\"" << w << "\" height=\"" << h
-       << "\" fill=\"none\" stroke=\"black\"/>\n";
+       << "\" fill=\"none\" stroke=\"black\"/>\n"
+       << "<clipPath id=\"frame\"><rect x=\"" << margin << "\" y=\"" << margin << "\" width=\"" << w << "\" height=\"" << h
+       << "\"/></clipPath>\n<g clip-path=\"url(#frame)\">\n";
     // Polylines, broken where they wrap around a periodic axis.
     auto polyline = [&](const std::vector<Eigen::Vector2d>& pts, const char* style) {
         std::vector<Eigen::Vector2d> run;
@@ -64,6 +66,7 @@ void write_cspace_svg(std::ostream& os, const CSpaceResult& space, const PlaceVo
             os << "<circle cx=\"" << X(p.points.front().x()) << "\" cy=\"" << Y(p.points.front().y())
                << "\" r=\"3\" fill=\"white\" stroke=\"black\"/>\n";
     }
+    os << "</g>\n";
     if (o.numbers) {
         os << "<g font-size=\"9\" font-family=\"sans-serif\">\n";
         for (const Place& p : v.places) {

@@ -134,12 +134,18 @@ double PolygonPairOracle::distance(const Eigen::Vector2d& q) const {
 Eigen::Vector2d PolygonPairOracle::free_normal(const Eigen::Vector2d& q) const {
     // The distance is 0 inside blocked space, so a one-sided difference on the side that grows is
     // used per axis: d(q + h) - d(q - h) keeps the right sign even when one side overlaps.
-    constexpr double h = 1e-6;
+    // When q lies a little inside blocked space (within the boundary tolerance) both probes may
+    // overlap; the step then grows until one side is free, so the sign never falls back to 0.
     Eigen::Vector2d g;
     for (int k = 0; k < 2; ++k) {
-        Eigen::Vector2d e = Eigen::Vector2d::Zero();
-        e[k] = h;
-        g[k] = (distance(q + e) - distance(q - e)) / (2 * h);
+        g[k] = 0;
+        for (double h = 1e-6; h < 1e-2; h *= 4) {
+            Eigen::Vector2d e = Eigen::Vector2d::Zero();
+            e[k] = h;
+            const double plus = distance(q + e), minus = distance(q - e);
+            g[k] = (plus - minus) / (2 * h);
+            if (plus > 0 || minus > 0) break;
+        }
     }
     return g;
 }

@@ -28,7 +28,7 @@ TEST_CASE("geometry/cspace_svg: blocked samples, joins and place numbers are dra
     const std::string svg = ss.str();
     std::size_t blocked = 0;
     for (auto b : res.space.blocked) blocked += b;
-    CHECK(occurrences(svg, "<rect x=") == blocked + 1);  // + the frame
+    CHECK(occurrences(svg, "<rect x=") == blocked + 2);  // + the frame and its clip path
     CHECK(occurrences(svg, "<circle") == res.vocabulary.count(PlaceKind::join));
     for (const auto& p : res.vocabulary.places) {
         std::ostringstream label;
