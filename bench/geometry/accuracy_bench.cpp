@@ -51,31 +51,36 @@ void print(const std::vector<Row>& rows) {
                   << " | " << r.joins << " | " << r.faces << " |\n";
 }
 
-// Log-log plot: error against time, one polyline per pair and table.
+// Log-log plot: max error against the tolerance setting (boundary tolerance for the exact
+// oracle, chordal tolerance for the tessellated shapes), one polyline per pair and table; the
+// grey diagonal is error = setting. Times are in the tables.
 void plot(const std::vector<Row>& rows, const std::string& path) {
     std::ofstream os(path);
     const double W = 640, H = 420, m = 60;
-    auto X = [&](double ms) { return m + (W - 2 * m) * (std::log10(ms) + 1) / 5; };         // 0.1 ms .. 10 s
+    auto X = [&](double setting) { return m + (W - 2 * m) * (std::log10(setting) + 13) / 12; };  // 1e-13 .. 1e-1
     auto Y = [&](double e) { return H - m - (H - 2 * m) * (std::log10(std::max(e, 1e-14)) + 14) / 13; };  // 1e-14 .. 1e-1
     os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H << "\">\n"
        << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<rect x=\"" << m << "\" y=\"" << m << "\" width=\"" << W - 2 * m
        << "\" height=\"" << H - 2 * m << "\" fill=\"none\" stroke=\"black\"/>\n";
     for (int e = -14; e <= -1; e += 2)
         os << "<text x=\"5\" y=\"" << Y(std::pow(10, e)) + 4 << "\" font-size=\"10\">1e" << e << "</text>\n";
-    for (int t = -1; t <= 4; ++t)
-        os << "<text x=\"" << X(std::pow(10, t)) - 10 << "\" y=\"" << H - m + 15 << "\" font-size=\"10\">" << std::pow(10, t) << "</text>\n";
-    os << "<text x=\"" << W / 2 - 60 << "\" y=\"" << H - 15 << "\" font-size=\"12\">time per place vocabulary (ms)</text>\n"
-       << "<text x=\"" << m << "\" y=\"30\" font-size=\"12\">max boundary error (normal distance); solid: bisection, dashed: tessellation</text>\n";
+    for (int t = -13; t <= -1; t += 2)
+        os << "<text x=\"" << X(std::pow(10, t)) - 10 << "\" y=\"" << H - m + 15 << "\" font-size=\"10\">1e" << t << "</text>\n";
+    os << "<line x1=\"" << X(1e-13) << "\" y1=\"" << Y(1e-13) << "\" x2=\"" << X(1e-1) << "\" y2=\"" << Y(1e-1)
+       << "\" stroke=\"#aaaaaa\"/>\n";
+    os << "<text x=\"" << W / 2 - 120 << "\" y=\"" << H - 15 << "\" font-size=\"12\">tolerance setting (boundary or chordal)</text>\n"
+       << "<text x=\"" << m << "\" y=\"30\" font-size=\"12\">max boundary error (normal distance); solid: boundary tolerance, dashed: chordal tolerance</text>\n";
     const char* colours[] = {"#c00000", "#0060c0", "#008000", "#a000a0"};
     std::size_t k = 0;
     while (k < rows.size()) {
         std::size_t end = k;
         while (end < rows.size() && rows[end].pair == rows[k].pair && (rows[end].tess > 0) == (rows[k].tess > 0)) ++end;
-        const int c = static_cast<int>(std::hash<std::string>{}(rows[k].pair) % 4);
+        const int c = rows[k].pair == "bar-and-block" ? 0 : rows[k].pair == "disk-cam-and-follower" ? 1 : rows[k].pair == "two-disks" ? 2 : 3;
         os << "<polyline fill=\"none\" stroke=\"" << colours[c] << "\"" << (rows[k].tess > 0 ? " stroke-dasharray=\"5,3\"" : "")
            << " points=\"";
-        for (std::size_t i = k; i < end; ++i) os << X(rows[i].ms) << ',' << Y(rows[i].normal_err) << ' ';
-        os << "\"/>\n<text x=\"" << X(rows[end - 1].ms) + 4 << "\" y=\"" << Y(rows[end - 1].normal_err) << "\" font-size=\"9\" fill=\""
+        auto setting = [&](const Row& r) { return r.tess > 0 ? r.tess : r.tol; };
+        for (std::size_t i = k; i < end; ++i) os << X(setting(rows[i])) << ',' << Y(rows[i].normal_err) << ' ';
+        os << "\"/>\n<text x=\"" << X(setting(rows[end - 1])) + 4 << "\" y=\"" << Y(rows[end - 1].normal_err) + (c - 1.5) * 9 << "\" font-size=\"9\" fill=\""
            << colours[c] << "\">" << rows[k].pair << "</text>\n";
         k = end;
     }
