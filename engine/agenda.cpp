@@ -11,7 +11,7 @@ std::size_t Agenda::KeyHash::operator()(const std::vector<std::uint32_t>& k) con
     return h;
 }
 
-bool Agenda::push(RuleInstance instance) {
+bool Agenda::push(RuleInstance instance, bool urgent) {
     constexpr std::uint32_t unbound = std::numeric_limits<std::uint32_t>::max();
     std::vector<std::uint32_t> key;
     key.reserve(instance.binding.size() + 2);
@@ -19,14 +19,15 @@ bool Agenda::push(RuleInstance instance) {
     key.push_back(instance.context ? *instance.context : unbound);
     for (const auto& v : instance.binding) key.push_back(v ? v->value : unbound);
     if (!seen_.insert(std::move(key)).second) return false;
-    queue_.push_back(std::move(instance));
+    (urgent ? urgent_ : queue_).push_back(std::move(instance));
     return true;
 }
 
 RuleInstance Agenda::pop() {
-    QM_REQUIRE(!queue_.empty(), "pop from an empty agenda");
-    RuleInstance r = std::move(queue_.front());
-    queue_.pop_front();
+    QM_REQUIRE(!empty(), "pop from an empty agenda");
+    auto& from = urgent_.empty() ? queue_ : urgent_;
+    RuleInstance r = std::move(from.front());
+    from.pop_front();
     return r;
 }
 

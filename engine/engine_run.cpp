@@ -1,6 +1,7 @@
 // engine/engine_run.cpp: the strata loop, semi-naive matching and the agenda.
 #include "engine/engine.hpp"
 #include "qm/assert.hpp"
+#include <algorithm>
 
 namespace qm::engine {
 
@@ -32,8 +33,9 @@ void Engine::run_strata(std::optional<std::uint32_t> context, Diagnostics& diagn
             const CompiledRule& rule = program_.rules[r];
             if (rule.stratum != s) continue;
             if (rule.non_monotonic || !rule_matched_[r]) {
-                // Facts waiting to be logged are covered by this full match.
-                drain(s, context, diagnostics);
+                // Facts not yet logged are matched later, through the cursor. No rule runs before
+                // every rule of the stratum has been matched, so contradiction rules are in place
+                // before anything can derive from a doomed environment.
                 rule_cursor_[r] = activation_log_.size();
                 rule_matched_[r] = 1;
                 match_rule(r, std::nullopt, context, diagnostics);
@@ -45,42 +47,33 @@ void Engine::run_strata(std::optional<std::uint32_t> context, Diagnostics& diagn
 }
 
 // Executes queued instances and matches newly active facts against the rules of strata <= s
-// until nothing changes. Rules of later strata see the new facts through their cursors.
+// until nothing changes. New facts are matched after every single execution, so that urgent
+// instances (contradictions) they trigger run before anything else. Rules of later strata see the
+// new facts through their cursors.
 bool Engine::drain(std::uint32_t s, std::optional<std::uint32_t> context, Diagnostics& diagnostics) {
     bool changed = false;
     for (;;) {
-        if (!agenda_.empty()) {
-            execute(agenda_.pop(), diagnostics);
-            changed = true;
-            continue;
-        }
-        bool logged = false;
-        for (FactId f : pending_activation_) {
-            if (facts_.activate(f)) {
-                activation_log_.push_back(f);
-                logged = true;
-            }
-        }
+        for (FactId f : pending_activation_)
+            if (facts_.activate(f)) activation_log_.push_back(f);
         pending_activation_.clear();
-        bool matched = false;
         for (std::size_t i = 0; i < program_.rules.size(); ++i) {
             RuleId r{static_cast<std::uint32_t>(i)};
             const CompiledRule& rule = program_.rules[r];
             if (rule.stratum > s || !rule_matched_[r]) continue;
+            std::size_t begin = rule_cursor_[r];
             std::size_t end = activation_log_.size();
-            if (rule_cursor_[r] == end) continue;
+            if (begin == end) continue;
+            rule_cursor_[r] = end;
+            // A new fact of a predicate used inside a quantifier can complete a `for all` or an
+            // `exists` anywhere: match the whole rule again (the agenda drops repeated bindings).
             bool full = false;
-            for (std::size_t k = rule_cursor_[r]; k < end && !full; ++k) {
+            for (std::size_t k = begin; k < end && !full; ++k) {
                 ValueId p = facts_.fact(activation_log_[k]).predicate;
                 for (const auto& c : rule.conditions) {
-                    bool inner = c.kind == CompiledCondition::Kind::for_all || c.kind == CompiledCondition::Kind::exists;
-                    if (!inner) continue;
+                    if (c.kind != CompiledCondition::Kind::for_all && c.kind != CompiledCondition::Kind::exists) continue;
                     for (const auto& a : c.atoms) full = full || a.predicate == p;
                 }
             }
-            std::size_t begin = rule_cursor_[r];
-            rule_cursor_[r] = end;
-            matched = true;
             if (full) {
                 match_rule(r, std::nullopt, context, diagnostics);
                 continue;
@@ -95,7 +88,8 @@ bool Engine::drain(std::uint32_t s, std::optional<std::uint32_t> context, Diagno
                 }
             }
         }
-        if (!logged && !matched && agenda_.empty()) return changed;
+        if (agenda_.empty() && pending_activation_.empty()) return changed;
+        if (!agenda_.empty()) execute(agenda_.pop(), diagnostics);
         changed = true;
     }
 }
@@ -109,10 +103,12 @@ void Engine::match_rule(RuleId r, std::optional<Seed> seed, std::optional<std::u
                       [this, rule_context](FactId f) { return why_undecidable(f, rule_context); }};
     Matcher matcher(facts_, values_, builtins_, world);
     std::set<std::pair<std::string, std::string>> reported;
+    bool urgent = std::any_of(rule.consequents.begin(), rule.consequents.end(),
+                              [](const CompiledConsequent& c) { return c.kind == CompiledConsequent::Kind::falsity; });
     matcher.match(
         rule, seed,
         [&](const Binding& b, std::span<const FactId> ants) {
-            agenda_.push(RuleInstance{r, b, std::vector<FactId>(ants.begin(), ants.end()), rule_context});
+            agenda_.push(RuleInstance{r, b, std::vector<FactId>(ants.begin(), ants.end()), rule_context}, urgent);
         },
         [&](const MatchError& e) {
             std::string where = e.where.file + ":" + std::to_string(e.where.line) + ":" + std::to_string(e.where.column);

@@ -1,0 +1,44 @@
+// cli/main.cpp: the qm-atms command. The only place that prints diagnostics and picks the exit
+// status: 0 success, 2 bad input, 1 internal error (STYLE.md section 6).
+#include "qm/assert.hpp"
+#include "run_command.hpp"
+#include <exception>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr const char* usage =
+    "usage: qm-atms SCENE.def [options]          analyse a scene (thesis chapter 6)\n"
+    "       qm-atms run PROGRAM.rules [--why 'FACT'] [--json]\n"
+    "       qm-atms --help\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    std::string doing = "starting";
+    try {
+        if (args.empty()) {
+            std::cerr << usage;
+            return 2;
+        }
+        if (args[0] == "--help" || args[0] == "-h") {
+            std::cout << usage << '\n' << qm::cli::run_usage();
+            return 0;
+        }
+        if (args[0] == "run") {
+            doing = "running " + (args.size() > 1 ? args[1] : std::string("a rule program"));
+            return qm::cli::run_command(std::span<const std::string>(args).subspan(1), std::cout, std::cerr);
+        }
+        std::cerr << "qm-atms: scene analysis: not built yet\n";
+        return 2;
+    } catch (const qm::InternalError& e) {
+        std::cerr << "qm-atms: internal error: " << e.what() << " (while " << doing << ")\n";
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "qm-atms: internal error: " << e.what() << " (while " << doing << ")\n";
+        return 1;
+    }
+}

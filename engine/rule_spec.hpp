@@ -1,0 +1,71 @@
+// engine/rule_spec.hpp
+// Provides:   ProgramSpec, a neutral, parser-independent description of a rule program (names are
+//             still text, variables still names). rule_compiler.hpp turns it into a CompiledProgram;
+//             ast_to_spec.hpp fills it from E1's AST. Keeping this seam lets the compiler be tested
+//             without the parser and keeps the parser's types out of the runtime.
+// Ownership:  plain values.
+// Knows nothing of the ATMS.
+#pragma once
+#include "qm/diagnostics.hpp"
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace qm::engine {
+
+struct TermSpec {
+    enum class Kind : std::uint8_t { symbol, integer, variable, direction, call, set } kind = Kind::symbol;
+    std::string text;             // symbol name; variable name (without '?'); direction signs "+0-?"; call name
+    std::int64_t integer = 0;
+    std::vector<TermSpec> args;   // call arguments; set elements
+    SourceLocation where;
+};
+
+struct AtomSpec {
+    std::string predicate;
+    std::vector<TermSpec> args;
+    SourceLocation where;
+};
+
+struct TestSpec {
+    std::string name;
+    std::vector<TermSpec> args;
+    SourceLocation where;
+};
+
+struct ConditionSpec {
+    enum class Kind : std::uint8_t { atom, test, negation, for_all, exists, aggregate } kind = Kind::atom;
+    AtomSpec atom;                // atom, negation, aggregate
+    TestSpec test;                // test
+    std::string variable;         // for_all, exists: the quantified variable; aggregate: the result
+    TermSpec set;                 // for_all, exists
+    std::vector<TestSpec> tests;  // for_all, exists
+    std::vector<AtomSpec> atoms;  // for_all, exists
+    std::string function;         // aggregate
+    TermSpec value;               // aggregate: the summed term
+    TermSpec start;               // aggregate
+    SourceLocation where;
+};
+
+struct ConsequentSpec {
+    enum class Kind : std::uint8_t { atom, falsity, for_all, assume, exactly_one } kind = Kind::atom;
+    AtomSpec atom;
+    std::string variable;         // for_all, exactly_one
+    TermSpec set;
+    std::vector<TestSpec> tests;
+    SourceLocation where;
+};
+
+struct RuleSpec {
+    std::string name;
+    SourceLocation where;
+    std::vector<ConditionSpec> conditions;
+    std::vector<ConsequentSpec> consequents;
+};
+
+struct ProgramSpec {
+    std::vector<RuleSpec> rules;
+    std::vector<AtomSpec> facts;
+    std::vector<AtomSpec> assumptions;
+};
+}  // namespace qm::engine
