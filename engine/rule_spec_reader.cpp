@@ -95,12 +95,13 @@ public:
 
     void program() {
         while (peek().kind != Token::Kind::end) {
+            std::size_t start = pos_;
             try {
                 item();
             } catch (const Failure&) {
-                do {
-                    ++pos_;
-                } while (peek().kind != Token::Kind::end && !top_level_keyword(peek()));
+                // Resume at the next top-level item (which may be where the error was found).
+                if (pos_ == start) ++pos_;
+                while (peek().kind != Token::Kind::end && !top_level_keyword(peek())) ++pos_;
             }
         }
     }
@@ -182,6 +183,8 @@ private:
         }
         ++pos_;
         do {
+            if (peek().kind == Token::Kind::end || top_level_keyword(peek()))
+                fail("a consequent (an atom, 'false', 'assume' or a bracketed quantifier)");
             r.consequents.push_back(consequent());
         } while (peek().kind != Token::Kind::end && !top_level_keyword(peek()));
         spec_.rules.push_back(std::move(r));
