@@ -275,3 +275,33 @@ TEST_CASE("geometry/place_vocabulary_builder: 8.1.6 merge epsilon absorbs a shor
     req.merge_epsilon = -1;
     CHECK(build_place_vocabulary(notch, req).status == PlaceStatus::bad_request);
 }
+
+TEST_CASE("geometry/place_vocabulary_builder: zero play leaves no free face and does not fail") {
+    // The crank pin in a slot exactly its width: free only on the curve q1 = 0.6 cos q0.
+    const AnalyticOracle tight(
+        "tight-pin", [](const Eigen::Vector2d& q) { return std::abs(0.6 * std::cos(q[0]) - q[1]); },
+        [](const Eigen::Vector2d& q) {
+            const double sg = 0.6 * std::cos(q[0]) - q[1] >= 0 ? 1.0 : -1.0;
+            return Eigen::Vector2d(-sg * 0.6 * std::sin(q[0]), -sg);
+        });
+    PlaceRequest req;
+    req.cspace.axes = pin_in_slot().axes;
+    const auto res = build_place_vocabulary(tight, req);
+    REQUIRE(res.status == PlaceStatus::ok);
+    CHECK(res.vocabulary.count(PlaceKind::face) == 0);
+    CHECK(res.space.boundary.empty());
+}
+
+TEST_CASE("geometry/place_vocabulary_builder: the tessellated closed-form pairs reach the exact pairs' place counts") {
+    // Stability as tolerance shrinks (docs/ACCURACY.md): fine tessellation gives the smooth count.
+    for (const auto& c : {disk_cam_and_follower(), pin_in_slot()}) {
+        PlaceRequest req;
+        req.cspace.axes = c.axes;
+        req.cspace.axes[0].samples = req.cspace.axes[1].samples = 48;
+        const auto exact = build_place_vocabulary(c.exact, req).vocabulary;
+        const auto poly = c.tessellated(1e-4);
+        const auto tess = build_place_vocabulary(poly, req).vocabulary;
+        INFO(c.name);
+        for (auto k : {PlaceKind::cseg, PlaceKind::join, PlaceKind::fsd, PlaceKind::face}) CHECK(tess.count(k) == exact.count(k));
+    }
+}
