@@ -1,0 +1,205 @@
+// geometry/detail/free_space_divisions.cpp: FSDs (Def 31), external place divisions (8.2.1,
+// 9.2) and their crossings (8.1.2).
+#include "geometry/detail/place_builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace qm::geometry::detail {
+
+// A direction that runs along a CSEG parallel to the axis (a box edge) is that CSEG, not an
+// FSD: a little way along, a small step across it is blocked on one side. A tangent to a curved
+// CSEG has left the curve by then, so it stays an FSD.
+bool Builder::runs_along_boundary(const Division& d, const CSpaceAxis& ax) {
+    const int other = 1 - d.axis;
+    const double across = 16 * r.boundary_tolerance + 1e-9 * r.axes[static_cast<std::size_t>(other)].span();
+    for (double t : {0.05 * ax.step(), 0.25 * ax.step()})
+        for (double side : {-1.0, 1.0}) {
+            Eigen::Vector2d q = d.at(t);
+            q[other] += side * across;
+            if (in_domain(q) && blocked(q)) return true;
+        }
+    return false;
+}
+
+// Two joins at the same height start the same division; keep one.
+bool Builder::duplicate(const Division& d) const {
+    const int other = 1 - d.axis;
+    for (const auto& e : divisions) {
+        if (e.axis != d.axis || std::abs(difference(r, e.start, d.start)[other]) > 8 * r.boundary_tolerance) continue;
+        const auto& ax = r.axes[static_cast<std::size_t>(d.axis)];
+        double t = e.dir * (d.start[d.axis] - e.start[e.axis]);
+        if (ax.periodic) t = std::fmod(std::fmod(t, ax.span()) + ax.span(), ax.span());
+        if (t >= -8 * r.boundary_tolerance && t <= e.length + 8 * r.boundary_tolerance && e.dir == d.dir) return true;
+        if (e.length >= ax.span() && ax.periodic) return true;  // a loop covers the whole line
+    }
+    return false;
+}
+
+// Def 31: from each significant point follow each axis until the next contact.
+void Builder::grow_fsds() {
+    const std::size_t joins = v.places.size();
+    for (std::size_t jp = 0; jp < joins; ++jp) {
+        const Place& j = v.places[jp];
+        if (j.kind != PlaceKind::join || j.join_kind != JoinKind::normal_change) continue;
+        const Eigen::Vector2d origin = j.points.front();
+        for (int axis = 0; axis < 2; ++axis)
+            for (int dir : {1, -1}) {
+                const auto& ax = r.axes[static_cast<std::size_t>(axis)];
+                Division d{PlaceKind::fsd, axis, dir, origin, 0.0, {}, {{0.0, PlaceId{static_cast<std::uint32_t>(jp)}}}};
+                const double first = std::max(8 * r.boundary_tolerance, 0.05 * ax.step());
+                if (!in_domain(d.at(first)) || blocked(d.at(first))) continue;
+                if (runs_along_boundary(d, ax) || duplicate(d)) continue;
+                double t = first;
+                bool ended = false;
+                while (!ended) {
+                    double next = t + ax.step();
+                    if (ax.periodic && next >= ax.span()) {  // around the whole axis: ends where it began
+                        if (dir < 0) break;                  // the + direction already covers the loop
+                        d.length = ax.span();
+                        d.joins.push_back({ax.span(), d.joins.front().second});
+                        divisions.push_back(d);
+                        ended = true;
+                    } else if (!ax.periodic && !in_domain(d.at(next))) {
+                        next = dir > 0 ? ax.hi - origin[axis] : origin[axis] - ax.lo;
+                        d.length = next;
+                        d.joins.push_back({next, add_join(JoinKind::limit, d.at(next), {})});
+                        divisions.push_back(d);
+                        ended = true;
+                    } else if (blocked(d.at(next))) {
+                        const Eigen::Vector2d e = bisect_contact(oracle, d.at(t), false, d.at(next), r.boundary_tolerance, space.oracle_calls);
+                        d.length = std::abs(e[axis] - origin[axis]);
+                        end_on_boundary(d, d.length, JoinKind::fsd_end);
+                        divisions.push_back(d);
+                        ended = true;
+                    }
+                    t = next;
+                }
+            }
+    }
+}
+
+// The division ends on a CSEG at parameter t: a join there splits that CSEG (8.1.2).
+void Builder::end_on_boundary(Division& d, double t, JoinKind kind) {
+    const Eigen::Vector2d e = wrap(r, d.at(t));
+    const Eigen::Vector2d scale = cell().cwiseInverse();
+    std::size_t best_c = 0, best_k = 0;
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t c = 0; c < chains.size(); ++c)
+        for (std::size_t k = 0; k < chains[c].size(); ++k) {
+            const double dist = difference(r, chains[c][k].q, e).cwiseProduct(scale).norm();
+            if (dist < best) {
+                best = dist;
+                best_c = c;
+                best_k = k;
+            }
+        }
+    QualDirection qual;
+    Eigen::Vector2d normal = Eigen::Vector2d::Zero();
+    if (!chains.empty()) {
+        qual = chains[best_c][best_k].qual;
+        normal = chains[best_c][best_k].normal;
+    }
+    const PlaceId j = add_join(kind, e, {qual});
+    d.joins.push_back({t, j});
+    if (chains.empty()) return;
+    // Insert next to the nearest node, on the side whose neighbour is closer to e.
+    auto& nodes = chains[best_c];
+    const std::size_t n = nodes.size();
+    std::size_t pos = best_k + 1;
+    if (best_k > 0 || closed[best_c]) {
+        const auto& prev = nodes[(best_k + n - 1) % n];
+        const auto& next = nodes[(best_k + 1) % n];
+        if (difference(r, prev.q, e).cwiseProduct(scale).norm() < difference(r, next.q, e).cwiseProduct(scale).norm())
+            pos = best_k == 0 ? n : best_k;
+    }
+    if (!closed[best_c]) pos = std::clamp<std::size_t>(pos, 1, n - 1);  // stay inside the limit joins
+    nodes.insert(nodes.begin() + static_cast<std::ptrdiff_t>(pos), ChainNode{e, -1, j, qual, normal});
+}
+
+// 8.2.1 / 9.2: a position-dependent force divides places along a line; parts of the line in
+// blocked space are ignored.
+void Builder::add_external_divisions() {
+    for (const auto& x : request.external) {
+        const int axis = 1 - x.coordinate;
+        const auto& ax = r.axes[static_cast<std::size_t>(axis)];
+        Eigen::Vector2d q = Eigen::Vector2d::Zero();
+        q[x.coordinate] = x.value;
+        auto at = [&](int m) {
+            Eigen::Vector2d p = q;
+            p[axis] = ax.sample(m);
+            return p;
+        };
+        const int n = ax.samples;
+        std::vector<bool> b(static_cast<std::size_t>(n));
+        for (int m = 0; m < n; ++m) b[static_cast<std::size_t>(m)] = blocked(at(m));
+        const bool all_free = std::none_of(b.begin(), b.end(), [](bool y) { return y; });
+        if (all_free) {
+            Division d{PlaceKind::external_division, axis, 1, at(0), 0.0, x.label, {}};
+            if (ax.periodic) {
+                d.length = ax.span();
+                const PlaceId j = add_join(JoinKind::crossing, at(0), {});
+                d.joins = {{0.0, j}, {ax.span(), j}};
+            } else {
+                d.length = ax.span();
+                d.joins = {{0.0, add_join(JoinKind::limit, at(0), {})}, {ax.span(), add_join(JoinKind::limit, at(n - 1), {})}};
+            }
+            divisions.push_back(d);
+            continue;
+        }
+        // Each maximal free run of samples, extended to the contacts on both sides.
+        const int stop = ax.periodic ? n : n - 1;
+        for (int m = 0; m < stop; ++m) {
+            const int m1 = (m + 1) % n;
+            if (!(b[static_cast<std::size_t>(m)] && !b[static_cast<std::size_t>(m1)])) continue;
+            Eigen::Vector2d lo = at(m), hi = lo;
+            hi[axis] += ax.step();
+            const Eigen::Vector2d s = bisect_contact(oracle, lo, true, hi, r.boundary_tolerance, space.oracle_calls);
+            Division d{PlaceKind::external_division, axis, 1, s, 0.0, x.label, {}};
+            d.joins.push_back({0.0, PlaceId{0}});
+            end_on_boundary(d, 0.0, JoinKind::fsd_end);
+            d.joins.erase(d.joins.begin());
+            int k = m1;
+            while (!b[static_cast<std::size_t>(k)] && (ax.periodic || k + 1 < n)) k = (k + 1) % n;
+            if (b[static_cast<std::size_t>(k)]) {
+                Eigen::Vector2d a2 = at((k + n - 1) % n), b2 = at(k);
+                if (b2[axis] < a2[axis]) b2[axis] += ax.span();
+                const Eigen::Vector2d e = bisect_contact(oracle, b2, true, a2, r.boundary_tolerance, space.oracle_calls);
+                double len = e[axis] - s[axis];
+                if (ax.periodic && len < 0) len += ax.span();
+                d.length = len;
+                end_on_boundary(d, len, JoinKind::fsd_end);
+            } else {
+                d.length = ax.hi - s[axis];
+                d.joins.push_back({d.length, add_join(JoinKind::limit, at(n - 1), {})});
+            }
+            divisions.push_back(d);
+        }
+    }
+}
+
+// Crossings of divisions along different axes are joins (8.1.2) that split both.
+void Builder::cross_divisions() {
+    for (std::size_t a = 0; a < divisions.size(); ++a)
+        for (std::size_t b = a + 1; b < divisions.size(); ++b) {
+            auto& da = divisions[a];
+            auto& db = divisions[b];
+            if (da.axis == db.axis) continue;
+            auto param = [&](const Division& d, double x) {
+                const auto& ax = r.axes[static_cast<std::size_t>(d.axis)];
+                double t = d.dir * (x - d.start[d.axis]);
+                if (ax.periodic) t = std::fmod(std::fmod(t, ax.span()) + ax.span(), ax.span());
+                return t;
+            };
+            const double ta = param(da, db.start[da.axis]);
+            const double tb = param(db, da.start[db.axis]);
+            const double eps = 4 * r.boundary_tolerance;
+            if (ta <= eps || ta >= da.length - eps || tb <= eps || tb >= db.length - eps) continue;
+            const PlaceId j = add_join(JoinKind::crossing, da.at(ta), {});
+            da.joins.push_back({ta, j});
+            db.joins.push_back({tb, j});
+        }
+}
+
+}  // namespace qm::geometry::detail

@@ -1,0 +1,91 @@
+// geometry/detail/place_builder.hpp (internal)
+// Provides:   Builder, the state of one build_place_vocabulary() call shared by its stages:
+//             boundary chains with their joins (place_vocabulary_builder.cpp) and divisions
+//             (free_space_divisions.cpp).
+// Ownership:  references the caller's oracle, request and result for the duration of the call.
+#pragma once
+#include "geometry/cspace.hpp"
+#include "geometry/detail/place_parts.hpp"
+#include "geometry/pair_oracle.hpp"
+#include "geometry/place_vocabulary.hpp"
+#include "geometry/place_vocabulary_builder.hpp"
+#include "geometry/cspace_boundary.hpp"
+#include <optional>
+#include <vector>
+
+namespace qm::geometry::detail {
+
+
+// A node along a boundary chain: a boundary point or a join placed between two of them.
+struct ChainNode {
+    Eigen::Vector2d q;
+    int point = -1;                  // index into space.boundary, or -1 for a join
+    std::optional<PlaceId> join;
+    QualDirection qual;              // boundary points: their normal class
+    Eigen::Vector2d normal = Eigen::Vector2d::Zero();
+};
+
+struct Builder {
+    const PairOracle& oracle;
+    const PlaceRequest& request;
+    const CSpaceRequest& r;
+    CSpaceResult& space;
+    PlaceVocabulary& v;
+    std::vector<std::vector<ChainNode>> chains;
+    std::vector<bool> closed;
+    std::vector<Division> divisions;
+    std::vector<LineInfo> lines;
+
+    [[nodiscard]] Eigen::Vector2d cell() const { return {r.axes[0].step(), r.axes[1].step()}; }
+    [[nodiscard]] bool in_domain(const Eigen::Vector2d& q) const {
+        for (int k = 0; k < 2; ++k) {
+            const auto& a = r.axes[static_cast<std::size_t>(k)];
+            const double slack = 1e-9 * a.span();  // points on a translation limit are inside
+            if (!a.periodic && (q[k] < a.lo - slack || q[k] > a.hi + slack)) return false;
+        }
+        return true;
+    }
+    bool blocked(const Eigen::Vector2d& q) {
+        ++space.oracle_calls;
+        return oracle.blocked(wrap(r, q));
+    }
+    PlaceId add(Place p) {
+        p.id = PlaceId{static_cast<std::uint32_t>(v.places.size())};
+        v.places.push_back(std::move(p));
+        return v.places.back().id;
+    }
+    PlaceId add_join(JoinKind kind, const Eigen::Vector2d& q, std::vector<QualDirection> normals) {
+        Place p;
+        p.kind = PlaceKind::join;
+        p.join_kind = kind;
+        p.points = {wrap(r, q)};
+        p.normals = std::move(normals);
+        return add(std::move(p));
+    }
+
+    // Move q onto the boundary along direction n (cell-scaled), if the boundary is within a cell.
+    Eigen::Vector2d project(const Eigen::Vector2d& q, Eigen::Vector2d n) {
+        n = n.cwiseProduct(cell());
+        if (n.norm() == 0) return q;
+        n = n.normalized() * cell().norm();
+        const bool lo = blocked(q - n), hi = blocked(q + n);
+        if (lo == hi) return q;
+        return bisect_contact(oracle, q - n, lo, q + n, r.boundary_tolerance, space.oracle_calls);
+    }
+
+    void make_chains(const std::vector<BoundaryChain>& traced);
+    void absorb_short_runs(std::vector<ChainNode>& nodes, bool is_closed);
+    void insert_normal_joins(std::size_t c);
+    void collapse_point_runs(std::size_t c);
+    Eigen::Vector2d corner(const ChainNode& a, const ChainNode& b);
+    bool duplicate(const Division& d) const;
+    void grow_fsds();
+    bool runs_along_boundary(const Division& d, const CSpaceAxis& ax);
+    void add_external_divisions();
+    void end_on_boundary(Division& d, double t, JoinKind kind);
+    void cross_divisions();
+    void emit_csegs();
+    void emit_divisions();
+};
+
+}  // namespace qm::geometry::detail
