@@ -2,6 +2,7 @@
 #include "engine/builtin_registry.hpp"
 #include "engine/builtins_comparison.hpp"
 #include "engine/builtins_integer.hpp"
+#include "engine/builtins_qualitative.hpp"
 #include "qm/assert.hpp"
 
 namespace qm::engine {
@@ -37,6 +38,7 @@ const BuiltinRegistry& default_builtins() {
         BuiltinRegistry r;
         register_comparison_builtins(r);
         register_integer_builtins(r);
+        register_qualitative_builtins(r);
         return r;
     }();
     return registry;

@@ -1,0 +1,108 @@
+// tests/engine/builtins_qualitative_test.cpp: the qualitative builtins against real arithmetic:
+// every cell of the sign tables is checked against sampled real numbers with those signs (a
+// definite table entry must be the sign of every sample; ? must be justified by samples of both
+// signs), Open-Half-Plane is sound for real dot products, Rotate-90 agrees with the real rotation
+// matrix, nearness follows Def 38's classes.
+#include "engine/builtin_registry.hpp"
+#include <doctest/doctest.h>
+#include <random>
+#include <set>
+
+using namespace qm::engine;
+
+namespace {
+ValueTable values;
+ValueId dir(const std::string& s) { return values.direction(s); }
+BuiltinResult apply(const char* name, std::vector<ValueId> args) {
+    return default_builtins().apply(*default_builtins().find(name), values, args);
+}
+std::string text(const BuiltinResult& r) { return r.value ? values.print(*r.value) : "error: " + r.error; }
+
+char sign_of(double x) { return x > 0 ? '+' : x < 0 ? '-' : '0'; }
+double sample(char s, std::mt19937& rng) {
+    std::uniform_real_distribution<double> d(0.1, 10.0);
+    return s == '+' ? d(rng) : s == '-' ? -d(rng) : 0.0;
+}
+}  // namespace
+
+TEST_CASE("engine/builtins_qualitative: sign sum and product tables agree with sampled reals") {
+    std::mt19937 rng(3);
+    for (char a : {'+', '0', '-'})
+        for (char b : {'+', '0', '-'}) {
+            char sum = values.value(*apply("sign-sum", {dir({a}), dir({b})}).value).text[0];
+            char product = values.value(*apply("sign-product", {dir({a}), dir({b})}).value).text[0];
+            std::set<char> sums, products;
+            for (int i = 0; i < 200; ++i) {
+                double x = sample(a, rng), y = sample(b, rng);
+                sums.insert(sign_of(x + y));
+                products.insert(sign_of(x * y));
+            }
+            CAPTURE(a);
+            CAPTURE(b);
+            if (sum == '?') CHECK(sums.size() > 1);
+            else CHECK(sums == std::set<char>{sum});
+            CHECK(products == std::set<char>{product});
+        }
+    CHECK(text(apply("sign-sum", {dir("?"), dir("0")})) == "(?)");
+    CHECK(text(apply("sign-product", {dir("?"), dir("0")})) == "(0)");
+    CHECK(text(apply("sign-product", {dir("?"), dir("-")})) == "(?)");
+}
+
+TEST_CASE("engine/builtins_qualitative: open-half-plane is sound for real dot products; ambiguous is false") {
+    std::mt19937 rng(5);
+    auto all = apply("translations", {values.integer(3)});
+    REQUIRE(all.value.has_value());
+    const auto& dirs = values.value(*all.value).elements;
+    CHECK(dirs.size() == 27);
+    for (ValueId a : dirs)
+        for (ValueId b : dirs) {
+            bool open = apply("open-half-plane", {a, b}).holds;
+            bool closed = apply("half-plane", {a, b}).holds;
+            const auto& sa = values.value(a).text;
+            const auto& sb = values.value(b).text;
+            for (int i = 0; i < 20; ++i) {
+                double dot = 0;
+                for (int k = 0; k < 3; ++k) dot += sample(sa[k], rng) * sample(sb[k], rng);
+                if (open) CHECK(dot > 0);
+                if (closed) CHECK(dot >= 0);
+            }
+        }
+    CHECK(!apply("open-half-plane", {dir("+-"), dir("++")}).holds);  // dot product ambiguous
+    CHECK(apply("open-half-plane", {dir("+-"), dir("+0")}).holds);
+}
+
+TEST_CASE("engine/builtins_qualitative: rotate-90 agrees with the real quarter-turn matrices") {
+    std::mt19937 rng(9);
+    for (char x : {'+', '0', '-'})
+        for (char y : {'+', '0', '-'})
+            for (char r : {'+', '-'}) {
+                double vx = sample(x, rng), vy = sample(y, rng);
+                // Counter-clockwise for (+): (x, y) -> (-y, x); clockwise for (-): (x, y) -> (y, -x).
+                double rx = r == '+' ? -vy : vy, ry = r == '+' ? vx : -vx;
+                CHECK(text(apply("rotate-90", {dir({x, y}), dir({r})})) == values.print(dir({sign_of(rx), sign_of(ry)})));
+            }
+    CHECK(!apply("rotate-90", {dir("+00"), dir("+")}).error.empty());
+}
+
+TEST_CASE("engine/builtins_qualitative: vector sums, negation, direction sets, nearness, zero tests") {
+    CHECK(text(apply("qsum", {dir("+-0"), dir("++-")})) == "(+ ? -)");
+    CHECK(text(apply("qsum-cancel", {dir("+-0"), dir("-+-")})) == "(0 0 -)");
+    CHECK(text(apply("neg", {dir("+0-?")})) == "(- 0 + ?)");
+    CHECK(text(apply("dot-sign", {dir("+-"), dir("+-")})) == "(+)");
+    CHECK(values.value(*apply("rotations", {values.integer(2)}).value).elements.size() == 3);
+    CHECK(values.value(*apply("rotations", {values.integer(3)}).value).elements.size() == 27);
+    CHECK(text(apply("zero-rotation", {values.integer(2)})) == "(0)");
+    CHECK(text(apply("zero-translation", {values.integer(3)})) == "(0 0 0)");
+    CHECK(!apply("translations", {values.integer(4)}).error.empty());
+    CHECK(apply("zero?", {dir("00")}).holds);
+    CHECK(apply("nonzero?", {dir("0-")}).holds);
+    // Def 38 ranks relative to v = (+ 0).
+    CHECK(text(apply("nearness", {dir("+0"), dir("+0")})) == "0");
+    CHECK(text(apply("nearness", {dir("+0"), dir("++")})) == "1");
+    CHECK(text(apply("nearness", {dir("+0"), dir("00")})) == "2");
+    CHECK(text(apply("nearness", {dir("+0"), dir("0+")})) == "3");
+    CHECK(text(apply("nearness", {dir("+0"), dir("--")})) == "4");
+    CHECK(text(apply("nearness", {dir("+0"), dir("-0")})) == "5");
+    CHECK(!apply("qsum", {dir("+"), dir("++")}).error.empty());
+    CHECK(!apply("neg", {values.symbol("up")}).error.empty());
+}
