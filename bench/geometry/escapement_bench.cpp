@@ -55,6 +55,21 @@ int main(int argc, char** argv) {
                       << v.count(PlaceKind::face) << " |\n";
             if (grid == 64 && tol == 1e-8) last = std::move(res);
         }
+    // 8.2.1 / 9.2: gravity on the pallets flips where the anchor hangs straight (anchor angle 0);
+    // the division is kept only where it crosses free space.
+    {
+        PlaceRequest req;
+        req.cspace.axes = {CSpaceAxis{0, 2 * std::numbers::pi / teeth, true, 64}, CSpaceAxis{-0.35, 0.35, false, 64}};
+        req.cspace.boundary_tolerance = 1e-8;
+        req.external.push_back({1, 0.0, "gravity on the pallets flips"});
+        const auto t0 = std::chrono::steady_clock::now();
+        const auto res = build_place_vocabulary(oracle, req);
+        const auto t1 = std::chrono::steady_clock::now();
+        const auto& v = res.vocabulary;
+        std::cout << "\nwith the external division anchor = 0 (64 grid, 1e-8): " << std::chrono::duration<double, std::milli>(t1 - t0).count()
+                  << " ms, places " << v.places.size() << " (external-division pieces " << v.count(PlaceKind::external_division)
+                  << ", faces " << v.count(PlaceKind::face) << ")\n";
+    }
     if (argc > 1) {
         std::ofstream os(argv[1]);
         write_cspace_svg(os, last.space, last.vocabulary, {720, 540, "scape wheel (one pitch) x anchor, 64x64, tol 1e-8", true});
