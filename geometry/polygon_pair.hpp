@@ -45,6 +45,8 @@ public:
     [[nodiscard]] Eigen::Vector2d free_normal(const Eigen::Vector2d& q) const override;
     [[nodiscard]] std::string fingerprint() const override;
     [[nodiscard]] double distance(const Eigen::Vector2d& q) const;
+    // Pre: which is 0 or 1.
+    [[nodiscard]] const PolygonPart& part(int which) const { return parts_[which]; }
 
 private:
     [[nodiscard]] std::vector<Polygon> placed(int which, double q) const;
