@@ -37,7 +37,7 @@ ClosedWorldStatus Engine::status(FactId f, std::optional<std::uint32_t> context)
     }
     const Context& c = contexts_[*context];
     if (atms_.holds_in(n, c.environment)) return ClosedWorldStatus::holds;
-    const atms::Environment& world = atms_.env(c.environment);
+    const atms::Environment world = atms_.env(c.environment);  // a copy: environment() below may grow the table
     for (atms::EnvId e : label) {
         bool only_choices = true;
         for (atms::AssumptionId a : atms_.env(e).assumptions()) {

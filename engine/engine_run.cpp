@@ -124,7 +124,7 @@ void Engine::close_contexts() {
         Context& c = contexts_[i];
         std::uint32_t count = static_cast<std::uint32_t>(atms_.assumption_count());
         if (c.assumptions_closed == count) continue;
-        const atms::Environment& base = atms_.env(c.base);
+        const atms::Environment base = atms_.env(c.base);  // a copy: add_nogood may grow the env table
         Firing why{Firing::Kind::closed_world, std::nullopt, {}, static_cast<std::uint32_t>(i), SourceLocation{"<context>", 1, 1}};
         std::optional<atms::InformantId> informant;
         for (std::uint32_t k = c.assumptions_closed; k < count; ++k) {
