@@ -279,12 +279,25 @@ std::optional<LoadedProgram> compile_program(const ProgramSpec& spec, Diagnostic
 
 // The interim front end (rule_spec_reader.hpp) until E1's loader is in the tree.
 #include "engine/rule_spec_reader.hpp"
+#include <filesystem>
 
 namespace qm::engine {
 std::optional<LoadedProgram> load_program(const std::string& path, Diagnostics& diagnostics) {
+    return load_programs(std::span<const std::string>(&path, 1), diagnostics);
+}
+
+std::optional<LoadedProgram> load_programs(std::span<const std::string> paths, Diagnostics& diagnostics) {
     ProgramSpec spec;
     std::size_t before = diagnostics.size();
-    read_rule_file(path, spec, diagnostics);
+    std::string joined;
+    for (const auto& p : paths) {
+        if (!std::filesystem::is_regular_file(p)) {
+            diagnostics.error({p, 1, 1}, "cannot open rule file '" + p + "'");
+            continue;
+        }
+        joined += "include \"" + std::filesystem::path(p).lexically_normal().string() + "\"\n";
+    }
+    read_rule_text(joined, "<command line>", spec, diagnostics);
     for (std::size_t i = before; i < diagnostics.size(); ++i)
         if (diagnostics.items()[i].severity == Severity::error) return std::nullopt;
     return compile_program(spec, diagnostics);

@@ -16,6 +16,7 @@
 #include "engine/value_table.hpp"
 #include "qm/diagnostics.hpp"
 #include <optional>
+#include <span>
 #include <string>
 
 namespace qm::engine {
@@ -29,4 +30,7 @@ struct LoadedProgram {
                                                            const BuiltinRegistry& builtins = default_builtins());
 // Loads path (and its includes) with the program loader, then compiles it.
 [[nodiscard]] std::optional<LoadedProgram> load_program(const std::string& path, Diagnostics& diagnostics);
+// Loads several files (e.g. every law file of rules/) into one program, in the order given; a file
+// included by several of them is read once.
+[[nodiscard]] std::optional<LoadedProgram> load_programs(std::span<const std::string> paths, Diagnostics& diagnostics);
 }  // namespace qm::engine
