@@ -68,7 +68,11 @@ inline CompiledRule rule(std::string name, std::uint32_t slots, std::vector<Comp
     CompiledRule r;
     r.name = std::move(name);
     r.where = SourceLocation{"test.rules", 1, 1};
-    for (std::uint32_t i = 0; i < slots; ++i) r.slot_names.push_back("?v" + std::to_string(i));
+    for (std::uint32_t i = 0; i < slots; ++i) {
+        std::string name = "?v";
+        name += std::to_string(i);
+        r.slot_names.push_back(name);
+    }
     r.conditions = std::move(when);
     r.consequents = std::move(then);
     r.stratum = stratum;

@@ -41,9 +41,15 @@ struct GroundFact {
     std::vector<int> args;
     bool operator<(const GroundFact& o) const { return std::tie(predicate, args) < std::tie(o.predicate, o.args); }
     std::string text() const {
-        std::string s = "(" + predicate;
-        for (int a : args) s += " " + std::to_string(a);
-        return s + ")";
+        // Appends only: GCC 12 -O3 reports a false -Wrestrict on `" " + std::to_string(a)`.
+        std::string s = "(";
+        s += predicate;
+        for (int a : args) {
+            s += ' ';
+            s += std::to_string(a);
+        }
+        s += ')';
+        return s;
     }
 };
 
@@ -128,7 +134,9 @@ struct RandomProgram {
             if (r.less_test) when.push_back(builtin_test(default_builtins(), "<", {var(0), var(1)}));
             std::vector<CompiledConsequent> then;
             then.push_back(r.head ? assert_atom(to_atom(*r.head)) : falsity());
-            p.rules.push_back(rule("r" + std::to_string(i), 2, when, then));
+            std::string name = "r";
+            name += std::to_string(i);
+            p.rules.push_back(rule(name, 2, when, then));
         }
         return p;
     }
