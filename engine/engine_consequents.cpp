@@ -31,6 +31,11 @@ void Engine::execute(const RuleInstance& instance, Diagnostics& diagnostics) {
     if (instance.context) ants.push_back(contexts_[*instance.context].node);
 
     Binding b = instance.binding;
+    // A quantified consequent's element gets its own informant, whose binding includes the element,
+    // so explanations show which element a justification is for.
+    auto element_informant = [&] {
+        return new_firing(Firing{Firing::Kind::rule, instance.rule, b, instance.context, rule.where});
+    };
     // The elements of a consequent quantifier's set that pass its tests.
     auto elements = [&](const CompiledConsequent& c) -> std::vector<ValueId> {
         std::vector<ValueId> out;
@@ -86,7 +91,7 @@ void Engine::execute(const RuleInstance& instance, Diagnostics& diagnostics) {
                 for (ValueId e : elements(c)) {
                     b[c.slot] = e;
                     if (auto f = instantiate(c.atom, b, diagnostics)) {
-                        atms_.justify(why, ants, fact_nodes_[*f].node);
+                        atms_.justify(element_informant(), ants, fact_nodes_[*f].node);
                         note_if_in(*f);
                     }
                 }
@@ -99,7 +104,7 @@ void Engine::execute(const RuleInstance& instance, Diagnostics& diagnostics) {
                 for (ValueId e : elements(c)) {
                     b[c.slot] = e;
                     if (auto f = instantiate(c.atom, b, diagnostics)) {
-                        assume_fact(*f, why, ants);
+                        assume_fact(*f, element_informant(), ants);
                         note_if_in(*f);
                         atms::NodeId a = *fact_nodes_[*f].assumption;
                         if (std::find(nodes.begin(), nodes.end(), a) != nodes.end()) continue;

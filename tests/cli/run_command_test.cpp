@@ -75,6 +75,7 @@ TEST_CASE("cli/run_command: --why explains a fact and a ruled-out fact") {
     CHECK(holds.status == 0);
     CHECK(holds.out.find("(queen 1 2) holds") == 0);
     CHECK(holds.out.find("rule place at ") != std::string::npos);
+    CHECK(holds.out.find("{?r = 1, ?c = 2}: (row 1), assume (queen 1 2)") != std::string::npos);
     Result out = qm_atms("run " + scenario("polybox.rules") + " --why '(value f 12)'");
     CHECK(out.status == 0);
     CHECK(out.out.find("(value f 12) is ruled out") == 0);
