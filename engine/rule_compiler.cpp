@@ -278,6 +278,7 @@ std::optional<LoadedProgram> compile_program(const ProgramSpec& spec, Diagnostic
 }  // namespace qm::engine
 
 // The interim front end (rule_spec_reader.hpp) until E1's loader is in the tree.
+#include "engine/rule_checker.hpp"
 #include "engine/rule_spec_reader.hpp"
 #include <filesystem>
 
@@ -300,6 +301,10 @@ std::optional<LoadedProgram> load_programs(std::span<const std::string> paths, D
     read_rule_text(joined, "<command line>", spec, diagnostics);
     for (std::size_t i = before; i < diagnostics.size(); ++i)
         if (diagnostics.items()[i].severity == Severity::error) return std::nullopt;
-    return compile_program(spec, diagnostics);
+    // The checker's findings and the compiler's are independent: report both in one run.
+    bool checked = check_program(spec, diagnostics);
+    auto program = compile_program(spec, diagnostics);
+    if (!checked) return std::nullopt;
+    return program;
 }
 }  // namespace qm::engine

@@ -1,0 +1,68 @@
+// engine/rule_checker.cpp: predicate arity consistency and unique rule names over a ProgramSpec.
+#include "engine/rule_checker.hpp"
+#include <map>
+
+namespace qm::engine {
+namespace {
+
+std::string at(const SourceLocation& w) {
+    return w.file + ":" + std::to_string(w.line) + ":" + std::to_string(w.column);
+}
+
+class Checker {
+public:
+    explicit Checker(Diagnostics& diagnostics) : diagnostics_(diagnostics) {}
+
+    // The first use of a predicate fixes its arity (as the thesis' relations have fixed places,
+    // e.g. (contact ?a ?b) in Table 3.1); later uses must agree.
+    void use(const AtomSpec& a) {
+        auto [it, fresh] = first_use_.try_emplace(a.predicate, &a);
+        if (fresh || it->second->args.size() == a.args.size()) return;
+        ok_ = false;
+        diagnostics_.error(a.where, "predicate '" + a.predicate + "' is used here with " + std::to_string(a.args.size()) +
+                                        " argument(s) but with " + std::to_string(it->second->args.size()) +
+                                        " at " + at(it->second->where));
+    }
+
+    void rule(const RuleSpec& r) {
+        auto [it, fresh] = first_rule_.try_emplace(r.name, &r);
+        if (!fresh) {
+            ok_ = false;
+            diagnostics_.error(r.where, "rule '" + r.name + "' is already defined at " + at(it->second->where));
+        }
+        for (const ConditionSpec& c : r.conditions) {
+            switch (c.kind) {
+                case ConditionSpec::Kind::atom:
+                case ConditionSpec::Kind::negation:
+                case ConditionSpec::Kind::aggregate: use(c.atom); break;
+                case ConditionSpec::Kind::for_all:
+                case ConditionSpec::Kind::exists:
+                    for (const AtomSpec& a : c.atoms) use(a);
+                    break;
+                case ConditionSpec::Kind::test: break;
+            }
+        }
+        for (const ConsequentSpec& c : r.consequents)
+            if (c.kind != ConsequentSpec::Kind::falsity) use(c.atom);
+    }
+
+    [[nodiscard]] bool ok() const { return ok_; }
+
+private:
+    Diagnostics& diagnostics_;
+    std::map<std::string, const AtomSpec*> first_use_;
+    std::map<std::string, const RuleSpec*> first_rule_;
+    bool ok_ = true;
+};
+
+}  // namespace
+
+bool check_program(const ProgramSpec& spec, Diagnostics& diagnostics) {
+    Checker checker(diagnostics);
+    for (const AtomSpec& f : spec.facts) checker.use(f);
+    for (const AtomSpec& a : spec.assumptions) checker.use(a);
+    for (const RuleSpec& r : spec.rules) checker.rule(r);
+    return checker.ok();
+}
+
+}  // namespace qm::engine

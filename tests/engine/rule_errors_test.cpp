@@ -1,0 +1,52 @@
+// tests/engine/rule_errors_test.cpp: golden diagnostics. Every tests/engine/errors/NAME.rules is
+// loaded with load_program() (reader, checker, compiler, stratifier: the path `qm-atms run` takes)
+// and the printed diagnostics, with the directory stripped from file names, must equal NAME.err
+// exactly. One case per error class of docs/RULES.md "## Error messages". Setting
+// QM_WRITE_GOLDEN=1 rewrites the .err files (review the diff before committing).
+#include "engine/rule_compiler.hpp"
+#include <doctest/doctest.h>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace qm::engine;
+
+namespace {
+std::string slurp(const std::filesystem::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+std::string strip(std::string text, const std::string& prefix) {
+    for (std::size_t at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at))
+        text.erase(at, prefix.size());
+    return text;
+}
+}  // namespace
+
+TEST_CASE("engine/rule_errors: every golden case gives exactly its expected diagnostics") {
+    std::filesystem::path dir = std::string(QM_SOURCE_DIR) + "/tests/engine/errors";
+    bool write = std::getenv("QM_WRITE_GOLDEN") != nullptr;
+    std::size_t cases = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        if (entry.path().extension() != ".rules") continue;
+        CAPTURE(entry.path().filename().string());
+        qm::Diagnostics d;
+        std::optional<LoadedProgram> p;
+        CHECK_NOTHROW(p = load_program(entry.path().lexically_normal().string(), d));
+        CHECK(!p.has_value());  // every case is an erroneous program
+        CHECK(d.has_errors());
+        std::ostringstream printed;
+        d.print(printed);
+        std::string actual = strip(printed.str(), dir.lexically_normal().string() + "/");
+        std::filesystem::path golden = entry.path();
+        golden.replace_extension(".err");
+        if (write) std::ofstream(golden) << actual;
+        REQUIRE(std::filesystem::exists(golden));
+        CHECK(actual == slurp(golden));
+        ++cases;
+    }
+    CHECK(cases >= 10);
+}
