@@ -47,6 +47,104 @@ using Args = std::span<const ValueId>;
 
 bool single(const std::vector<std::string>& d) { return d[0].size() == 1 && d[1].size() == 1; }
 
+// Every sign resolution of an ambiguous direction: each `?` becomes +, 0 and - (section 2.3:
+// "we resolve this ambiguity by branching").
+std::vector<std::string> resolutions(const std::string& v) {
+    std::vector<std::string> out{""};
+    for (char c : v) {
+        std::vector<std::string> next;
+        for (const auto& p : out) {
+            if (c != '?') next.push_back(p + c);
+            else
+                for (char s : {'+', '0', '-'}) next.push_back(p + s);
+        }
+        out = std::move(next);
+    }
+    return out;
+}
+
+// Def 38 for an ambiguous v: the nearest rank over v's resolutions.
+int nearness_resolved(const std::string& v, const std::string& x) {
+    int best = 5;
+    for (const auto& r : resolutions(v)) best = std::min(best, nearness(r, x));
+    return best;
+}
+
+// Def 14 generalised per axis (Table 2.1): the quarter turn of v about each axis with a non-zero
+// sign in r, summed qualitatively. A quarter turn about axis e moves the part of v perpendicular
+// to e onto e x v (Table 2.4 at 90 degrees, less the unchanged axial part, which is not
+// perpendicular to v); in 2-D this is (x y) -> (-y x) for (+) and (y -x) for (-). A zero rotation
+// turns nothing: the zero vector, so no half-plane test on it holds.
+std::string rotate_90(const std::string& v, const std::string& r) {
+    std::string out(v.size(), '0');
+    auto add = [&](std::size_t i, char s) { out[i] = sign_sum(out[i], s); };
+    if (v.size() == 2) {
+        if (r[0] == '0') return out;
+        const char ax = r[0] == '+' ? sign_neg(v[1]) : v[1];
+        const char ay = r[0] == '+' ? v[0] : sign_neg(v[0]);
+        add(0, ax);
+        add(1, ay);
+        return out;
+    }
+    // e_x x v = (0, -vz, vy); e_y x v = (vz, 0, -vx); e_z x v = (-vy, vx, 0), each scaled by r's sign.
+    const char x = v[0], y = v[1], z = v[2];
+    auto scaled = [](char rs, char s) { return rs == '+' ? s : rs == '-' ? sign_neg(s) : '0'; };
+    add(1, scaled(r[0], sign_neg(z)));
+    add(2, scaled(r[0], y));
+    add(0, scaled(r[1], z));
+    add(2, scaled(r[1], sign_neg(x)));
+    add(0, scaled(r[2], sign_neg(y)));
+    add(1, scaled(r[2], x));
+    return out;
+}
+
+// The vectors a value stands for: a direction is one vector; a set of directions is several,
+// read as their intersection by the half-plane tests (a corner's potential contacts, Def 26).
+std::string vectors(const ValueTable& v, ValueId x, const char* name, std::vector<std::string>& out) {
+    const Value& val = v.value(x);
+    if (val.kind == ValueKind::direction) {
+        out.push_back(val.text);
+        return {};
+    }
+    if (val.kind == ValueKind::set && !val.elements.empty()) {
+        for (ValueId e : val.elements) {
+            if (v.value(e).kind != ValueKind::direction) break;
+            out.push_back(v.value(e).text);
+        }
+        if (out.size() == val.elements.size()) return {};
+    }
+    return std::string("'") + name + "' expects a direction or a non-empty set of directions, not " + v.print(x);
+}
+
+// Applies f to every vector of a direction or set value, giving a value of the same shape.
+template <class F>
+BuiltinResult map_vectors(ValueTable& v, ValueId x, const char* name, F f) {
+    std::vector<std::string> in;
+    if (auto e = vectors(v, x, name, in); !e.empty()) return BuiltinResult::fail(e);
+    if (v.value(x).kind == ValueKind::direction) return BuiltinResult::of(v.direction(f(in[0])));
+    std::vector<ValueId> out;
+    for (const auto& s : in) out.push_back(v.direction(f(s)));
+    return BuiltinResult::of(v.set(std::move(out)));
+}
+
+// A half-plane test over direction-or-set arguments: holds iff it holds for every pair of
+// vectors (the intersection of the half planes). `none` inverts each pair: no pair passes.
+template <class P>
+BuiltinFn half_plane_test(const char* name, P pass, bool none = false) {
+    return [name, pass, none](ValueTable& v, Args a) -> BuiltinResult {
+        std::vector<std::string> xs, ys;
+        if (auto e = vectors(v, a[0], name, xs); !e.empty()) return BuiltinResult::fail(e);
+        if (auto e = vectors(v, a[1], name, ys); !e.empty()) return BuiltinResult::fail(e);
+        for (const auto& x : xs)
+            for (const auto& y : ys) {
+                if (x.size() != y.size())
+                    return BuiltinResult::fail(std::string("'") + name + "' expects directions of one dimension");
+                if (pass(dot_sign(x, y)) == none) return BuiltinResult::truth(false);
+            }
+        return BuiltinResult::truth(true);
+    };
+}
+
 // The sign strings of args, all directions of one dimension; else an error text.
 std::string directions(const ValueTable& v, Args a, const char* name, std::vector<std::string>& out) {
     for (ValueId x : a) {
@@ -118,9 +216,9 @@ void register_qualitative_builtins(BuiltinRegistry& r) {
               if (!single(d)) return BuiltinResult::fail("'sign-product' expects single signs like (+)");
               return BuiltinResult::of(v.direction(std::string(1, sign_product(d[0][0], d[1][0]))));
           }));
-    r.add("neg", K::function, 1, 1, on_directions("neg", [](ValueTable& v, const std::vector<std::string>& d) {
-              return BuiltinResult::of(v.direction(neg(d[0])));
-          }));
+    r.add("neg", K::function, 1, 1, [](ValueTable& v, Args a) {
+        return map_vectors(v, a[0], "neg", [](const std::string& x) { return neg(x); });
+    });
     r.add("dot-sign", K::function, 2, 2, on_directions("dot-sign", [](ValueTable& v, const std::vector<std::string>& d) {
               return BuiltinResult::of(v.direction(std::string(1, dot_sign(d[0], d[1]))));
           }));
@@ -129,39 +227,42 @@ void register_qualitative_builtins(BuiltinRegistry& r) {
               for (std::size_t i = 0; i < out.size(); ++i) out[i] = sign_sum(d[0][i], d[1][i]);
               return BuiltinResult::of(v.direction(out));
           }));
-    r.add("qsum-cancel", K::function, 2, 2, on_directions("qsum-cancel", [](ValueTable& v, const std::vector<std::string>& d) {
-              std::string out = d[0];
-              for (std::size_t i = 0; i < out.size(); ++i) {
-                  char a = d[0][i], b = d[1][i];
-                  out[i] = (a == '+' && b == '-') || (a == '-' && b == '+') ? '0' : sign_sum(a, b);
-              }
-              return BuiltinResult::of(v.direction(out));
-          }));
     r.add("rotate-90", K::function, 2, 2, [](ValueTable& v, Args a) {
-        const Value& x = v.value(a[0]);
         const Value& rot = v.value(a[1]);
-        if (x.kind != ValueKind::direction || rot.kind != ValueKind::direction || x.text.size() != 2 || rot.text.size() != 1)
-            return BuiltinResult::fail("'rotate-90' expects a 2-D direction and a rotation (+) or (-); 3-D is not supported");
-        if (rot.text[0] != '+' && rot.text[0] != '-')
-            return BuiltinResult::fail("'rotate-90' needs the rotation (+) or (-)");
-        std::string out = rot.text[0] == '+' ? std::string{sign_neg(x.text[1]), x.text[0]}
-                                             : std::string{x.text[1], sign_neg(x.text[0])};
-        return BuiltinResult::of(v.direction(out));
+        if (rot.kind != ValueKind::direction || rot.text.find('?') != std::string::npos)
+            return BuiltinResult::fail("'rotate-90' expects a rotation like (+), (0) or (+ 0 -) as its second argument");
+        std::vector<std::string> xs;
+        if (auto e = vectors(v, a[0], "rotate-90", xs); !e.empty()) return BuiltinResult::fail(e);
+        for (const auto& x : xs)
+            if (!((x.size() == 2 && rot.text.size() == 1) || (x.size() == 3 && rot.text.size() == 3)))
+                return BuiltinResult::fail("'rotate-90' expects a 2-D direction with a rotation (r), or a 3-D direction "
+                                           "with a rotation (rx ry rz)");
+        const std::string r = rot.text;
+        return map_vectors(v, a[0], "rotate-90", [&r](const std::string& x) { return rotate_90(x, r); });
     });
     r.add("nearness", K::function, 2, 2, on_directions("nearness", [](ValueTable& v, const std::vector<std::string>& d) {
-              return BuiltinResult::of(v.integer(nearness(d[0], d[1])));
+              return BuiltinResult::of(v.integer(nearness_resolved(d[0], d[1])));
           }));
     r.add("translations", K::function, 1, 1, direction_set("translations", false));
     r.add("rotations", K::function, 1, 1, direction_set("rotations", true));
     r.add("zero-translation", K::function, 1, 1, zero_direction("zero-translation", false));
     r.add("zero-rotation", K::function, 1, 1, zero_direction("zero-rotation", true));
-    r.add("half-plane", K::test, 2, 2, on_directions("half-plane", [](ValueTable&, const std::vector<std::string>& d) {
-              char s = dot_sign(d[0], d[1]);
-              return BuiltinResult::truth(s == '+' || s == '0');
+    r.add("half-plane", K::test, 2, 2, half_plane_test("half-plane", [](char s) { return s == '+' || s == '0'; }));
+    r.add("open-half-plane", K::test, 2, 2, half_plane_test("open-half-plane", [](char s) { return s == '+'; }));
+    r.add("outside-open-half-plane", K::test, 2, 2,
+          half_plane_test("outside-open-half-plane", [](char s) { return s == '+'; }, /*none=*/true));
+    r.add("cancel-ambiguous", K::function, 1, 1, on_directions("cancel-ambiguous", [](ValueTable& v, const std::vector<std::string>& d) {
+              std::string out = d[0];
+              for (char& c : out) c = c == '?' ? '0' : c;
+              return BuiltinResult::of(v.direction(out));
           }));
-    r.add("open-half-plane", K::test, 2, 2, on_directions("open-half-plane", [](ValueTable&, const std::vector<std::string>& d) {
-              return BuiltinResult::truth(open_half_plane(d[0], d[1]));
-          }));
+    r.add("set-add", K::function, 2, 2, [](ValueTable& v, Args a) {
+        const Value& s = v.value(a[0]);
+        if (s.kind != ValueKind::set) return BuiltinResult::fail("'set-add' expects a set first, not " + v.print(a[0]));
+        std::vector<ValueId> out = s.elements;
+        out.push_back(a[1]);
+        return BuiltinResult::of(v.set(std::move(out)));
+    });
     r.add("zero?", K::test, 1, 1, on_directions("zero?", [](ValueTable&, const std::vector<std::string>& d) {
               return BuiltinResult::truth(is_zero(d[0]));
           }));

@@ -3,16 +3,23 @@
 //             is a tuple of signs `(+ 0 - ?)`; a single sign is a 1-tuple.
 //   functions  sign-sum a b / sign-product a b (1-tuples; Tables 2.2 and 2.3), neg v, dot-sign a b
 //              (the sign of the qualitative dot product, a 1-tuple), qsum a b (component-wise sign
-//              sum), qsum-cancel a b (component-wise; opposite signs cancel to 0, the arithmetic of
-//              Law 5's same-cause cancellation), rotate-90 v r (Def 14, 2-D: r = (+) turns (x y)
-//              into (-y x), r = (-) into (y -x)), translations n / rotations n (Defs 1 and 4: every
-//              direction of the dimension, the zero one included; rotations have 1 component in 2-D
-//              and 3 in 3-D), zero-translation n, zero-rotation n, nearness v x (Def 38 rank 0..5).
+//              sum, associative, so it folds in aggregates), cancel-ambiguous v (every `?` becomes 0:
+//              applied to a qsum of forces with one cause it is Law 5's same-cause cancellation, since
+//              such a sum is ambiguous exactly where + and - met), rotate-90 v r (Def 14; 2-D: r = (+)
+//              turns (x y) into (-y x), r = (-) into (y -x); 3-D: per axis of r (Table 2.1), the
+//              quarter turns e x v summed; a zero rotation gives the zero vector), translations n /
+//              rotations n (Defs 1 and 4: every direction of the dimension, the zero one included;
+//              rotations have 1 component in 2-D and 3 in 3-D), zero-translation n, zero-rotation n,
+//              nearness v x (Def 38 rank 0..5; an ambiguous v takes the nearest of its resolutions),
+//              set-add s x (s with x added; to collect values in an aggregate).
 //   tests      half-plane a b (dot sign + or 0), open-half-plane a b (dot sign +; an ambiguous dot
-//              product counts as false: the liberal bias of section 7.3), zero? v, nonzero? v.
-// Interim:    the sign arithmetic is written here because QUAL's engine/sign.hpp family was not in the
-//             tree when this was written; these wrappers should call it once it is.
-// Errors:     wrong value kinds, mismatched dimensions, 3-D rotate-90, dimensions other than 2 and 3.
+//              product counts as false: the liberal bias of section 7.3), outside-open-half-plane a b
+//              (the negation of open-half-plane), zero? v, nonzero? v.
+//   sets       neg and rotate-90 map over a set of directions; the three half-plane tests take a
+//              direction or a set of directions in either place and hold iff they hold for every
+//              pair (outside-: for no pair), i.e. a set stands for the intersection of its elements'
+//              half planes (the potential contacts of two corners, Def 26).
+// Errors:     wrong value kinds, mismatched dimensions, a rotation of the wrong arity, dimensions other than 2 and 3.
 // Knows nothing of the ATMS and of laws: this is mathematics, not mechanics.
 #pragma once
 #include "engine/builtin_registry.hpp"

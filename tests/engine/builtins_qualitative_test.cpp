@@ -81,12 +81,68 @@ TEST_CASE("engine/builtins_qualitative: rotate-90 agrees with the real quarter-t
                 double rx = r == '+' ? -vy : vy, ry = r == '+' ? vx : -vx;
                 CHECK(text(apply("rotate-90", {dir({x, y}), dir({r})})) == values.print(dir({sign_of(rx), sign_of(ry)})));
             }
-    CHECK(!apply("rotate-90", {dir("+00"), dir("+")}).error.empty());
+    CHECK(!apply("rotate-90", {dir("+00"), dir("+")}).error.empty());  // a 3-D vector needs (rx ry rz)
+    CHECK(text(apply("rotate-90", {dir("+-"), dir("0")})) == "(0 0)");   // no rotation, no perpendicular
+}
+
+TEST_CASE("engine/builtins_qualitative: 3-D rotate-90 is the sign of the real cross product w x v") {
+    std::mt19937 rng(13);
+    auto all = apply("translations", {values.integer(3)});
+    const auto dirs = values.value(*all.value).elements;
+    for (ValueId v : dirs)
+        for (ValueId r : dirs) {
+            const std::string sv = values.value(v).text, sr = values.value(r).text;
+            const std::string got = values.value(*apply("rotate-90", {v, r}).value).text;
+            // Sample reals with these signs: every definite component must be the sign of every
+            // sample of w x v; a `?` must be justified by samples of both signs.
+            std::vector<std::set<char>> seen(3);
+            for (int i = 0; i < 300; ++i) {
+                double x = sample(sv[0], rng), y = sample(sv[1], rng), z = sample(sv[2], rng);
+                double a = sample(sr[0], rng), b = sample(sr[1], rng), c = sample(sr[2], rng);
+                const double cross[3] = {b * z - c * y, c * x - a * z, a * y - b * x};
+                for (int k = 0; k < 3; ++k) seen[k].insert(sign_of(cross[k]));
+            }
+            CAPTURE(sv);
+            CAPTURE(sr);
+            for (int k = 0; k < 3; ++k) {
+                if (got[k] == '?') CHECK(seen[k].size() > 1);
+                else CHECK(seen[k] == std::set<char>{got[k]});
+            }
+        }
+    // About z, the 3-D turn agrees with the 2-D one on the x-y plane.
+    CHECK(text(apply("rotate-90", {dir("+00"), dir("00+")})) == "(0 + 0)");
+    CHECK(text(apply("rotate-90", {dir("0+0"), dir("+00")})) == "(0 0 +)");  // y to z about x (Table 2.1)
+}
+
+TEST_CASE("engine/builtins_qualitative: a set of directions is the intersection of their half planes") {
+    const ValueId corner = values.set({dir("+-"), dir("--")});  // two potential contact normals
+    CHECK(apply("open-half-plane", {corner, dir("0-")}).holds);    // in both open half planes
+    CHECK(!apply("open-half-plane", {corner, dir("+-")}).holds);   // only in the first
+    CHECK(!apply("half-plane", {corner, dir("+-")}).holds);        // (- -).(+ -) is ambiguous
+    CHECK(apply("half-plane", {values.set({dir("+0"), dir("0-")}), dir("0-")}).holds);  // dots 0 and +
+    CHECK(!apply("open-half-plane", {values.set({dir("+0"), dir("0-")}), dir("0-")}).holds);
+    CHECK(apply("outside-open-half-plane", {corner, dir("0+")}).holds);
+    CHECK(!apply("outside-open-half-plane", {corner, dir("+-")}).holds);
+    CHECK(text(apply("neg", {corner})) == values.print(values.set({dir("-+"), dir("++")})));
+    CHECK(text(apply("rotate-90", {corner, dir("+")})) == values.print(values.set({dir("++"), dir("+-")})));
+    CHECK(!apply("open-half-plane", {values.set({}), dir("0-")}).error.empty());
+    // For single vectors outside- is exactly the negation.
+    auto all = apply("translations", {values.integer(2)});
+    for (ValueId a : values.value(*all.value).elements)
+        for (ValueId b : values.value(*all.value).elements)
+            CHECK(apply("outside-open-half-plane", {a, b}).holds == !apply("open-half-plane", {a, b}).holds);
 }
 
 TEST_CASE("engine/builtins_qualitative: vector sums, negation, direction sets, nearness, zero tests") {
     CHECK(text(apply("qsum", {dir("+-0"), dir("++-")})) == "(+ ? -)");
-    CHECK(text(apply("qsum-cancel", {dir("+-0"), dir("-+-")})) == "(0 0 -)");
+    CHECK(text(apply("cancel-ambiguous", {dir("+?-0")})) == "(+ 0 - 0)");
+    // Law 5 as a fold: qsum is associative, so a same-cause sum cancels in any order.
+    for (auto order : {std::vector<std::string>{"+0", "+0", "-+"}, {"-+", "+0", "+0"}, {"+0", "-+", "+0"}}) {
+        ValueId acc = dir("00");
+        for (const auto& d : order) acc = *apply("qsum", {acc, dir(d)}).value;
+        CHECK(text(apply("cancel-ambiguous", {acc})) == "(0 +)");
+    }
+    CHECK(text(apply("set-add", {values.set({dir("+")}), dir("-")})) == values.print(values.set({dir("+"), dir("-")})));
     CHECK(text(apply("neg", {dir("+0-?")})) == "(- 0 + ?)");
     CHECK(text(apply("dot-sign", {dir("+-"), dir("+-")})) == "(+)");
     CHECK(values.value(*apply("rotations", {values.integer(2)}).value).elements.size() == 3);
@@ -103,6 +159,10 @@ TEST_CASE("engine/builtins_qualitative: vector sums, negation, direction sets, n
     CHECK(text(apply("nearness", {dir("+0"), dir("0+")})) == "3");
     CHECK(text(apply("nearness", {dir("+0"), dir("--")})) == "4");
     CHECK(text(apply("nearness", {dir("+0"), dir("-0")})) == "5");
+    // An ambiguous v branches: the nearest rank over its resolutions (+ 0), (0 0), (- 0).
+    CHECK(text(apply("nearness", {dir("?0"), dir("-0")})) == "0");
+    CHECK(text(apply("nearness", {dir("?0"), dir("00")})) == "0");
+    CHECK(text(apply("nearness", {dir("?0"), dir("0+")})) == "3");
     CHECK(!apply("qsum", {dir("+"), dir("++")}).error.empty());
     CHECK(!apply("neg", {values.symbol("up")}).error.empty());
 }
