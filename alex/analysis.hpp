@@ -33,6 +33,7 @@ struct AnalysisOptions {
     std::filesystem::path rules_directory;  // every *.rules file directly in it, loaded in name order
     std::vector<Motion> given;              // `--given`: current motions added to every situation
     std::vector<QueryFact> without;         // `--without`: contacts/forces taken away everywhere
+    std::size_t combination_limit = 100000; // per chain: stop enumerating after this many (--limit)
 };
 
 // Free directions of one object (zero included), canonical order.
@@ -78,6 +79,7 @@ struct Derivation {
     std::string source;                    // "rules/motion_transfer.rules:12", or the scene's file:line for a leaf
     std::vector<std::string> bindings;     // "?o = block", in the rule's slot order
     std::vector<Derivation> from;          // antecedents
+    bool shown_above = false;              // derived earlier in the same tree: not repeated
     friend bool operator==(const Derivation&, const Derivation&) = default;
 };
 
@@ -117,8 +119,9 @@ public:
     [[nodiscard]] std::optional<SituationResult> with_given(std::size_t situation, std::span<const Motion> given,
                                                             Diagnostics& diagnostics);
 
+    struct State;  // opaque (alex/detail/analysis_state.hpp)
+
 private:
-    struct State;
     explicit Analysis(std::unique_ptr<State> state);
     friend std::optional<Analysis> analyse(const Scene&, const AnalysisOptions&, Diagnostics&);
     std::unique_ptr<State> state_;

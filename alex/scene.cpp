@@ -38,6 +38,7 @@ ObjectId Scene::owner(SurfaceId s) const {
 bool operator==(const Scene& a, const Scene& b) {
     return a.name == b.name && a.dimensions == b.dimensions && same_table(a.objects, b.objects) &&
            same_table(a.surfaces, b.surfaces) && same_table(a.causes, b.causes) && a.forces == b.forces &&
+           a.linkages == b.linkages &&
            a.situations == b.situations;
 }
 

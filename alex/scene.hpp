@@ -46,15 +46,32 @@ using ObjectId = Id<struct ObjectTag>;
 using SurfaceId = Id<struct SurfaceTag>;
 using CauseId = Id<struct CauseTag>;
 
+// A convex corner (Definition 18) where two of its object's surfaces meet: a surface of zero extent
+// with an origin direction but no normal (section 3.1.1).
+struct CornerSides {
+    SurfaceId first, second;
+    friend bool operator==(const CornerSides&, const CornerSides&) = default;
+};
+
 struct Surface {
     std::string name;
     ObjectId object;    // the owner
-    Direction normal;   // outward surface normal, e.g. (0 +) for a top face
+    Direction normal;   // outward surface normal, e.g. (0 +) for a top face; empty for a corner
     Direction origin;   // from the surface to the owner's centre of rotation; all-zero = none
+    std::optional<CornerSides> corner;  // set <=> this is a corner (Corners section)
     SourceLocation where;
+    [[nodiscard]] bool is_corner() const noexcept { return corner.has_value(); }
     friend bool operator==(const Surface& a, const Surface& b) {
-        return a.name == b.name && a.object == b.object && a.normal == b.normal && a.origin == b.origin;
+        return a.name == b.name && a.object == b.object && a.normal == b.normal && a.origin == b.origin &&
+               a.corner == b.corner;
     }
+};
+
+// Two objects that are one body in two kinematic pairs (Definition 21: parts on one shaft).
+struct Linkage {
+    ObjectId first, second;
+    SourceLocation where;
+    friend bool operator==(const Linkage& a, const Linkage& b) { return a.first == b.first && a.second == b.second; }
 };
 
 struct Object {
@@ -124,6 +141,7 @@ struct Scene {
     IdVector<SurfaceId, Surface> surfaces;  // in source order
     IdVector<CauseId, Cause> causes;
     std::vector<Force> forces;              // scene-level (globally active) forces
+    std::vector<Linkage> linkages;          // Linkages section
     std::vector<Situation> situations;
     SourceLocation where;
 

@@ -245,7 +245,7 @@ private:
             return;
         }
         if (!owner || !normal || !origin) return;
-        Surface s{name, *owner, *normal, *origin, cx_.where(e.name)};
+        Surface s{name, *owner, *normal, *origin, std::nullopt, cx_.where(e.name)};
         scene_.objects[*owner].surfaces.push_back(scene_.surfaces.push_back(std::move(s)));
     }
 

@@ -2,6 +2,7 @@
 // status: 0 success, 2 bad input, 1 internal error (STYLE.md section 6).
 #include "qm/assert.hpp"
 #include "run_command.hpp"
+#include "scene_command.hpp"
 #include <exception>
 #include <iostream>
 #include <string>
@@ -10,7 +11,7 @@
 namespace {
 
 constexpr const char* usage =
-    "usage: qm-atms SCENE.def [options]          analyse a scene (thesis chapter 6)\n"
+    "usage: qm-atms SCENE.def [options]          analyse a scene (thesis chapters 6-7)\n"
     "       qm-atms run PROGRAM.rules [--why 'FACT'] [--json]\n"
     "       qm-atms --help\n";
 
@@ -25,15 +26,15 @@ int main(int argc, char** argv) {
             return 2;
         }
         if (args[0] == "--help" || args[0] == "-h") {
-            std::cout << usage << '\n' << qm::cli::run_usage();
+            std::cout << usage << '\n' << qm::cli::scene_usage() << '\n' << qm::cli::run_usage();
             return 0;
         }
         if (args[0] == "run") {
             doing = "running " + (args.size() > 1 ? args[1] : std::string("a rule program"));
             return qm::cli::run_command(std::span<const std::string>(args).subspan(1), std::cout, std::cerr);
         }
-        std::cerr << "qm-atms: scene analysis: not built yet\n";
-        return 2;
+        doing = "analysing " + args[0];
+        return qm::cli::scene_command(args, std::cin, std::cout, std::cerr);
     } catch (const qm::InternalError& e) {
         std::cerr << "qm-atms: internal error: " << e.what() << " (while " << doing << ")\n";
         return 1;

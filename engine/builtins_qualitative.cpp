@@ -256,6 +256,16 @@ void register_qualitative_builtins(BuiltinRegistry& r) {
               for (char& c : out) c = c == '?' ? '0' : c;
               return BuiltinResult::of(v.direction(out));
           }));
+    r.add("qsum-of", K::function, 1, 1, [](ValueTable& v, Args a) {
+        std::vector<std::string> xs;
+        if (auto e = vectors(v, a[0], "qsum-of", xs); !e.empty()) return BuiltinResult::fail(e);
+        std::string out(xs[0].size(), '0');
+        for (const auto& x : xs) {
+            if (x.size() != out.size()) return BuiltinResult::fail("'qsum-of' expects directions of one dimension");
+            for (std::size_t i = 0; i < out.size(); ++i) out[i] = sign_sum(out[i], x[i]);
+        }
+        return BuiltinResult::of(v.direction(out));
+    });
     r.add("set-add", K::function, 2, 2, [](ValueTable& v, Args a) {
         const Value& s = v.value(a[0]);
         if (s.kind != ValueKind::set) return BuiltinResult::fail("'set-add' expects a set first, not " + v.print(a[0]));

@@ -66,19 +66,19 @@ void Engine::assume_fact(FactId f, atms::InformantId why, std::span<const atms::
     atms_.justify(why, ants, fact_nodes_[f].node);
 }
 
-FactId Engine::add_premise(ValueId predicate, std::span<const ValueId> args) {
+FactId Engine::add_premise(ValueId predicate, std::span<const ValueId> args, SourceLocation where) {
     QM_REQUIRE(!closed_world_used_, "premises cannot be added after `not` or an aggregate was evaluated");
     FactId f = intern_fact(predicate, args);
-    Firing why{Firing::Kind::premise, std::nullopt, {}, std::nullopt, SourceLocation{"<api>", 1, 1}};
+    Firing why{Firing::Kind::premise, std::nullopt, {}, std::nullopt, std::move(where)};
     atms_.justify(new_firing(std::move(why)), std::span<const atms::NodeId>{}, fact_nodes_[f].node);
     note_if_in(f);
     return f;
 }
 
-FactId Engine::add_assumption(ValueId predicate, std::span<const ValueId> args) {
+FactId Engine::add_assumption(ValueId predicate, std::span<const ValueId> args, SourceLocation where) {
     QM_REQUIRE(!closed_world_used_, "assumptions cannot be added after `not` or an aggregate was evaluated");
     FactId f = intern_fact(predicate, args);
-    Firing why{Firing::Kind::assumption, std::nullopt, {}, std::nullopt, SourceLocation{"<api>", 1, 1}};
+    Firing why{Firing::Kind::assumption, std::nullopt, {}, std::nullopt, std::move(where)};
     assume_fact(f, new_firing(std::move(why)), {});
     note_if_in(f);
     return f;

@@ -53,8 +53,9 @@ public:
     [[nodiscard]] const ValueTable& values() const noexcept { return values_; }
     // Pre: predicate is a symbol; no rule with a negation or aggregate has been evaluated yet
     // (a closed world, once used, must not grow: docs/RULES.md "## Semantics").
-    FactId add_premise(ValueId predicate, std::span<const ValueId> args);
-    FactId add_assumption(ValueId predicate, std::span<const ValueId> args);
+    // `where` is what explanations print as the fact's origin (e.g. the scene line it came from).
+    FactId add_premise(ValueId predicate, std::span<const ValueId> args, SourceLocation where = {"<api>", 1, 1});
+    FactId add_assumption(ValueId predicate, std::span<const ValueId> args, SourceLocation where = {"<api>", 1, 1});
 
     // ---- running --------------------------------------------------------------------------------
     // Runs every stratum to quiescence; `not` and aggregates are decided generically (a fact whose

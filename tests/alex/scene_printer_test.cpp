@@ -35,7 +35,7 @@ Scene random_scene(std::mt19937& rng) {
         // Surfaces are grouped by owner in increasing id order, as the reader assigns them.
         const ObjectId o{static_cast<std::uint32_t>(std::min(n_obj - 1, i * n_obj / std::max(1, n_surf)))};
         const SurfaceId id = s.surfaces.push_back(
-            {"s-" + std::to_string(i), o, dir(s.translation_arity(), true), dir(s.translation_arity(), false), {}});
+            {"s-" + std::to_string(i), o, dir(s.translation_arity(), true), dir(s.translation_arity(), false), std::nullopt, {}});
         s.objects[o].surfaces.push_back(id);
     }
     auto pattern = [&](std::size_t n) {

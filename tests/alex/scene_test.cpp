@@ -32,8 +32,8 @@ TEST_CASE("alex/scene: lookups and ownership") {
     Scene s;
     const ObjectId a = s.objects.push_back({"a", "rigid-ob", {}, {}, {}, {}});
     const ObjectId b = s.objects.push_back({"b", "rigid-ob", {}, {}, {}, {}});
-    const SurfaceId p = s.surfaces.push_back({"p", a, {Sign::zero, Sign::plus}, {Sign::zero, Sign::minus}, {}});
-    const SurfaceId q = s.surfaces.push_back({"q", b, {Sign::zero, Sign::minus}, {Sign::zero, Sign::plus}, {}});
+    const SurfaceId p = s.surfaces.push_back({"p", a, {Sign::zero, Sign::plus}, {Sign::zero, Sign::minus}, std::nullopt, {}});
+    const SurfaceId q = s.surfaces.push_back({"q", b, {Sign::zero, Sign::minus}, {Sign::zero, Sign::plus}, std::nullopt, {}});
     s.objects[a].surfaces.push_back(p);
     s.objects[b].surfaces.push_back(q);
     CHECK(s.find_object("b") == b);

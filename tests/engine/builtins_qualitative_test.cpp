@@ -126,6 +126,8 @@ TEST_CASE("engine/builtins_qualitative: a set of directions is the intersection 
     CHECK(text(apply("neg", {corner})) == values.print(values.set({dir("-+"), dir("++")})));
     CHECK(text(apply("rotate-90", {corner, dir("+")})) == values.print(values.set({dir("++"), dir("+-")})));
     CHECK(!apply("open-half-plane", {values.set({}), dir("0-")}).error.empty());
+    CHECK(text(apply("qsum-of", {corner})) == "(? -)");
+    CHECK(text(apply("qsum-of", {dir("+0")})) == "(+ 0)");
     // For single vectors outside- is exactly the negation.
     auto all = apply("translations", {values.integer(2)});
     for (ValueId a : values.value(*all.value).elements)

@@ -1,0 +1,48 @@
+// alex/detail/analysis_state.hpp (internal to alex/)
+// Provides:   Analysis::State, shared by analysis.cpp (building and solving) and why_query.cpp
+//             (explanations): the engine that holds the laws' labels, the scene's facts, each
+//             situation's context run and results, and each object's Law 1 choice sets.
+// Ownership:  owned by Analysis through a unique_ptr; the SceneFacts refer into scene and engine,
+//             which therefore never move while the State lives.
+#pragma once
+#include "alex/analysis.hpp"
+#include "alex/motion_selection.hpp"
+#include "alex/scene_facts.hpp"
+#include "engine/engine.hpp"
+#include "engine/rule_compiler.hpp"
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace qm::alex {
+
+struct Analysis::State {
+    Scene scene;
+    AnalysisOptions options;
+    engine::LoadedProgram program;            // pristine, to rebuild an engine (with_given)
+    std::unique_ptr<engine::Engine> engine;
+    std::unique_ptr<SceneFacts> facts;
+    IdVector<ObjectId, ObjectChoices> choices;
+    std::vector<engine::ContextRun> runs;     // by situation, 0-based
+    std::vector<SituationResult> results;     // by situation, 0-based
+
+    // Runs the laws in situation s (1-based) less `without`; nullopt if they report errors.
+    [[nodiscard]] std::optional<engine::ContextRun> run(std::size_t s, std::span<const QueryFact> without,
+                                                        Diagnostics& diagnostics);
+    // Reads freedom, motions and stability of situation s in its context environment env.
+    [[nodiscard]] SituationResult read(std::size_t s, atms::EnvId env);
+    // run, then read.
+    [[nodiscard]] std::optional<SituationResult> solve(std::size_t s, std::span<const QueryFact> without,
+                                                       Diagnostics& diagnostics);
+    [[nodiscard]] bool holds(std::string_view predicate, std::span<const engine::ValueId> args, atms::EnvId env);
+    [[nodiscard]] Nearness nearness(ObjectId o, atms::EnvId env);
+    // The objects in contact in env (through the situation's contact items) and the linkages.
+    [[nodiscard]] std::vector<std::pair<ObjectId, ObjectId>> pairs(std::size_t s, atms::EnvId env) const;
+};
+
+// Builds a State: loads nothing (program is given), asserts the scene, runs every situation.
+// nullptr (with diagnostics) if the laws cannot be evaluated for this scene.
+[[nodiscard]] std::unique_ptr<Analysis::State> build_state(const Scene& scene, const AnalysisOptions& options,
+                                                           const engine::LoadedProgram& program,
+                                                           Diagnostics& diagnostics);
+}  // namespace qm::alex

@@ -1,0 +1,284 @@
+// cli/scene_command.cpp: `qm-atms SCENE.def` (thesis chapters 6-7), its options and the interactive mode.
+#include "scene_command.hpp"
+#include "alex/analysis.hpp"
+#include "alex/result_printer.hpp"
+#include "alex/scene_parser.hpp"
+#include "rules_location.hpp"
+#include <charconv>
+#include <iostream>
+#include <optional>
+#include <unistd.h>
+
+namespace qm::cli {
+namespace {
+
+struct SceneOptions {
+    std::string scene;
+    bool json = false;
+    bool interactive = false;
+    std::optional<std::string> why;
+    std::optional<std::size_t> situation;
+    std::vector<std::string> given, without;
+    std::optional<std::string> rules;
+    std::size_t limit = 100000;
+};
+
+std::optional<std::size_t> positive(const std::string& s) {
+    std::size_t v = 0;
+    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc{} || p != s.data() + s.size() || v == 0) return std::nullopt;
+    return v;
+}
+
+std::optional<SceneOptions> parse(std::span<const std::string> args, std::ostream& err) {
+    SceneOptions o;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        auto value = [&](const char* what) -> std::optional<std::string> {
+            if (i + 1 >= args.size()) {
+                err << "qm-atms: error: " << a << " needs " << what << '\n';
+                return std::nullopt;
+            }
+            return args[++i];
+        };
+        if (a == "--json") o.json = true;
+        else if (a == "-i" || a == "--interactive") o.interactive = true;
+        else if (a == "--why") {
+            auto v = value("a fact, e.g. --why 'Rotational-Motion (follower (-))'");
+            if (!v) return std::nullopt;
+            o.why = *v;
+        } else if (a == "--situation") {
+            auto v = value("a situation number (1 is the first)");
+            if (!v) return std::nullopt;
+            o.situation = positive(*v);
+            if (!o.situation) {
+                err << "qm-atms: error: --situation expects a number from 1, not '" << *v << "'\n";
+                return std::nullopt;
+            }
+        } else if (a == "--given") {
+            auto v = value("a motion, e.g. --given 'pallet (0 0) (+)'");
+            if (!v) return std::nullopt;
+            o.given.push_back(*v);
+        } else if (a == "--without") {
+            auto v = value("a contact or force, e.g. --without 'Contact tb block-b-m' or --without 'Force block'");
+            if (!v) return std::nullopt;
+            o.without.push_back(*v);
+        } else if (a == "--rules") {
+            auto v = value("a folder of .rules files");
+            if (!v) return std::nullopt;
+            o.rules = *v;
+        } else if (a == "--limit") {
+            auto v = value("a number of combinations");
+            if (!v) return std::nullopt;
+            auto n = positive(*v);
+            if (!n) {
+                err << "qm-atms: error: --limit expects a positive number, not '" << *v << "'\n";
+                return std::nullopt;
+            }
+            o.limit = *n;
+        } else if (!a.empty() && a[0] == '-') {
+            err << "qm-atms: error: unknown option '" << a << "'\n";
+            return std::nullopt;
+        } else if (o.scene.empty()) {
+            o.scene = a;
+        } else {
+            err << "qm-atms: error: more than one scene given ('" << o.scene << "', '" << a << "')\n";
+            return std::nullopt;
+        }
+    }
+    if (o.scene.empty()) {
+        err << "qm-atms: error: no scene given\n";
+        return std::nullopt;
+    }
+    if (o.interactive && o.why) {
+        err << "qm-atms: error: -i answers queries itself: give --why or -i, not both\n";
+        return std::nullopt;
+    }
+    return o;
+}
+
+// The interactive mode: queries against the loaded analysis, without reloading anything.
+class Session {
+public:
+    Session(alex::Analysis& analysis, bool json, std::ostream& out, std::ostream& err)
+        : analysis_(analysis), json_(json), out_(out), err_(err) {}
+
+    void run(std::istream& in) {
+        const bool tty = isatty(STDIN_FILENO) && &in == &std::cin;
+        std::string line;
+        if (tty) out_ << "qm-atms: " << analysis_.scene().name << ", " << analysis_.situations().size()
+                      << " situation(s). Type help.\n";
+        for (;;) {
+            if (tty) out_ << "qm-atms[" << situation_ << "]> " << std::flush;
+            if (!std::getline(in, line)) break;
+            if (!command(trim(line))) break;
+            out_.flush();
+        }
+    }
+
+private:
+    static std::string trim(const std::string& s) {
+        const auto b = s.find_first_not_of(" \t\r");
+        if (b == std::string::npos) return {};
+        return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
+    }
+
+    bool command(const std::string& line) {
+        if (line.empty() || line[0] == '#') return true;
+        const auto space = line.find(' ');
+        const std::string verb = line.substr(0, space);
+        const std::string rest = space == std::string::npos ? std::string() : trim(line.substr(space + 1));
+        const alex::Scene& scene = analysis_.scene();
+        const alex::SituationResult& current = analysis_.situations()[situation_ - 1];
+        Diagnostics d;
+        if (verb == "quit" || verb == "exit") return false;
+        if (verb == "help") out_ << help;
+        else if (verb == "json") {
+            json_ = rest.empty() ? !json_ : rest == "on";
+            if (!rest.empty() && rest != "on" && rest != "off") err_ << "json: expected on or off\n";
+            out_ << "json " << (json_ ? "on" : "off") << '\n';
+        } else if (verb == "situation") {
+            auto n = positive(rest);
+            if (!n || *n > analysis_.situations().size())
+                err_ << "situation: expected a number from 1 to " << analysis_.situations().size() << '\n';
+            else situation_ = *n;
+        } else if (verb == "freedom" || verb == "motions") {
+            if (json_) {
+                alex::write_situation_json(out_, scene, current);
+                out_ << '\n';
+            } else if (verb == "freedom") alex::print_freedom(out_, scene, current);
+            else alex::print_motions(out_, scene, current);
+        } else if (verb == "why") {
+            auto q = alex::parse_query_fact(scene, rest, d, "why");
+            if (q)
+                if (auto w = analysis_.why(*q, situation_, d)) json_ ? alex::write_why_json(out_, *w) : alex::print_why(out_, *w);
+        } else if (verb == "given") {
+            auto m = alex::parse_given(scene, rest, d, "given");
+            if (m) show(analysis_.with_given(situation_, std::span<const alex::Motion>(&*m, 1), d));
+        } else if (verb == "whatif") {
+            std::vector<alex::QueryFact> without;
+            std::size_t from = 0;
+            std::string text = rest.rfind("without ", 0) == 0 ? rest.substr(8) : rest;
+            while (from <= text.size()) {
+                const auto semi = text.find(';', from);
+                const std::string part = trim(text.substr(from, semi == std::string::npos ? std::string::npos : semi - from));
+                if (auto q = alex::parse_query_fact(scene, part, d, "whatif")) without.push_back(*q);
+                if (semi == std::string::npos) break;
+                from = semi + 1;
+            }
+            if (!d.has_errors()) show(analysis_.what_if(situation_, without, d));
+        } else {
+            err_ << "unknown command '" << verb << "' (type help)\n";
+        }
+        d.print(err_);
+        return true;
+    }
+
+    void show(const std::optional<alex::SituationResult>& r) {
+        if (!r) return;
+        if (json_) {
+            alex::write_situation_json(out_, analysis_.scene(), *r);
+            out_ << '\n';
+        } else {
+            alex::print_situation(out_, analysis_.scene(), *r);
+        }
+    }
+
+    static constexpr const char* help =
+        "  situation N           ask about situation N from now on (1 is the first)\n"
+        "  freedom               the free directions of every object\n"
+        "  motions               every consistent combination of motions, and the stability verdict\n"
+        "  why FACT              why a motion or freedom holds or was ruled out, e.g.\n"
+        "                        why Rotational-Motion (follower (-))\n"
+        "  given OBJ TRANS ROT   the situation with a current motion given, e.g. given pallet (0 0) (+)\n"
+        "  whatif FACT[; FACT]   the situation with contacts or forces taken away, e.g.\n"
+        "                        whatif Contact tb block-b-m; Force block\n"
+        "  json [on|off]         answer in JSON (docs/OUTPUT.md)\n"
+        "  help, quit\n";
+
+    alex::Analysis& analysis_;
+    bool json_;
+    std::size_t situation_ = 1;
+    std::ostream& out_;
+    std::ostream& err_;
+};
+
+}  // namespace
+
+const char* scene_usage() noexcept {
+    return "usage: qm-atms SCENE.def [--json] [--why FACT [--situation N]] [--given 'OBJ TRANS ROT']...\n"
+           "                         [--without 'Contact A B' | 'Force OBJ']... [--rules DIR] [--limit N] [-i]\n"
+           "  prints, for every situation, the free directions, every consistent combination of motions\n"
+           "  and whether the structure is stable (thesis chapters 6-7)\n"
+           "  --json          the same as JSON (docs/OUTPUT.md)\n"
+           "  --why FACT      why a motion or freedom holds or was ruled out, e.g.\n"
+           "                  --why 'Rotational-Motion (follower (-))' (situation 1 unless --situation N)\n"
+           "  --given M       a current motion added to every situation, e.g. --given 'pallet (0 0) (+)'\n"
+           "  --without F     take a contact or force away in every situation (what if)\n"
+           "  --rules DIR     the folder of laws (default: the rules/ installed with qm-atms)\n"
+           "  --limit N       stop enumerating a chain's combinations after N (default 100000)\n"
+           "  -i              answer queries typed on standard input (type help)\n";
+}
+
+int scene_command(std::span<const std::string> args, std::istream& in, std::ostream& out, std::ostream& err) {
+    auto options = parse(args, err);
+    if (!options) {
+        err << scene_usage();
+        return 2;
+    }
+    Diagnostics d;
+    auto scene = alex::read_scene_file(options->scene, d);
+    if (!scene) {
+        d.print(err);
+        return 2;
+    }
+    alex::AnalysisOptions ao;
+    ao.combination_limit = options->limit;
+    for (const auto& g : options->given)
+        if (auto m = alex::parse_given(*scene, g, d, "--given")) ao.given.push_back(*m);
+    for (const auto& w : options->without)
+        if (auto q = alex::parse_query_fact(*scene, w, d, "--without")) {
+            if (q->kind != alex::QueryFact::Kind::contact && q->kind != alex::QueryFact::Kind::force)
+                d.error({"--without", 1, 1}, "expected 'Contact A B' or 'Force OBJ' to take away, but found '" + w + "'");
+            else ao.without.push_back(*q);
+        }
+    std::optional<alex::QueryFact> why;
+    if (options->why) why = alex::parse_query_fact(*scene, *options->why, d, "--why");
+    const std::size_t situations = scene->situations.size();
+    const std::size_t situation = options->situation.value_or(1);
+    if ((options->why || options->situation) && situation > situations)
+        d.error({"--situation", 1, 1}, "expected a situation from 1 to " + std::to_string(situations) + ", but found " +
+                                           std::to_string(situation));
+    if (options->rules) ao.rules_directory = *options->rules;
+    else if (auto dir = default_rules_directory()) ao.rules_directory = *dir;
+    else d.error({"--rules", 1, 1}, "expected the folder of laws: none installed beside qm-atms; give --rules DIR");
+    if (d.has_errors()) {
+        d.print(err);
+        return 2;
+    }
+    auto analysis = alex::analyse(*scene, ao, d);
+    if (!analysis) {
+        d.print(err);
+        return 2;
+    }
+    if (options->interactive) {
+        Session(*analysis, options->json, out, err).run(in);
+        return 0;
+    }
+    if (why) {
+        auto w = analysis->why(*why, situation, d);
+        if (!w) {
+            d.print(err);
+            return 2;
+        }
+        options->json ? alex::write_why_json(out, *w) : alex::print_why(out, *w);
+        return 0;
+    }
+    std::vector<alex::SituationResult> shown = analysis->situations();
+    if (options->situation) shown = {shown[situation - 1]};
+    options->json ? alex::write_analysis_json(out, analysis->scene(), shown)
+                  : alex::print_analysis(out, analysis->scene(), shown);
+    return 0;
+}
+
+}  // namespace qm::cli
