@@ -100,7 +100,7 @@ std::vector<std::pair<ObjectId, ObjectId>> Analysis::State::pairs(std::size_t s,
     std::vector<std::pair<ObjectId, ObjectId>> out;
     const atms::Environment& members = engine->atms().env(env);
     for (const SceneItem* item : facts->items(s))
-        if (item->kind == SceneItem::Kind::contact && members.contains(item->assumption))
+        if (item->kind == SceneItem::Kind::contact && (!item->assumption || members.contains(*item->assumption)))
             out.emplace_back(scene.owner(item->first), scene.owner(item->second));
     for (const Linkage& l : scene.linkages) out.emplace_back(l.first, l.second);
     return out;
@@ -167,7 +167,14 @@ std::unique_ptr<Analysis::State> build_state(const Scene& scene, const AnalysisO
     state->options = options;
     state->program = program;
     state->engine = std::make_unique<engine::Engine>(program.program, program.values);
-    state->facts = std::make_unique<SceneFacts>(state->scene, *state->engine, options.given);
+    Granularity granularity = Granularity::item;
+    if (options.granularity) granularity = *options.granularity;
+    else
+        for (const Situation& s : scene.situations)
+            if (s.contacts.size() + s.forces.size() + s.motions.size() + scene.forces.size() + options.given.size() >
+                AnalysisOptions::auto_item_limit)
+                granularity = Granularity::situation;
+    state->facts = std::make_unique<SceneFacts>(state->scene, *state->engine, options.given, granularity);
     // Run every situation first: the laws declare the choice sets of Law 1 as they fire.
     for (std::size_t s = 1; s <= state->scene.situations.size(); ++s) {
         auto run = state->run(s, options.without, diagnostics);
@@ -208,6 +215,16 @@ std::optional<SituationResult> Analysis::what_if(std::size_t situation, std::spa
         }
     std::vector<QueryFact> all = state_->options.without;
     all.insert(all.end(), without.begin(), without.end());
+    if (state_->facts->granularity() == Granularity::situation) {
+        // One assumption stands for the whole situation: analyse the smaller situation afresh.
+        auto state = state_->restricted(situation, all, {}, diagnostics);
+        if (!state) return std::nullopt;
+        SituationResult r = state->results.front();
+        r.index = situation;
+        r.notes.push_back("what-if: this scene is analysed one assumption per situation, so the smaller situation "
+                          "was analysed afresh");
+        return r;
+    }
     auto r = state_->solve(situation, all, diagnostics);
     if (r)
         r->notes.push_back("what-if: the monotonic laws' labels were reused; the rules with `not` or an aggregate "
@@ -220,15 +237,38 @@ std::optional<SituationResult> Analysis::with_given(std::size_t situation, std::
     QM_REQUIRE(situation >= 1 && situation <= state_->results.size(), "situation index out of range");
     // A given motion is a new assumption, and the closed world of the rules with `not` may not
     // grow once used: analyse the situation afresh with the motion added.
-    Scene changed = state_->scene;
-    for (const Motion& m : given) changed.situations[situation - 1].motions.push_back(m);
-    changed.situations = {changed.situations[situation - 1]};
-    auto state = build_state(changed, state_->options, state_->program, diagnostics);
+    auto state = state_->restricted(situation, {}, given, diagnostics);
     if (!state) return std::nullopt;
     SituationResult r = state->results.front();
     r.index = situation;
     r.notes.push_back("given motions are new assumptions: the situation was analysed afresh");
     return r;
+}
+
+std::unique_ptr<Analysis::State> Analysis::State::restricted(std::size_t s, std::span<const QueryFact> without,
+                                                             std::span<const Motion> given, Diagnostics& diagnostics,
+                                                             std::optional<Granularity> granularity) const {
+    Scene changed = scene;
+    Situation only = changed.situations[s - 1];
+    only.motions.insert(only.motions.end(), given.begin(), given.end());
+    auto taken = [&](auto pred) { return std::any_of(without.begin(), without.end(), pred); };
+    std::erase_if(only.contacts, [&](const Contact& c) {
+        return taken([&](const QueryFact& q) {
+            return q.kind == QueryFact::Kind::contact &&
+                   ((c.first == *q.first && c.second == *q.second) || (c.first == *q.second && c.second == *q.first));
+        });
+    });
+    std::erase_if(only.forces, [&](const Force& f) {
+        return taken([&](const QueryFact& q) { return q.kind == QueryFact::Kind::force && f.object == *q.object; });
+    });
+    std::erase_if(changed.forces, [&](const Force& f) {
+        return taken([&](const QueryFact& q) { return q.kind == QueryFact::Kind::force && f.object == *q.object; });
+    });
+    changed.situations = {only};
+    AnalysisOptions o = options;
+    o.without.clear();
+    o.granularity = granularity;
+    return build_state(changed, o, program, diagnostics);
 }
 
 std::uint64_t SituationResult::combination_count() const {

@@ -15,6 +15,7 @@
 //             into the Diagnostics (bad input, exit 2 at the CLI); API misuse throws qm::InternalError.
 // Knows no law of mechanics: every law comes from the rule files.
 #pragma once
+#include "alex/granularity.hpp"
 #include "alex/scene.hpp"
 #include "qm/diagnostics.hpp"
 #include "qm/id.hpp"
@@ -34,6 +35,9 @@ struct AnalysisOptions {
     std::vector<Motion> given;              // `--given`: current motions added to every situation
     std::vector<QueryFact> without;         // `--without`: contacts/forces taken away everywhere
     std::size_t combination_limit = 100000; // per chain: stop enumerating after this many (--limit)
+    // Empty: `item` when every situation has at most auto_item_limit items, else `situation`.
+    std::optional<Granularity> granularity;
+    static constexpr std::size_t auto_item_limit = 64;
 };
 
 // Free directions of one object (zero included), canonical order.

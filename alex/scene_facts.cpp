@@ -9,17 +9,32 @@ namespace qm::alex {
 namespace v = vocabulary;
 using engine::ValueId;
 
-SceneFacts::SceneFacts(const Scene& scene, engine::Engine& engine, std::span<const Motion> given)
-    : scene_(scene), engine_(engine) {
+SceneFacts::SceneFacts(const Scene& scene, engine::Engine& engine, std::span<const Motion> given,
+                       Granularity granularity)
+    : scene_(scene), engine_(engine), granularity_(granularity) {
     for (const Object& o : scene_.objects) object_symbols_.push_back(engine_.values().symbol(o.name));
     assert_premises();
-    for (const Force& f : scene_.forces) scene_forces_.push_back(add_force(f));
-    for (const Motion& m : given) given_.push_back(add_motion(m));
-    for (const Situation& s : scene_.situations) {
+    std::vector<std::size_t> all;
+    for (std::size_t s = 0; s < scene_.situations.size(); ++s) {
+        all.push_back(s);
+        if (granularity_ == Granularity::situation) {
+            // The driver's own assumption, "situation N holds"; the laws never mention it.
+            engine::FactId f = engine_.add_assumption(predicate("situation"), std::vector<ValueId>{engine_.values().integer(
+                                                                                   static_cast<std::int64_t>(s + 1))},
+                                                      scene_.situations[s].where);
+            situation_facts_.push_back(f);
+            situation_assumptions_.push_back(*engine_.assumption(f));
+        }
+    }
+    for (const Force& f : scene_.forces) scene_forces_.push_back(add_force(f, all));
+    for (const Motion& m : given) given_.push_back(add_motion(m, all));
+    for (std::size_t i = 0; i < scene_.situations.size(); ++i) {
+        const Situation& s = scene_.situations[i];
+        const std::size_t only[] = {i};
         std::vector<std::size_t> mine;
-        for (const Contact& c : s.contacts) mine.push_back(add_contact(c));
-        for (const Force& f : s.forces) mine.push_back(add_force(f));
-        for (const Motion& m : s.motions) mine.push_back(add_motion(m));
+        for (const Contact& c : s.contacts) mine.push_back(add_contact(c, only));
+        for (const Force& f : s.forces) mine.push_back(add_force(f, only));
+        for (const Motion& m : s.motions) mine.push_back(add_motion(m, only));
         situation_items_.push_back(std::move(mine));
     }
 }
@@ -74,10 +89,20 @@ void SceneFacts::assert_premises() {
 }
 
 std::size_t SceneFacts::add_item(SceneItem::Kind kind, std::string text, SourceLocation where, std::string_view pred,
-                                 std::vector<ValueId> args) {
+                                 std::vector<ValueId> args, std::span<const std::size_t> situations) {
     std::vector<ValueId> key{predicate(pred)};
     key.insert(key.end(), args.begin(), args.end());
-    if (auto it = item_by_fact_.find(key); it != item_by_fact_.end()) return it->second;
+    auto it = item_by_fact_.find(key);
+    if (granularity_ == Granularity::situation) {
+        // The item holds in each situation that mentions it.
+        for (std::size_t s : situations)
+            engine_.add_fact(predicate(pred), args, std::span<const engine::FactId>(&situation_facts_[s], 1), where);
+        if (it != item_by_fact_.end()) return it->second;
+        items_.push_back(SceneItem{kind, std::move(text), std::move(where), std::nullopt, std::nullopt, {}, {}});
+        item_by_fact_[key] = items_.size() - 1;
+        return items_.size() - 1;
+    }
+    if (it != item_by_fact_.end()) return it->second;
     engine::FactId f = engine_.add_assumption(predicate(pred), args, where);
     auto a = engine_.assumption(f);
     QM_ASSERT(a.has_value(), "an asserted assumption has an assumption id");
@@ -88,37 +113,40 @@ std::size_t SceneFacts::add_item(SceneItem::Kind kind, std::string text, SourceL
     return items_.size() - 1;
 }
 
-std::size_t SceneFacts::add_contact(const Contact& c) {
-    // One item per pair of surfaces, in whichever order it is first written.
-    for (std::size_t i = 0; i < items_.size(); ++i)
-        if (items_[i].kind == SceneItem::Kind::contact && items_[i].first == c.second && items_[i].second == c.first)
-            return i;
+std::size_t SceneFacts::add_contact(const Contact& c, std::span<const std::size_t> situations) {
     auto& values = engine_.values();
-    const std::string a = scene_.surfaces[c.first].name, b = scene_.surfaces[c.second].name;
+    // One item per pair of surfaces, in whichever order it is first written.
+    SurfaceId first = c.first, second = c.second;
+    if (auto it = contact_by_pair_.find({c.second.value, c.first.value}); it != contact_by_pair_.end())
+        std::swap(first, second);
+    const std::string a = scene_.surfaces[first].name, b = scene_.surfaces[second].name;
     std::size_t i = add_item(SceneItem::Kind::contact, "Contact (" + a + " " + b + ")", c.where, v::contact,
-                             {values.symbol(a), values.symbol(b)});
-    items_[i].first = c.first;
-    items_[i].second = c.second;
+                             {values.symbol(a), values.symbol(b)}, situations);
+    contact_by_pair_[{first.value, second.value}] = i;
+    items_[i].first = first;
+    items_[i].second = second;
     return i;
 }
 
-std::size_t SceneFacts::add_force(const Force& f) {
+std::size_t SceneFacts::add_force(const Force& f, std::span<const std::size_t> situations) {
     auto& values = engine_.values();
     const Cause& cause = scene_.causes[f.cause];
     std::string text = "Force (" + scene_.objects[f.object].name + " " + thesis_text(f.direction) + " " +
                        thesis_text(f.origin) + (cause.is_explicit ? " " + cause.name : std::string()) + ")";
     std::size_t i = add_item(SceneItem::Kind::force, std::move(text), f.where, v::external_force,
                              {object_symbols_[f.object.value], direction(f.direction), direction(f.origin),
-                              values.symbol(cause.name)});
+                              values.symbol(cause.name)},
+                             situations);
     items_[i].object = f.object;
     return i;
 }
 
-std::size_t SceneFacts::add_motion(const Motion& m) {
+std::size_t SceneFacts::add_motion(const Motion& m, std::span<const std::size_t> situations) {
     std::string text = "Motion (" + scene_.objects[m.object].name + " " + thesis_text(m.translation) + " " +
                        thesis_text(m.rotation) + ")";
     std::size_t i = add_item(SceneItem::Kind::motion, std::move(text), m.where, v::given_motion,
-                             {object_symbols_[m.object.value], direction(m.translation), direction(m.rotation)});
+                             {object_symbols_[m.object.value], direction(m.translation), direction(m.rotation)},
+                             situations);
     items_[i].object = m.object;
     return i;
 }
@@ -148,6 +176,11 @@ std::vector<const SceneItem*> SceneFacts::items(std::size_t s) const {
 }
 
 atms::EnvId SceneFacts::context(std::size_t s, std::span<const QueryFact> without) {
+    if (granularity_ == Granularity::situation) {
+        QM_REQUIRE(without.empty(), "taking items away needs Granularity::item");
+        QM_REQUIRE(s >= 1 && s <= situation_assumptions_.size(), "situation index out of range");
+        return engine_.atms().environment({situation_assumptions_[s - 1]});
+    }
     std::vector<atms::AssumptionId> members;
     for (const SceneItem* item : items(s)) {
         bool removed = std::any_of(without.begin(), without.end(), [&](const QueryFact& q) {
@@ -155,7 +188,7 @@ atms::EnvId SceneFacts::context(std::size_t s, std::span<const QueryFact> withou
                        "only contacts and forces can be taken away");
             return matches(*item, q);
         });
-        if (!removed) members.push_back(item->assumption);
+        if (!removed) members.push_back(*item->assumption);
     }
     return engine_.atms().environment(members);
 }

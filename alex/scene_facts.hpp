@@ -10,6 +10,7 @@
 //             item whichever order its two surfaces are written in.
 // Knows no law of mechanics: it states the scene, it derives nothing.
 #pragma once
+#include "alex/granularity.hpp"
 #include "alex/scene.hpp"
 #include "atms/ids.hpp"
 #include "engine/engine.hpp"
@@ -26,7 +27,7 @@ struct SceneItem {
     enum class Kind : std::uint8_t { contact, force, motion } kind = Kind::contact;
     std::string text;                  // thesis notation: "Contact (tb block-b-m)", "Force (block (0 -) (0 0))"
     SourceLocation where;
-    atms::AssumptionId assumption{};
+    std::optional<atms::AssumptionId> assumption;  // Granularity::item only
     std::optional<ObjectId> object;    // force, motion
     SurfaceId first{}, second{};       // contact
 };
@@ -35,11 +36,14 @@ class SceneFacts {
 public:
     // Asserts the scene. `given` motions are added to every situation (--given).
     // Pre: the engine has not run yet (premises cannot be added afterwards).
-    SceneFacts(const Scene& scene, engine::Engine& engine, std::span<const Motion> given = {});
+    SceneFacts(const Scene& scene, engine::Engine& engine, std::span<const Motion> given = {},
+               Granularity granularity = Granularity::item);
+    [[nodiscard]] Granularity granularity() const noexcept { return granularity_; }
 
     // The environment of situation s (1-based): its contacts, forces and given motions and the
     // scene-level forces, less every item matched by `without` (Contact a b: that contact; Force o:
-    // every force on o). Pre: 1 <= s <= situation count; `without` holds only contacts and forces.
+    // every force on o). Pre: 1 <= s <= situation count; `without` holds only contacts and forces,
+    // and is empty unless the granularity is `item`.
     [[nodiscard]] atms::EnvId context(std::size_t s, std::span<const QueryFact> without = {});
     // The items of situation s (1-based), scene-level forces first.
     [[nodiscard]] std::vector<const SceneItem*> items(std::size_t s) const;
@@ -56,17 +60,21 @@ public:
 private:
     void assert_premises();
     std::size_t add_item(SceneItem::Kind kind, std::string text, SourceLocation where, std::string_view pred,
-                         std::vector<engine::ValueId> args);
-    std::size_t add_force(const Force& f);
-    std::size_t add_motion(const Motion& m);
-    std::size_t add_contact(const Contact& c);
+                         std::vector<engine::ValueId> args, std::span<const std::size_t> situations);
+    std::size_t add_force(const Force& f, std::span<const std::size_t> situations);
+    std::size_t add_motion(const Motion& m, std::span<const std::size_t> situations);
+    std::size_t add_contact(const Contact& c, std::span<const std::size_t> situations);
 
     const Scene& scene_;
     engine::Engine& engine_;
+    Granularity granularity_;
+    std::vector<engine::FactId> situation_facts_;            // Granularity::situation: (situation N)
+    std::vector<atms::AssumptionId> situation_assumptions_;
     std::vector<engine::ValueId> object_symbols_;            // by ObjectId
     std::vector<SceneItem> items_;
     std::map<std::vector<engine::ValueId>, std::size_t> item_by_fact_;  // (pred args...) -> item
     std::map<std::uint32_t, std::size_t> item_by_assumption_;
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> contact_by_pair_;  // (first, second) surface ids
     std::vector<std::size_t> scene_forces_;                  // items of the Forces section
     std::vector<std::size_t> given_;                         // items of --given
     std::vector<std::vector<std::size_t>> situation_items_;  // by situation (0-based)

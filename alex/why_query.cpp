@@ -134,6 +134,20 @@ Derivation explain_nogood(const Analysis::State& st, atms::EnvId nogood) {
 
 std::optional<WhyAnswer> Analysis::why(const QueryFact& query, std::size_t situation, Diagnostics& diagnostics) {
     QM_REQUIRE(situation >= 1 && situation <= state_->results.size(), "situation index out of range");
+    if (state_->facts->granularity() == Granularity::situation) {
+        // The labels name only the situation: explain from an analysis of this situation with
+        // one assumption per item, which names the responsible contacts and forces.
+        auto fine = state_->restricted(situation, {}, {}, diagnostics, Granularity::item);
+        if (!fine) return std::nullopt;
+        Analysis one(std::move(fine));
+        auto w = one.why(query, 1, diagnostics);
+        if (w) {
+            w->situation = situation;
+            w->notes.push_back("explained from a per-item analysis of this situation (the scene is analysed one "
+                               "assumption per situation)");
+        }
+        return w;
+    }
     State& st = *state_;
     engine::Engine& e = *st.engine;
     auto& atms = e.atms();

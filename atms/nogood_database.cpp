@@ -12,7 +12,7 @@ void ensure(std::vector<std::vector<std::uint32_t>>& index, AssumptionId a) {
 
 bool NogoodDatabase::subsumes(const Environment& e) const noexcept {
     if (empty_nogood_) return true;
-    // A nogood N is a subset of e only if N's lowest assumption is in e: visit just those buckets.
+    // A nogood N is a subset of e only if N's highest assumption is in e: visit just those buckets.
     for (AssumptionId a : e.assumptions()) {
         if (a.value >= by_first_.size()) break;
         for (std::uint32_t i : by_first_[a.value]) {
@@ -44,9 +44,17 @@ void NogoodDatabase::add(EnvId id, const Environment& e) {
         return;
     }
     const auto as = e.assumptions();
-    // Every superset of e contains e's lowest assumption.
-    if (as.front().value < containing_.size()) {
-        for (std::uint32_t i : containing_[as.front().value]) {
+    // Every superset of e contains each of e's assumptions: scan the smallest of their buckets.
+    AssumptionId rarest = as.front();
+    for (AssumptionId a : as) {
+        if (a.value >= containing_.size() || containing_[a.value].empty()) {
+            rarest = a;
+            break;
+        }
+        if (containing_[a.value].size() < containing_[rarest.value].size()) rarest = a;
+    }
+    if (rarest.value < containing_.size()) {
+        for (std::uint32_t i : containing_[rarest.value]) {
             Entry& n = entries_[i];
             if (n.live && e.subset_of(n.env)) {
                 n.live = false;
@@ -57,8 +65,8 @@ void NogoodDatabase::add(EnvId id, const Environment& e) {
     const auto index = static_cast<std::uint32_t>(entries_.size());
     entries_.push_back(Entry{id, e, true});
     ++live_;
-    ensure(by_first_, as.front());
-    by_first_[as.front().value].push_back(index);
+    ensure(by_first_, as.back());
+    by_first_[as.back().value].push_back(index);
     for (AssumptionId a : as) {
         ensure(containing_, a);
         containing_[a.value].push_back(index);

@@ -30,7 +30,13 @@ const Builtin& BuiltinRegistry::get(BuiltinId id) const {
 BuiltinResult BuiltinRegistry::apply(BuiltinId id, ValueTable& values, std::span<const ValueId> args) const {
     const Builtin& b = get(id);
     QM_REQUIRE(args.size() >= b.min_arity && args.size() <= b.max_arity, "wrong arity for builtin " + b.name);
-    return b.fn(values, args);
+    // Builtins are pure: remember each application (keyed by this registry's entry).
+    const auto key = reinterpret_cast<std::uintptr_t>(&b);
+    if (const ValueTable::Application* known = values.remembered(key, args))
+        return BuiltinResult{known->value, known->holds, known->error};
+    BuiltinResult r = b.fn(values, args);
+    values.remember(key, args, {r.value, r.holds, r.error});
+    return r;
 }
 
 const BuiltinRegistry& default_builtins() {

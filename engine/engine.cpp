@@ -84,6 +84,19 @@ FactId Engine::add_assumption(ValueId predicate, std::span<const ValueId> args, 
     return f;
 }
 
+FactId Engine::add_fact(ValueId predicate, std::span<const ValueId> args, std::span<const FactId> from,
+                        SourceLocation where) {
+    QM_REQUIRE(!closed_world_used_, "facts cannot be added after `not` or an aggregate was evaluated");
+    for (FactId a : from) QM_REQUIRE(fact_nodes_.contains(a), "fact id out of range");
+    FactId f = intern_fact(predicate, args);
+    std::vector<atms::NodeId> antecedents;
+    for (FactId a : from) antecedents.push_back(fact_nodes_[a].node);
+    Firing why{Firing::Kind::premise, std::nullopt, {}, std::nullopt, std::move(where)};
+    atms_.justify(new_firing(std::move(why)), antecedents, fact_nodes_[f].node);
+    note_if_in(f);
+    return f;
+}
+
 void Engine::label_became_nonempty(atms::NodeId n) {
     const Datum& d = datums_[atms_.datum(n)];
     if (d.kind != Datum::Kind::fact) return;

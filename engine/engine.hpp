@@ -56,6 +56,10 @@ public:
     // `where` is what explanations print as the fact's origin (e.g. the scene line it came from).
     FactId add_premise(ValueId predicate, std::span<const ValueId> args, SourceLocation where = {"<api>", 1, 1});
     FactId add_assumption(ValueId predicate, std::span<const ValueId> args, SourceLocation where = {"<api>", 1, 1});
+    // A fact that holds wherever all of `from` hold (a driver's justification, e.g. a scene item
+    // that holds in its situation). Pre: as add_premise; every id in from issued by this engine.
+    FactId add_fact(ValueId predicate, std::span<const ValueId> args, std::span<const FactId> from,
+                    SourceLocation where = {"<api>", 1, 1});
 
     // ---- running --------------------------------------------------------------------------------
     // Runs every stratum to quiescence; `not` and aggregates are decided generically (a fact whose
@@ -119,7 +123,7 @@ private:
     // engine_run.cpp
     void run_strata(std::optional<std::uint32_t> context, Diagnostics& diagnostics);
     void match_rule(RuleId r, std::optional<Seed> seed, std::optional<std::uint32_t> context,
-                    Diagnostics& diagnostics);
+                    Diagnostics& diagnostics, const Binding* initial = nullptr);
     bool drain(std::uint32_t stratum, std::optional<std::uint32_t> context, Diagnostics& diagnostics);
     void close_contexts();
     // engine_closed_world.cpp

@@ -65,19 +65,38 @@ bool Engine::drain(std::uint32_t s, std::optional<std::uint32_t> context, Diagno
             if (begin == end) continue;
             rule_cursor_[r] = end;
             // A new fact of a predicate used inside a quantifier can complete a `for all` or an
-            // `exists` anywhere: match the whole rule again (the agenda drops repeated bindings).
+            // `exists` only for the bindings of the rule's other variables it unifies with: match
+            // the rule again from those (the agenda drops repeated bindings). If it cannot be
+            // unified ahead (a function call over the quantified variable), match the whole rule.
             bool full = false;
+            std::vector<Binding> prebound;
+            Matcher probe(facts_, values_, builtins_, ClosedWorld{});
             for (std::size_t k = begin; k < end && !full; ++k) {
-                ValueId p = facts_.fact(activation_log_[k]).predicate;
+                FactId f = activation_log_[k];
+                ValueId p = facts_.fact(f).predicate;
                 for (const auto& c : rule.conditions) {
                     if (c.kind != CompiledCondition::Kind::for_all && c.kind != CompiledCondition::Kind::exists) continue;
-                    for (const auto& a : c.atoms) full = full || a.predicate == p;
+                    for (const auto& a : c.atoms) {
+                        if (a.predicate != p) continue;
+                        bool has_call = std::any_of(a.args.begin(), a.args.end(), [](const CompiledTerm& t) {
+                            return t.kind == CompiledTerm::Kind::call;
+                        });
+                        if (has_call) {
+                            full = true;
+                            break;
+                        }
+                        if (auto b = probe.prebind(rule, a, c.slot, f)) prebound.push_back(std::move(*b));
+                    }
+                    if (full) break;
                 }
             }
             if (full) {
                 match_rule(r, std::nullopt, context, diagnostics);
                 continue;
             }
+            std::sort(prebound.begin(), prebound.end());
+            prebound.erase(std::unique(prebound.begin(), prebound.end()), prebound.end());
+            for (const Binding& b : prebound) match_rule(r, std::nullopt, context, diagnostics, &b);
             for (std::size_t k = begin; k < end; ++k) {
                 FactId f = activation_log_[k];
                 ValueId p = facts_.fact(f).predicate;
@@ -95,7 +114,7 @@ bool Engine::drain(std::uint32_t s, std::optional<std::uint32_t> context, Diagno
 }
 
 void Engine::match_rule(RuleId r, std::optional<Seed> seed, std::optional<std::uint32_t> context,
-                        Diagnostics& diagnostics) {
+                        Diagnostics& diagnostics, const Binding* initial) {
     const CompiledRule& rule = program_.rules[r];
     std::optional<std::uint32_t> rule_context = rule.non_monotonic ? context : std::nullopt;
     if (rule.non_monotonic) closed_world_used_ = true;
@@ -114,7 +133,8 @@ void Engine::match_rule(RuleId r, std::optional<Seed> seed, std::optional<std::u
             std::string where = e.where.file + ":" + std::to_string(e.where.line) + ":" + std::to_string(e.where.column);
             if (reported.insert({where, e.message}).second)
                 diagnostics.error(e.where, "rule '" + rule.name + "': " + e.message);
-        });
+        },
+        initial);
 }
 
 // Records, for every context, the nogoods {closed-world of C, X} for assumptions X outside C and

@@ -276,14 +276,28 @@ Matcher::Matcher(const FactStore& facts, ValueTable& values, const BuiltinRegist
       equals_(builtins.find("=")) {}
 
 void Matcher::match(const CompiledRule& rule, std::optional<Seed> seed, const OnMatch& on_match,
-                    const OnError& on_error) {
+                    const OnError& on_error, const Binding* initial) {
     if (seed) {
         QM_REQUIRE(seed->condition < rule.conditions.size() &&
                        rule.conditions[seed->condition].kind == CompiledCondition::Kind::match,
                    "a seed names a match condition");
     }
-    Run run{*this, rule, seed, on_match, on_error, Binding(rule.slot_count()), {}, {}};
+    QM_REQUIRE(!initial || initial->size() == rule.slot_count(), "an initial binding has one entry per slot");
+    Run run{*this, rule, seed, on_match, on_error, initial ? *initial : Binding(rule.slot_count()), {}, {}};
     run.step(0);
+}
+
+std::optional<Binding> Matcher::prebind(const CompiledRule& rule, const CompiledAtom& atom, Slot local, FactId f) {
+    const OnMatch none = [](const Binding&, std::span<const FactId>) {};
+    bool failed = false;
+    const OnError note = [&](const MatchError&) { failed = true; };
+    Run run{*this, rule, std::nullopt, none, note, Binding(rule.slot_count()), {}, {}};
+    // Only plain variables and constants can be unified before the quantified variable is known.
+    for (const CompiledTerm& t : atom.args)
+        if (t.kind == CompiledTerm::Kind::call) return std::nullopt;
+    if (!run.unify(atom, f) || failed) return std::nullopt;
+    run.binding[local].reset();
+    return run.binding;
 }
 
 }  // namespace qm::engine

@@ -47,9 +47,16 @@ public:
 
     Matcher(const FactStore& facts, ValueTable& values, const BuiltinRegistry& builtins,
             const ClosedWorld& closed_world);
-    // Pre: a seed names a `match` condition of rule and an active fact.
+    // Pre: a seed names a `match` condition of rule and an active fact; `initial`, if given, has
+    // rule.slot_count() slots. Matching starts from `initial` (some variables already bound).
     void match(const CompiledRule& rule, std::optional<Seed> seed, const OnMatch& on_match,
-               const OnError& on_error);
+               const OnError& on_error, const Binding* initial = nullptr);
+    // The binding of the rule's variables that unifying `atom` (an atom inside a quantifier of the
+    // rule whose quantified variable is `local`) with fact f gives, less `local`: a new fact can
+    // complete a `for all` or an `exists` only for such bindings. Empty if they do not unify, or if
+    // the atom has a function call that needs the quantified variable.
+    [[nodiscard]] std::optional<Binding> prebind(const CompiledRule& rule, const CompiledAtom& atom, Slot local,
+                                                 FactId f);
 
 private:
     struct Run;

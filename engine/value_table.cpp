@@ -105,4 +105,30 @@ ValueId ValueTable::intern(Value v) {
     return id;
 }
 
+std::size_t ValueTable::KeyHash::operator()(const ApplicationKey& k) const noexcept {
+    std::size_t h = 1469598103934665603ull;
+    for (std::uint64_t x : k) h = (h ^ x) * 1099511628211ull;
+    return h;
+}
+
+// The function, the argument count, and the 32-bit argument ids packed two to a word.
+ValueTable::ApplicationKey ValueTable::application_key(std::uintptr_t function, std::span<const ValueId> args) {
+    ApplicationKey key{};
+    key[0] = static_cast<std::uint64_t>(function);
+    key[1] = args.size();
+    for (std::size_t i = 0; i < args.size(); ++i) key[1 + (i + 1) / 2] |= std::uint64_t{args[i].value} << (32 * ((i + 1) % 2));
+    return key;
+}
+
+const ValueTable::Application* ValueTable::remembered(std::uintptr_t function, std::span<const ValueId> args) const {
+    if (args.size() > max_remembered_args) return nullptr;
+    auto it = applications_.find(application_key(function, args));
+    return it == applications_.end() ? nullptr : &it->second;
+}
+
+void ValueTable::remember(std::uintptr_t function, std::span<const ValueId> args, Application result) {
+    if (args.size() > max_remembered_args) return;
+    applications_.insert_or_assign(application_key(function, args), std::move(result));
+}
+
 }  // namespace qm::engine

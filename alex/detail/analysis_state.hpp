@@ -38,6 +38,10 @@ struct Analysis::State {
     [[nodiscard]] Nearness nearness(ObjectId o, atms::EnvId env);
     // The objects in contact in env (through the situation's contact items) and the linkages.
     [[nodiscard]] std::vector<std::pair<ObjectId, ObjectId>> pairs(std::size_t s, atms::EnvId env) const;
+    // A new State for situation s alone, with `without` taken away and `given` motions added.
+    [[nodiscard]] std::unique_ptr<State> restricted(std::size_t s, std::span<const QueryFact> without,
+                                                    std::span<const Motion> given, Diagnostics& diagnostics,
+                                                    std::optional<Granularity> granularity = std::nullopt) const;
 };
 
 // Builds a State: loads nothing (program is given), asserts the scene, runs every situation.
