@@ -1,0 +1,70 @@
+// tests/rules/force_test.cpp: rules/force_distribution.rules (Table 3.3, Defs 8-10, transmission),
+// rules/net_force.rules (Def 11, Law 5) and rules/nearness.rules (Def 38, section 6.2).
+#include "law_harness.hpp"
+
+using qm::test::Laws;
+using S = std::set<std::string>;
+
+namespace {
+const std::vector<std::string> laws{"directions.rules", "reference_frame.rules", "contact.rules",
+                                    "contact_constraint.rules", "uniqueness_of_motion.rules", "force_distribution.rules",
+                                    "net_force.rules", "nearness.rules", "given_motion.rules"};
+}
+
+TEST_CASE("rules/force: a force pushing a lever down off its pivot turns it clockwise (section 6.1)") {
+    Laws l(laws, "fact (dimensions 2)\nfact (rigid-body lever)\n" + qm::test::pinned("lever") +
+                     "fact (external-force lever (0 -) (- -) hand)\n");
+    CHECK(l.all("distributed-force").empty());             // every translation is blocked (Table 3.3)
+    CHECK(l.all("torque") == S{"(torque lever (-) hand)"});  // Rotate-90((0 -), -) = (- 0) faces (- -)
+    CHECK(l.holds("(net-force lever (0 0))"));
+    CHECK(l.holds("(net-torque lever (-))"));
+    CHECK(l.holds("(rot-nearness lever (-) 0)"));
+    CHECK(l.holds("(rot-nearness lever (0) 2)"));
+    CHECK(l.holds("(rot-nearness lever (+) 5)"));
+    // Beyond the zero threshold a force cannot move it (8.3.4).
+    CHECK(l.nogoods().count({"(rot-motion lever (+))"}) == 1);
+}
+
+TEST_CASE("rules/force: the distributed force of a free body is its half plane (Table 3.3)") {
+    Laws l(laws, "fact (dimensions 2)\nfact (rigid-body block)\nfact (external-force block (0 -) (0 0) gravity)\n");
+    CHECK(l.all("distributed-force").size() == 3);
+    CHECK(l.all("torque").empty());  // acting at the centre
+    CHECK(l.holds("(net-force block (0 -))"));
+    CHECK(l.holds("(trans-nearness block (0 -) 0)"));
+    CHECK(l.holds("(trans-nearness block (+ -) 1)"));
+    CHECK(l.holds("(trans-nearness block (0 0) 2)"));
+    CHECK(l.holds("(trans-nearness block (+ 0) 3)"));
+}
+
+TEST_CASE("rules/force: forces of one cause cancel, of different causes are ambiguous (Law 5)") {
+    const std::string body = "fact (dimensions 2)\nfact (rigid-body a)\n";
+    Laws same(laws, body + "fact (external-force a (0 -) (0 0) push)\nfact (external-force a (+ +) (0 0) push)\n");
+    CHECK(same.holds("(net-force a (+ 0))"));
+    Laws different(laws, body + "fact (external-force a (0 -) (0 0) push)\nfact (external-force a (+ +) (0 0) spring)\n");
+    CHECK(different.holds("(net-force a (+ ?))"));
+    // An ambiguous net force branches: each resolution is as near as the force's own direction.
+    CHECK(different.holds("(trans-nearness a (+ +) 0)"));
+    CHECK(different.holds("(trans-nearness a (+ 0) 0)"));
+    CHECK(different.holds("(trans-nearness a (+ -) 0)"));
+}
+
+TEST_CASE("rules/force: a free force pushes what it moves the body into (5.3.2)") {
+    // A pushed right into b across a vertical face; b gets a force into its face, same cause.
+    Laws l(laws, "fact (dimensions 2)\nfact (rigid-body a)\nfact (rigid-body b)\n"
+                 "fact (surface a ar)\nfact (surface-normal ar (+ 0))\nfact (origin-dir ar (- 0))\n"
+                 "fact (surface b bl)\nfact (surface-normal bl (- 0))\nfact (origin-dir bl (+ +))\n"
+                 "fact (contact ar bl)\nfact (external-force a (+ 0) (0 0) hand)\n");
+    CHECK(l.holds("(force-on b (+ 0) (+ +) hand)"));
+    CHECK(l.holds("(torque b (+) hand)"));  // pushed right below-left of its centre: counter-clockwise
+    CHECK_FALSE(l.holds("(force-on a (- 0) (- 0) hand)"));  // nothing comes back through the same face
+}
+
+TEST_CASE("rules/given_motion: a current motion persists and pushes what it moves into (6.2)") {
+    Laws l(laws, "fact (dimensions 2)\nfact (rigid-body a)\nfact (rigid-body b)\n"
+                 "fact (surface a ar)\nfact (surface-normal ar (+ 0))\nfact (origin-dir ar (- 0))\n"
+                 "fact (surface b bl)\nfact (surface-normal bl (- 0))\nfact (origin-dir bl (+ 0))\n"
+                 "fact (contact ar bl)\nfact (given-motion a (+ 0) (0))\n");
+    CHECK(l.holds("(force-on b (+ 0) (+ 0) a)"));
+    CHECK(l.nogoods().count({"(trans-motion a (0 0))"}) == 1);
+    CHECK(l.nogoods().count({"(rot-motion a (+))"}) == 1);
+}
