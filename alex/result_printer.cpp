@@ -113,15 +113,23 @@ void print_why(std::ostream& os, const WhyAnswer& w) {
     for (const std::string& n : w.notes) os << "  " << n << "\n";
     for (std::size_t i = 0; i < w.exclusions.size(); ++i) {
         const Exclusion& x = w.exclusions[i];
-        os << "  " << (w.exclusions.size() > 1 ? "Reason " + std::to_string(i + 1) : std::string("Reason"))
-           << ": resting on {";
-        for (std::size_t k = 0; k < x.responsible.size(); ++k) os << (k ? ", " : "") << x.responsible[k];
-        os << "}\n";
+        os << "  " << (w.exclusions.size() > 1 ? "Reason " + std::to_string(i + 1) : std::string("Reason"));
+        if (x.responsible.empty()) {
+            os << ": the scene's description alone (no contact, force or given motion)\n";
+        } else {
+            os << ": resting on {";
+            for (std::size_t k = 0; k < x.responsible.size(); ++k) os << (k ? ", " : "") << x.responsible[k];
+            os << "}\n";
+        }
         print_tree(os, x.derivation, "    ");
     }
     if (!w.responsible_sets.empty()) {
         os << "  Responsible (minimal sets of contacts, forces and given motions):\n";
         for (const auto& set : w.responsible_sets) {
+            if (set.empty()) {
+                os << "    {} (the scene's description alone)\n";
+                continue;
+            }
             os << "    {";
             for (std::size_t k = 0; k < set.size(); ++k) os << (k ? ", " : "") << set[k];
             os << "}\n";

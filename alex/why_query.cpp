@@ -98,6 +98,8 @@ private:
                 d.source = located(item->where);
             } else if (!e.fact_of(n)) {
                 d.fact = "the closed world of the situation (what it does not say is false)";
+            } else {
+                d.fact = "assumed: " + d.fact;  // a choice (Law 1) or an assumption the laws made
             }
             return;
         }

@@ -3,6 +3,7 @@
 #include "alex/analysis.hpp"
 #include "alex/result_printer.hpp"
 #include "alex/scene_parser.hpp"
+#include "query_text.hpp"
 #include "rules_location.hpp"
 #include <charconv>
 #include <iostream>
@@ -149,7 +150,8 @@ private:
             } else if (verb == "freedom") alex::print_freedom(out_, scene, current);
             else alex::print_motions(out_, scene, current);
         } else if (verb == "why") {
-            auto q = alex::parse_query_fact(scene, rest, d, "why");
+            auto text = query_text(rest, "why", d);
+            auto q = text ? alex::parse_query_fact(scene, *text, d, "why") : std::nullopt;
             if (q)
                 if (auto w = analysis_.why(*q, situation_, d)) json_ ? alex::write_why_json(out_, *w) : alex::print_why(out_, *w);
         } else if (verb == "given") {
@@ -243,7 +245,8 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
             else ao.without.push_back(*q);
         }
     std::optional<alex::QueryFact> why;
-    if (options->why) why = alex::parse_query_fact(*scene, *options->why, d, "--why");
+    if (options->why)
+        if (auto text = query_text(*options->why, "--why", d)) why = alex::parse_query_fact(*scene, *text, d, "--why");
     const std::size_t situations = scene->situations.size();
     const std::size_t situation = options->situation.value_or(1);
     if ((options->why || options->situation) && situation > situations)

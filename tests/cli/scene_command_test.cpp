@@ -1,0 +1,199 @@
+// tests/cli/scene_command_test.cpp: `qm-atms SCENE.def` end to end through the built executable: the
+// thesis notation, the JSON schema of docs/OUTPUT.md, --situation, --why (both spellings),
+// --without, --given, the interactive mode, and exit statuses for bad input.
+#include "../support/json_value.hpp"
+#include <cstdio>
+#include <cstdlib>
+#include <doctest/doctest.h>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+using qm::test::Json;
+
+namespace {
+
+struct Result {
+    int status = -1;
+    std::string out, err;
+};
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+Result qm_atms(const std::string& args, const std::string& input = "") {
+    static int counter = 0;
+    const std::string base = std::string(QM_BINARY_DIR) + "/scene_cli_" + std::to_string(++counter);
+    std::ofstream(base + ".in") << input;
+    const std::string cmd = std::string(QM_BINARY_DIR) + "/cli/qm-atms " + args + " <" + base + ".in >" + base +
+                            ".out 2>" + base + ".err";
+    const int raw = std::system(cmd.c_str());
+    Result r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(base + ".out"), slurp(base + ".err")};
+    for (const char* x : {".in", ".out", ".err"}) std::remove((base + x).c_str());
+    return r;
+}
+
+std::string scene(const std::string& name) { return std::string(QM_SOURCE_DIR) + "/scenarios/alex/" + name; }
+
+bool is_direction(const Json& j, std::size_t arity) {
+    static const std::regex shape(R"(\([+0-]( [+0-])*\))");
+    return j.is_string() && std::regex_match(j.string(), shape) && (j.string().size() + 1) / 2 - 1 == arity;
+}
+
+// Checks the schema of docs/OUTPUT.md; returns the number of situations.
+std::size_t check_schema(const Json& doc, std::size_t objects) {
+    REQUIRE(doc.is_object());
+    CHECK(doc.object().size() == 3);
+    REQUIRE(doc.has("scene"));
+    CHECK(doc["scene"].is_string());
+    const auto dims = static_cast<std::size_t>(doc["dimensions"].number());
+    const std::size_t rot = dims == 3 ? 3 : 1;
+    const auto& situations = doc["situations"].array();
+    for (std::size_t i = 0; i < situations.size(); ++i) {
+        const Json& s = situations[i];
+        CHECK(s.object().size() == 4);
+        CHECK(s["index"].number() == static_cast<double>(i + 1));
+        CHECK(s["stable"].is_bool());
+        REQUIRE(s["freedom"].object().size() == objects);
+        for (const auto& [name, f] : s["freedom"].object()) {
+            CAPTURE(name);
+            bool zero_t = false, zero_r = false;
+            for (const Json& d : f["translation"].array()) {
+                CHECK(is_direction(d, dims));
+                zero_t |= d.string().find_first_of("+-") == std::string::npos;
+            }
+            for (const Json& d : f["rotation"].array()) {
+                CHECK(is_direction(d, rot));
+                zero_r |= d.string().find_first_of("+-") == std::string::npos;
+            }
+            CHECK(zero_t);  // the zero direction is always free
+            CHECK(zero_r);
+        }
+        for (const Json& m : s["motions"].array()) {
+            REQUIRE(m.object().size() == objects);
+            for (const auto& [name, motion] : m.object()) {
+                CHECK(s["freedom"].has(name));
+                CHECK(is_direction(motion["translation"], dims));
+                CHECK(is_direction(motion["rotation"], rot));
+            }
+        }
+    }
+    return situations.size();
+}
+
+}  // namespace
+
+TEST_CASE("cli/scene_command: the thesis' notation (Figures 7.3-7.6)") {
+    Result r = qm_atms(scene("block.def"));
+    CHECK(r.status == 0);
+    CHECK(r.err.empty());
+    for (const char* line : {"Translational-Freedom (block (0 +))", "Rotational-Freedom (block (-))",
+                             "Translational-Freedom (table (0 0))", "Translational-Motion (block (0 -))",
+                             "Rotational-Motion (table (0))", "Stable: yes"})
+        CHECK(r.out.find(line) != std::string::npos);
+}
+
+TEST_CASE("cli/scene_command: --json follows the documented schema") {
+    for (auto [name, objects] : std::initializer_list<std::pair<const char*, std::size_t>>{
+             {"block.def", 2}, {"arch.def", 4}, {"gears.def", 2}, {"recoil_escapement.def", 3}, {"block_3d.def", 2}}) {
+        CAPTURE(name);
+        Result r = qm_atms(scene(name) + " --json");
+        REQUIRE(r.status == 0);
+        auto doc = Json::parse(r.out);
+        REQUIRE(doc.has_value());
+        CHECK(check_schema(*doc, objects) >= 1);
+    }
+    auto gears = Json::parse(qm_atms(scene("gears.def") + " --json").out);
+    REQUIRE(gears.has_value());
+    CHECK((*gears)["situations"].array()[0]["motions"].array().size() == 6);
+    CHECK((*gears)["dimensions"].number() == 2);
+    auto recoil = Json::parse(qm_atms(scene("recoil_escapement.def") + " --json --situation 2").out);
+    REQUIRE(recoil.has_value());
+    const auto& only = (*recoil)["situations"].array();
+    REQUIRE(only.size() == 1);
+    CHECK(only[0]["index"].number() == 2);
+    CHECK(only[0]["motions"].array().size() == 1);
+}
+
+TEST_CASE("cli/scene_command: --why explains in either spelling, as text or JSON") {
+    Result text = qm_atms(scene("block.def") + " --situation 2 --why 'Translational-Motion (block (0 -))'");
+    CHECK(text.status == 0);
+    CHECK(text.out.find("ruled out") != std::string::npos);
+    CHECK(text.out.find("constraint-prevents-translation") != std::string::npos);
+    CHECK(text.out.find("contact_constraint.rules") != std::string::npos);
+    CHECK(text.out.find("{Contact (tb block-b-m)}") != std::string::npos);
+    Result json = qm_atms(scene("block.def") + " --situation 2 --json --why '{\"block\": {\"translation\": \"(0 -)\"}}'");
+    CHECK(json.status == 0);
+    auto w = Json::parse(json.out);
+    REQUIRE(w.has_value());
+    CHECK((*w)["status"].string() == "ruled-out");
+    CHECK((*w)["query"].string() == "Translational-Motion (block (0 -))");
+    CHECK((*w)["responsible_sets"].array().size() == 3);  // any one of the three bottom contacts
+    const Json& tree = (*w)["exclusions"].array()[0]["derivation"];
+    CHECK(tree["fact"].string() == "false");
+    CHECK(tree["law"].string() == "constraint-prevents-translation");
+    CHECK(tree["from"].is_array());
+    Result holds = qm_atms(scene("gears.def") + " --why 'Rotational-Motion (follower (+))'");
+    CHECK(holds.out.find("holds") != std::string::npos);
+    Result freedom = qm_atms(scene("gears.def") + " --why '{\"freedom\": {\"driver\": {\"translation\": \"(+ 0)\"}}}'");
+    CHECK(freedom.out.find("Translational-Freedom (driver (+ 0)) in situation 1: ruled out") != std::string::npos);
+}
+
+TEST_CASE("cli/scene_command: --without and --given answer what-if questions") {
+    Result without = qm_atms(scene("block.def") + " --json --situation 1 --without 'Force block'");
+    auto doc = Json::parse(without.out);
+    REQUIRE(doc.has_value());
+    // Without gravity nothing drives the block: every free motion is possible.
+    CHECK((*doc)["situations"].array()[0]["motions"].array().size() == 27);
+    Result given = qm_atms(scene("recoil_escapement.def") + " --json --situation 1 --given 'pallet (0 0) (+)'");
+    auto g = Json::parse(given.out);
+    REQUIRE(g.has_value());
+    CHECK((*g)["situations"].array()[0]["motions"].array().size() == 1);
+    // A contact taken away frees the block to fall through the table.
+    Result off = qm_atms(scene("block.def") + " --situation 2 --without 'Contact tb block-b-l' --without "
+                                              "'Contact (block-b-m tb)' --without 'Contact tb block-b-r'");
+    CHECK(off.out.find("Translational-Motion (block (0 -))") != std::string::npos);
+}
+
+TEST_CASE("cli/scene_command: the interactive mode answers without reloading") {
+    Result r = qm_atms(scene("block.def") + " -i",
+                       "help\nfreedom\nsituation 2\nmotions\nwhy Translational-Motion (block (0 -))\n"
+                       "whatif Contact tb block-b-l; Contact tb block-b-m; Contact tb block-b-r\n"
+                       "given block (0 +) (0)\njson on\nmotions\nbogus\nwhy Contact tb block-b-l\nquit\nfreedom\n");
+    CHECK(r.status == 0);
+    CHECK(r.out.find("whatif FACT") != std::string::npos);                       // help
+    CHECK(r.out.find("Translational-Freedom (block (- -))") != std::string::npos);  // situation 1 freedom
+    CHECK(r.out.find("Stable: yes") != std::string::npos);                       // situation 2 motions
+    CHECK(r.out.find("ruled out") != std::string::npos);                         // why
+    CHECK(r.out.find("the monotonic laws' labels were reused") != std::string::npos);  // whatif
+    CHECK(r.out.find("Translational-Motion (block (0 +))") != std::string::npos);  // given
+    CHECK(r.out.find("{\"index\": 2") != std::string::npos);                     // json on
+    CHECK(r.err.find("unknown command 'bogus'") != std::string::npos);
+    CHECK(r.err.find("expected a motion or a freedom") != std::string::npos);
+}
+
+TEST_CASE("cli/scene_command: bad input is located and exits with 2") {
+    const std::string bad = std::string(QM_BINARY_DIR) + "/scene_cli_bad.def";
+    std::ofstream(bad) << "(Defscenario 2 broken\n  Individuals (a b\n";
+    Result syntax = qm_atms(bad);
+    CHECK(syntax.status == 2);
+    CHECK(syntax.err.find("scene_cli_bad.def:") != std::string::npos);
+    CHECK(qm_atms("/no/such/scene.def").status == 2);
+    Result why = qm_atms(scene("block.def") + " --why 'Translational-Motion (block (0 x))'");
+    CHECK(why.status == 2);
+    CHECK(why.err.find("--why:1:") != std::string::npos);
+    CHECK(qm_atms(scene("block.def") + " --why 'Rotational-Motion (nobody (+))'").status == 2);
+    CHECK(qm_atms(scene("block.def") + " --situation 3").status == 2);
+    CHECK(qm_atms(scene("block.def") + " --situation zero").status == 2);
+    CHECK(qm_atms(scene("block.def") + " --frobnicate").status == 2);
+    CHECK(qm_atms(scene("block.def") + " --without 'Translational-Motion (block (0 -))'").status == 2);
+    CHECK(qm_atms(scene("block.def") + " --given 'block (0 -)'").status == 2);
+    CHECK(qm_atms(scene("block.def") + " --why").status == 2);
+}
