@@ -124,7 +124,7 @@ void print_why(std::ostream& os, const WhyAnswer& w) {
         print_tree(os, x.derivation, "    ");
     }
     if (!w.responsible_sets.empty()) {
-        os << "  Responsible (minimal sets of contacts, forces and given motions):\n";
+        os << "  Responsible (contacts, forces and given motions; each set suffices):\n";
         for (const auto& set : w.responsible_sets) {
             if (set.empty()) {
                 os << "    {} (the scene's description alone)\n";

@@ -193,6 +193,14 @@ atms::EnvId SceneFacts::context(std::size_t s, std::span<const QueryFact> withou
     return engine_.atms().environment(members);
 }
 
+const SceneItem* SceneFacts::item(engine::FactId f) const {
+    const engine::Fact& fact = engine_.facts().fact(f);
+    std::vector<ValueId> key{fact.predicate};
+    key.insert(key.end(), fact.args.begin(), fact.args.end());
+    auto it = item_by_fact_.find(key);
+    return it == item_by_fact_.end() ? nullptr : &items_[it->second];
+}
+
 const SceneItem* SceneFacts::item(atms::AssumptionId a) const {
     auto it = item_by_assumption_.find(a.value);
     return it == item_by_assumption_.end() ? nullptr : &items_[it->second];

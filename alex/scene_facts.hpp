@@ -48,6 +48,7 @@ public:
     // The items of situation s (1-based), scene-level forces first.
     [[nodiscard]] std::vector<const SceneItem*> items(std::size_t s) const;
     [[nodiscard]] const SceneItem* item(atms::AssumptionId a) const;  // null if a is no scene item
+    [[nodiscard]] const SceneItem* item(engine::FactId f) const;       // null if f is no scene item
     [[nodiscard]] bool matches(const SceneItem& item, const QueryFact& q) const;
 
     [[nodiscard]] engine::ValueId symbol(ObjectId o) const { return object_symbols_[o.value]; }

@@ -56,6 +56,14 @@ public:
         const auto& atms = e.atms();
         Derivation d;
         d.fact = node_text(st_, n);
+        // A scene item is a leaf, however it is held (its own assumption, or its situation's).
+        if (auto f = e.fact_of(n))
+            if (const SceneItem* item = st_.facts->item(*f)) {
+                d.fact = item->text;
+                d.source = located(item->where);
+                items_used_.insert(item->text);
+                return d;
+            }
         auto it = by_consequent_.find(n);
         if (it == by_consequent_.end()) {  // a leaf: a premise or an assumption
             leaf(n, d);
@@ -88,6 +96,9 @@ public:
         return d;
     }
 
+    // The scene items the trees built so far rest on.
+    [[nodiscard]] std::vector<std::string> items_used() const { return {items_used_.begin(), items_used_.end()}; }
+
 private:
     void leaf(atms::NodeId n, Derivation& d) {
         const engine::Engine& e = *st_.engine;
@@ -117,28 +128,42 @@ private:
     const Analysis::State& st_;
     std::map<atms::NodeId, atms::JustId> by_consequent_;
     std::set<atms::NodeId> shown_;
+    std::set<std::string> items_used_;
 };
 
-std::vector<std::string> item_texts(const Analysis::State& st, const atms::Environment& env) {
+// The items of an environment. With one assumption per situation an environment names only the
+// situation: then the items the derivation used stand for it (a sufficient set, maybe not minimal).
+std::vector<std::string> item_texts(const Analysis::State& st, const atms::Environment& env,
+                                    const TreeBuilder* used = nullptr) {
+    if (used && st.facts->granularity() == Granularity::situation) return used->items_used();
     std::vector<std::string> out;
     for (atms::AssumptionId a : env.assumptions())
         if (const SceneItem* item = st.facts->item(a)) out.push_back(item->text);
     return out;
 }
 
-Derivation explain_nogood(const Analysis::State& st, atms::EnvId nogood) {
+Exclusion explain_nogood(const Analysis::State& st, atms::EnvId nogood) {
     const atms::Explanation x = st.engine->atms().explain_nogood(nogood);
     TreeBuilder b(st, x);
-    return b.build(st.engine->atms().contradiction());
+    Derivation d = b.build(st.engine->atms().contradiction());
+    return {item_texts(st, st.engine->atms().env(nogood), &b), std::move(d)};
+}
+
+void coarse_note(const Analysis::State& st, WhyAnswer& w) {
+    if (st.facts->granularity() == Granularity::situation)
+        w.notes.push_back("this large scene is analysed one assumption per situation: each reason's contacts and "
+                          "forces are those its derivation uses, a sufficient set that may not be minimal");
 }
 
 }  // namespace
 
 std::optional<WhyAnswer> Analysis::why(const QueryFact& query, std::size_t situation, Diagnostics& diagnostics) {
     QM_REQUIRE(situation >= 1 && situation <= state_->results.size(), "situation index out of range");
-    if (state_->facts->granularity() == Granularity::situation) {
+    if (state_->facts->granularity() == Granularity::situation &&
+        state_->facts->items(situation).size() <= AnalysisOptions::auto_item_limit) {
         // The labels name only the situation: explain from an analysis of this situation with
-        // one assumption per item, which names the responsible contacts and forces.
+        // one assumption per item, which names the responsible contacts and forces. (Above the
+        // limit that analysis is too costly, and the coarse labels answer: see the note below.)
         auto fine = state_->restricted(situation, {}, {}, diagnostics, Granularity::item);
         if (!fine) return std::nullopt;
         Analysis one(std::move(fine));
@@ -193,9 +218,11 @@ std::optional<WhyAnswer> Analysis::why(const QueryFact& query, std::size_t situa
         for (atms::EnvId label_env : atms.label(n)) {
             if (!atms.env(label_env).subset_of(atms.env(env))) continue;
             TreeBuilder b(st, atms.explain(n, label_env));
-            w.exclusions.push_back({item_texts(st, atms.env(label_env)), b.build(n)});
-            w.responsible_sets.push_back(item_texts(st, atms.env(label_env)));
+            Derivation d = b.build(n);
+            w.exclusions.push_back({item_texts(st, atms.env(label_env), &b), std::move(d)});
+            w.responsible_sets.push_back(w.exclusions.back().responsible);
         }
+        coarse_note(st, w);
         return w;
     }
 
@@ -246,10 +273,13 @@ std::optional<WhyAnswer> Analysis::why(const QueryFact& query, std::size_t situa
     // 1. Nogoods made of this motion and the situation alone.
     for (atms::EnvId ng : relevant)
         if (atms.env(ng).contains(a) && atms.env(ng).subset_of(with_a)) {
-            w.exclusions.push_back({item_texts(st, atms.env(ng)), explain_nogood(st, ng)});
-            w.responsible_sets.push_back(item_texts(st, atms.env(ng)));
+            w.exclusions.push_back(explain_nogood(st, ng));
+            w.responsible_sets.push_back(w.exclusions.back().responsible);
         }
-    if (!w.exclusions.empty()) return w;
+    if (!w.exclusions.empty()) {
+        coarse_note(st, w);
+        return w;
+    }
 
     // 2. Case analysis: every way of choosing the other objects' motions meets a nogood.
     std::set<std::uint32_t> used;
@@ -273,13 +303,13 @@ std::optional<WhyAnswer> Analysis::why(const QueryFact& query, std::size_t situa
     if (!consistent_somewhere) {
         std::set<std::string> responsible;
         for (std::uint32_t ng : used) {
-            const atms::EnvId id{ng};
-            w.exclusions.push_back({item_texts(st, atms.env(id)), explain_nogood(st, id)});
-            for (auto& t : item_texts(st, atms.env(id))) responsible.insert(t);
+            w.exclusions.push_back(explain_nogood(st, atms::EnvId{ng}));
+            for (auto& t : w.exclusions.back().responsible) responsible.insert(t);
         }
         w.responsible_sets.push_back({responsible.begin(), responsible.end()});
         w.notes.push_back("excluded by case analysis: every choice of the other objects' motions in its kinematic "
                           "chain meets one of these nogoods");
+        coarse_note(st, w);
         return w;
     }
 
@@ -293,8 +323,9 @@ std::optional<WhyAnswer> Analysis::why(const QueryFact& query, std::size_t situa
         for (atms::EnvId label_env : atms.label(n)) {
             if (!atms.env(label_env).subset_of(base)) continue;
             TreeBuilder b(st, atms.explain(n, label_env));
-            w.exclusions.push_back({item_texts(st, atms.env(label_env)), b.build(n)});
-            w.responsible_sets.push_back(item_texts(st, atms.env(label_env)));
+            Derivation d = b.build(n);
+            w.exclusions.push_back({item_texts(st, atms.env(label_env), &b), std::move(d)});
+            w.responsible_sets.push_back(w.exclusions.back().responsible);
             break;
         }
     }
