@@ -17,6 +17,7 @@ struct Matcher::Run {
     Binding binding;
     std::vector<Slot> trail;
     std::vector<FactId> antecedents;
+    std::vector<ValueId> scratch;  // arguments of a `for all` atom being looked up
 
     void bind(Slot s, ValueId v) {
         binding[s] = v;
@@ -89,15 +90,19 @@ struct Matcher::Run {
     }
 
     bool test_holds(const CompiledTest& t) {
-        std::vector<ValueId> args;
-        for (const auto& a : t.args) {
-            auto v = value_of(a, t.where);
+        // Tests take few arguments: evaluate them into a buffer on the stack when they fit.
+        std::array<ValueId, 4> small{};
+        std::vector<ValueId> large;
+        if (t.args.size() > small.size()) large.resize(t.args.size());
+        std::span<ValueId> args = large.empty() ? std::span<ValueId>(small.data(), t.args.size()) : std::span<ValueId>(large);
+        for (std::size_t k = 0; k < t.args.size(); ++k) {
+            auto v = value_of(t.args[k], t.where);
             if (!v) {
-                if (is_ground(a, binding)) return false;  // builtin error, already reported
+                if (is_ground(t.args[k], binding)) return false;  // builtin error, already reported
                 error(t.where, "builtin test '" + m.builtins_.get(t.test).name + "' uses an unbound variable");
                 return false;
             }
-            args.push_back(*v);
+            args[k] = *v;
         }
         BuiltinResult r = m.builtins_.apply(t.test, m.values_, args);
         if (!r.error.empty()) {
@@ -202,14 +207,14 @@ struct Matcher::Run {
             bind(c.slot, e);
             if (tests_hold(c.tests)) {
                 for (const auto& atom : c.atoms) {
-                    std::vector<ValueId> args;
+                    scratch.clear();
                     for (const auto& a : atom.args) {
                         auto v = value_of(a, atom.where);
                         if (!v) break;
-                        args.push_back(*v);
+                        scratch.push_back(*v);
                     }
                     std::optional<FactId> f;
-                    if (args.size() == atom.args.size()) f = m.facts_.find(atom.predicate, args);
+                    if (scratch.size() == atom.args.size()) f = m.facts_.find(atom.predicate, scratch);
                     if (!f || !m.facts_.is_active(*f)) {
                         all = false;
                         break;
@@ -283,7 +288,7 @@ void Matcher::match(const CompiledRule& rule, std::optional<Seed> seed, const On
                    "a seed names a match condition");
     }
     QM_REQUIRE(!initial || initial->size() == rule.slot_count(), "an initial binding has one entry per slot");
-    Run run{*this, rule, seed, on_match, on_error, initial ? *initial : Binding(rule.slot_count()), {}, {}};
+    Run run{*this, rule, seed, on_match, on_error, initial ? *initial : Binding(rule.slot_count()), {}, {}, {}};
     run.step(0);
 }
 
@@ -291,7 +296,7 @@ std::optional<Binding> Matcher::prebind(const CompiledRule& rule, const Compiled
     const OnMatch none = [](const Binding&, std::span<const FactId>) {};
     bool failed = false;
     const OnError note = [&](const MatchError&) { failed = true; };
-    Run run{*this, rule, std::nullopt, none, note, Binding(rule.slot_count()), {}, {}};
+    Run run{*this, rule, std::nullopt, none, note, Binding(rule.slot_count()), {}, {}, {}};
     // Only plain variables and constants can be unified before the quantified variable is known.
     for (const CompiledTerm& t : atom.args)
         if (t.kind == CompiledTerm::Kind::call) return std::nullopt;
