@@ -59,12 +59,20 @@ TEST_CASE("rules/force: a free force pushes what it moves the body into (5.3.2)"
     CHECK_FALSE(l.holds("(force-on a (- 0) (- 0) hand)"));  // nothing comes back through the same face
 }
 
-TEST_CASE("rules/given_motion: a current motion persists and pushes what it moves into (6.2)") {
-    Laws l(laws, "fact (dimensions 2)\nfact (rigid-body a)\nfact (rigid-body b)\n"
-                 "fact (surface a ar)\nfact (surface-normal ar (+ 0))\nfact (origin-dir ar (- 0))\n"
-                 "fact (surface b bl)\nfact (surface-normal bl (- 0))\nfact (origin-dir bl (+ 0))\n"
-                 "fact (contact ar bl)\nfact (given-motion a (+ 0) (0))\n");
-    CHECK(l.holds("(force-on b (+ 0) (+ 0) a)"));
+TEST_CASE("rules/given_motion: a current motion persists, and pushes what it moves into (6.2, Table 3.2)") {
+    const std::string scene = "fact (dimensions 2)\nfact (rigid-body a)\nfact (rigid-body b)\n"
+                              "fact (surface a ar)\nfact (surface-normal ar (+ 0))\nfact (origin-dir ar (- 0))\n"
+                              "fact (surface b bl)\nfact (surface-normal bl (- 0))\nfact (origin-dir bl (+ 0))\n"
+                              "fact (contact ar bl)\nfact (external-force b (0 -) (0 0) weight)\n";
+    Laws l(laws, scene + "fact (given-motion a (+ 0) (0))\n");
     CHECK(l.nogoods().count({"(trans-motion a (0 0))"}) == 1);
     CHECK(l.nogoods().count({"(rot-motion a (+))"}) == 1);
+    // b is pushed: its weight's nearness threshold does not hold it back (it is not a force on b).
+    CHECK(l.holds("(pushed-by-current-motion b)"));
+    CHECK(l.all("force-on") == S{"(force-on b (0 -) (0 0) weight)"});
+    CHECK(l.nogoods().count({"(trans-motion b (+ 0))"}) == 0);
+    // Moving away from b pushes nothing.
+    Laws away(laws, scene + "fact (given-motion a (- 0) (0))\n");
+    CHECK_FALSE(away.holds("(pushed-by-current-motion b)"));
+    CHECK(away.nogoods().count({"(trans-motion b (+ 0))"}) == 1);
 }
