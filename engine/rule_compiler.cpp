@@ -27,7 +27,8 @@ public:
     // A ground term of a top-level fact: constants, and functions of constants evaluated now.
     std::optional<ValueId> ground(const TermSpec& t) {
         CompiledTerm c = term(t, true);
-        if (t.kind == TermSpec::Kind::variable) return std::nullopt;
+        // A variable anywhere (say inside a call) was reported by term(); there is nothing to evaluate.
+        if (!is_ground(c, Binding{})) return std::nullopt;
         Evaluation e = evaluate(c, Binding{}, values_, builtins_);
         if (!e.error.empty()) diagnostics_.error(t.where, e.error);
         return e.value;

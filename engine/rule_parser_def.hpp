@@ -76,8 +76,10 @@ struct test_ahead_parser : x3::parser<test_ahead_parser> {
 };
 inline const test_ahead_parser test_ahead{};
 
-// Opening a call or a set: one level deeper, or an expectation failure past max_term_nesting (so a
-// pathological input cannot exhaust the stack). `shallower` closes the level after the bracket.
+// Opening a call or a set: one level deeper, or an expectation failure at the opening bracket past
+// max_term_nesting (so a pathological input cannot exhaust the stack). Used only where the bracket
+// is next and the rule commits to it, so that every `deeper` is matched by a `shallower` or the item
+// is abandoned (the depth is reset for each item).
 struct deeper_parser : x3::parser<deeper_parser> {
     using attribute_type = x3::unused_type;
     static const bool has_attribute = false;
@@ -119,7 +121,10 @@ inline const auto integer_ahead = x3::lexeme[-x3::lit('-') >> +digit >> !word_ch
 // A keyword is a whole word: `not` but not `nothing`.
 inline auto kw(const char* word) { return x3::lexeme[x3::lit(word) >> !word_char]; }
 inline const auto top_keyword = bol >> (kw("rule") | kw("fact") | kw("assume") | kw("include"));
-inline const auto item_end = top_keyword | x3::eoi;
+// A rule's consequents end at the end of the text or at a line whose first token (in column 1)
+// cannot continue them: only `(`, `[` and `false` can, so `assume` in column 1 is a top-level item,
+// and a misspelt top-level keyword costs only its own item, not the rule before it.
+inline const auto consequents_end = x3::eoi | (bol >> !(x3::lit('(') | x3::lit('[') | kw("false")));
 
 // Named pieces used after `>`: the name is what "expected ..." says.
 template <class ID>
@@ -228,8 +233,9 @@ const x3::rule<item_entry_id, ast::Item> item_entry = "a top-level item";
 const x3::rule<atom_entry_id, ast::Atom> atom_entry = "an atom";
 
 // --- words and terms ---------------------------------------------------------------------------
-// A name is a word that is neither an integer nor a variable: `contact`, `trans-motion`, `<=`, `+`.
-const auto name_def = x3::lexeme[!integer_ahead >> !x3::lit('?') >> +word_char];
+// A name is a word that is neither an integer nor a variable: `contact`, `trans-motion`, `<=`, `+`;
+// a top-level keyword in column 1 is never a name (it starts the next item).
+const auto name_def = !top_keyword >> x3::lexeme[!integer_ahead >> !x3::lit('?') >> +word_char];
 const auto predicate_def = name;
 const auto function_name_def = name;
 const auto rule_name_def = name;
@@ -243,8 +249,8 @@ const auto integer_overflow =
     &integer_ahead > named<struct integer_overflow_id>("an integer from -9223372036854775808 to 9223372036854775807", !x3::eps);
 // `(+ 0 -)`: a parenthesised list of lone signs is always a direction, never a call.
 const auto direction_def = x3::lit('(') >> +x3::lexeme[sign_char >> !word_char] >> x3::lit(')');
-const auto call_def = (((x3::lit('(') >> deeper) > function_name > args > close_paren) >> shallower);
-const auto set_def = (((x3::lit('{') >> deeper) > args > close_brace) >> shallower);
+const auto call_def = (((&x3::lit('(') >> deeper >> x3::lit('(')) > function_name > args > close_paren) >> shallower);
+const auto set_def = (((&x3::lit('{') >> deeper >> x3::lit('{')) > args > close_brace) >> shallower);
 const auto term_def = variable | integer | integer_overflow | symbol | direction | call | set;
 const auto args_def = *(!top_keyword >> term);
 
@@ -279,7 +285,7 @@ const auto exactly_one_def =
 const auto bad_bracket_consequent = x3::lit('[') > named<struct bracket_consequent_id>("'for all' or 'exactly one'", !x3::eps);
 const auto consequent_def = falsity | assume_consequent | atom | for_all_consequent | exactly_one | bad_bracket_consequent;
 // One or more, up to the next top-level item: a consequent `assume` is indented, a top-level one is not.
-const auto consequents_def = +((!item_end) > consequent);
+const auto consequents_def = +((!consequents_end) > consequent);
 
 // --- top-level items ---------------------------------------------------------------------------
 const auto closing_quote = named<struct closing_quote_id>(closing_quote_name, x3::lit('"'));

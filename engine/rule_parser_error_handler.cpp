@@ -30,7 +30,9 @@ std::string describe(std::string_view t, std::size_t at, const char* end_of_inpu
     if (at >= t.size()) return end_of_input;
     if (t[at] == '\n') return "the end of the line";
     std::size_t end = at + 1;
-    if (t[at] == '"') {
+    if (t[at] == '(' || t[at] == '[') {  // with the word after it: "found '(p'" says more than "'('"
+        while (end < t.size() && is_word_char(t[end])) ++end;
+    } else if (t[at] == '"') {
         while (end < t.size() && t[end] != '"' && t[end] != '\n') ++end;
         if (end < t.size() && t[end] == '"') ++end;
     } else if (is_word_char(t[at])) {
