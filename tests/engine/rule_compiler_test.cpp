@@ -1,5 +1,5 @@
-// tests/engine/rule_compiler_test.cpp: rule text -> compiled program -> run, through the interim
-// reader (engine/rule_spec_reader.hpp) and the compiler: the scenario programs give their known
+// tests/engine/rule_compiler_test.cpp: rule text -> compiled program -> run, through the front end
+// (engine/rule_spec_reader.hpp, the X3 parser) and the compiler: the scenario programs give their known
 // answers, and bad programs give located diagnostics.
 #include "engine/engine.hpp"
 #include "engine/rule_compiler.hpp"
