@@ -5,10 +5,13 @@
 #include "engine/json_writer.hpp"
 #include "engine/report_printer.hpp"
 #include "engine/rule_compiler.hpp"
+#include "engine/rule_parser_source.hpp"
 #include "engine/run_report.hpp"
 #include "engine/why.hpp"
 #include "engine/why_printer.hpp"
+#include <fstream>
 #include <optional>
+#include <sstream>
 
 namespace qm::cli {
 namespace {
@@ -52,6 +55,22 @@ std::optional<RunOptions> parse(std::span<const std::string> args, std::ostream&
     return o;
 }
 
+// Prints diagnostics, each with the source line it points at: those of loading carry theirs already;
+// the engine's (e.g. an undecidable `not`) get it here from the rule file.
+void print_diagnostics(const Diagnostics& diagnostics, std::ostream& err) {
+    engine::SourceTexts texts;
+    for (const Diagnostic& d : diagnostics.items()) {
+        if (!d.source_line.empty() || texts.find(d.where.file)) continue;
+        std::ifstream in(d.where.file, std::ios::binary);
+        std::stringstream text;
+        text << in.rdbuf();
+        texts.add(engine::SourceText(d.where.file, text.str()));
+    }
+    Diagnostics shown;
+    texts.attach_lines(diagnostics, shown);
+    shown.print(err);
+}
+
 }  // namespace
 
 const char* run_usage() noexcept {
@@ -71,19 +90,21 @@ int run_command(std::span<const std::string> args, std::ostream& out, std::ostre
     Diagnostics diagnostics;
     auto loaded = engine::load_program(options->program, diagnostics);
     if (!loaded || diagnostics.has_errors()) {
-        diagnostics.print(err);
+        print_diagnostics(diagnostics, err);
         return 2;
     }
     engine::Engine e(std::move(loaded->program), std::move(loaded->values));
     e.run(diagnostics);
     if (diagnostics.has_errors()) {
-        diagnostics.print(err);
+        print_diagnostics(diagnostics, err);
         return 2;
     }
     if (options->why) {
         auto parsed = engine::parse_ground_atom(*options->why, e.values());
         if (!parsed.atom) {
-            err << "--why:1:" << parsed.column << ": error: " << parsed.error << '\n';
+            Diagnostics bad;
+            bad.error({"--why", 1, parsed.column}, parsed.error, *options->why);
+            bad.print(err);
             return 2;
         }
         auto f = e.find(parsed.atom->predicate, parsed.atom->args);

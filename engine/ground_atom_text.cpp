@@ -1,129 +1,58 @@
-// engine/ground_atom_text.cpp: a small recursive-descent reader for ground atoms (the full language
-// is parsed by E1's Spirit X3 grammar; a ground atom needs only constants).
+// engine/ground_atom_text.cpp: one atom parsed by the rule grammar, then its constants interned.
 #include "engine/ground_atom_text.hpp"
-#include <cctype>
+#include "engine/builtin_registry.hpp"
+#include "engine/rule_parser.hpp"
+#include <boost/variant/apply_visitor.hpp>
 
 namespace qm::engine {
 namespace {
 
-bool symbol_char(char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '*' || c == '.';
-}
-bool sign_char(char c) { return c == '+' || c == '0' || c == '-' || c == '?'; }
+struct Failure {
+    std::string message;
+    int offset = 0;
+};
 
-struct Reader {
-    std::string_view text;
+// The value of a constant term; a variable or a call is not ground.
+struct ValueOf {
     ValueTable& values;
-    std::size_t pos = 0;
-    std::string error;
-    std::size_t error_pos = 0;
-
-    void skip() {
-        while (pos < text.size() && std::isspace(static_cast<unsigned char>(text[pos]))) ++pos;
+    using result_type = ValueId;
+    ValueId operator()(const ast::Symbol& s) const { return values.symbol(s.text); }
+    ValueId operator()(const ast::Integer& i) const { return values.integer(i.value); }
+    ValueId operator()(const ast::Direction& d) const { return values.direction(d.signs); }
+    ValueId operator()(const ast::Variable& v) const {
+        throw Failure{"expected a constant but found the variable ?" + v.name + " (a fact is ground)", v.id_first};
     }
-    bool fail(std::string message) {
-        if (error.empty()) {
-            error = std::move(message);
-            error_pos = pos;
-        }
-        return false;
+    ValueId operator()(const ast::Call& c) const {
+        throw Failure{"expected a constant but found a call of '" + c.function.text + "' (a fact is ground)",
+                      c.id_first};
     }
-    bool at_end() const { return pos >= text.size(); }
-    // A lone sign: + 0 - ? not followed by a symbol character (so "-3" and "0a" are not signs).
-    bool lone_sign(std::size_t p) const {
-        return p < text.size() && sign_char(text[p]) && (p + 1 >= text.size() || !symbol_char(text[p + 1]) || text[p + 1] == '-');
-    }
-
-    // A parenthesised list of signs: a direction. Pre: text[pos] == '('.
-    bool direction_ahead() const {
-        std::size_t p = pos + 1;
-        bool any = false;
-        for (;;) {
-            while (p < text.size() && std::isspace(static_cast<unsigned char>(text[p]))) ++p;
-            if (p < text.size() && text[p] == ')') return any;
-            if (p >= text.size() || !sign_char(text[p])) return false;
-            if (p + 1 < text.size() && symbol_char(text[p + 1])) return false;
-            any = true;
-            ++p;
-        }
-    }
-
-    std::optional<ValueId> value() {
-        skip();
-        if (at_end()) return fail("expected a value but found the end"), std::nullopt;
-        char c = text[pos];
-        if (c == '(') {
-            if (!direction_ahead()) return fail("expected a direction of signs like (+ 0 -)"), std::nullopt;
-            ++pos;
-            std::string signs;
-            for (skip(); text[pos] != ')'; skip()) signs += text[pos++];
-            ++pos;
-            return values.direction(signs);
-        }
-        if (c == '{') {
-            ++pos;
-            std::vector<ValueId> elements;
-            for (skip(); !at_end() && text[pos] != '}'; skip()) {
-                auto v = value();
-                if (!v) return std::nullopt;
-                elements.push_back(*v);
-            }
-            if (at_end()) return fail("expected '}'"), std::nullopt;
-            ++pos;
-            return values.set(std::move(elements));
-        }
-        std::size_t start = pos;
-        if (c == '-' || std::isdigit(static_cast<unsigned char>(c))) {
-            std::size_t p = pos + (c == '-' ? 1 : 0);
-            std::size_t digits = p;
-            while (p < text.size() && std::isdigit(static_cast<unsigned char>(text[p]))) ++p;
-            if (p > digits && (p >= text.size() || !symbol_char(text[p]))) {
-                try {
-                    std::int64_t v = std::stoll(std::string(text.substr(start, p - start)));
-                    pos = p;
-                    return values.integer(v);
-                } catch (const std::out_of_range&) {
-                    return fail("integer out of range"), std::nullopt;
-                }
-            }
-        }
-        if (!std::isalpha(static_cast<unsigned char>(c))) return fail("expected a value"), std::nullopt;
-        while (pos < text.size() && symbol_char(text[pos])) ++pos;
-        return values.symbol(text.substr(start, pos - start));
-    }
-
-    std::optional<GroundAtom> atom() {
-        skip();
-        if (at_end() || text[pos] != '(') return fail("expected '(' to start a fact"), std::nullopt;
-        ++pos;
-        skip();
-        std::size_t start = pos;
-        if (at_end() || !std::isalpha(static_cast<unsigned char>(text[pos])))
-            return fail("expected a predicate name"), std::nullopt;
-        while (pos < text.size() && symbol_char(text[pos])) ++pos;
-        GroundAtom a{values.symbol(text.substr(start, pos - start)), {}};
-        for (skip(); !at_end() && text[pos] != ')'; skip()) {
-            auto v = value();
-            if (!v) return std::nullopt;
-            a.args.push_back(*v);
-        }
-        if (at_end()) return fail("expected ')' to end the fact"), std::nullopt;
-        ++pos;
-        skip();
-        if (!at_end()) return fail("unexpected text after the fact"), std::nullopt;
-        return a;
+    ValueId operator()(const ast::Set& s) const {
+        std::vector<ValueId> elements;
+        for (const auto& e : s.elements) elements.push_back(boost::apply_visitor(*this, e));
+        return values.set(std::move(elements));
     }
 };
 
 }  // namespace
 
 GroundAtomParse parse_ground_atom(std::string_view text, ValueTable& values) {
-    Reader r{text, values, 0, {}, 0};
     GroundAtomParse out;
-    out.atom = r.atom();
-    if (!out.atom) {
-        out.error = r.error;
-        out.column = static_cast<std::uint32_t>(r.error_pos + 1);
+    const SourceText src("--why", std::string(text));
+    Diagnostics diagnostics;
+    auto atom = parse_rule_atom(src, default_builtins(), diagnostics);
+    if (!atom) {
+        const Diagnostic& d = diagnostics.items().front();
+        out.error = d.message;
+        out.column = d.where.column;
+        return out;
+    }
+    try {
+        GroundAtom g{values.symbol(atom->predicate.text), {}};
+        for (const auto& a : atom->args) g.args.push_back(boost::apply_visitor(ValueOf{values}, a));
+        out.atom = std::move(g);
+    } catch (const Failure& f) {
+        out.error = f.message;
+        out.column = src.locate(static_cast<std::size_t>(std::max(f.offset, 0))).column;
     }
     return out;
 }

@@ -11,11 +11,17 @@ std::string at(const SourceLocation& w) {
 
 class Checker {
 public:
-    explicit Checker(Diagnostics& diagnostics) : diagnostics_(diagnostics) {}
+    Checker(Diagnostics& diagnostics, const BuiltinRegistry& builtins) : diagnostics_(diagnostics), builtins_(builtins) {}
 
     // The first use of a predicate fixes its arity (as the thesis' relations have fixed places,
     // e.g. (contact ?a ?b) in Table 3.1); later uses must agree.
-    void use(const AtomSpec& a) {
+    void use(const AtomSpec& a, const char* hint = "") {
+        if (auto id = builtins_.find(a.predicate); id && builtins_.get(*id).kind == BuiltinKind::test) {
+            // A condition `(< ...)` always calls the test, so no fact of this "predicate" could be matched.
+            ok_ = false;
+            diagnostics_.error(a.where, "'" + a.predicate + "' is a builtin test, not a predicate" + hint);
+            return;
+        }
         auto [it, fresh] = first_use_.try_emplace(a.predicate, &a);
         if (fresh || it->second->args.size() == a.args.size()) return;
         ok_ = false;
@@ -33,11 +39,13 @@ public:
         for (const ConditionSpec& c : r.conditions) {
             switch (c.kind) {
                 case ConditionSpec::Kind::atom:
-                case ConditionSpec::Kind::negation:
                 case ConditionSpec::Kind::aggregate: use(c.atom); break;
+                case ConditionSpec::Kind::negation:
+                    use(c.atom, ": `not` applies to atoms; write the opposite test instead");
+                    break;
                 case ConditionSpec::Kind::for_all:
                 case ConditionSpec::Kind::exists:
-                    for (const AtomSpec& a : c.atoms) use(a);
+                    for (const AtomSpec& a : c.atoms) use(a, ": put tests after `where`");
                     break;
                 case ConditionSpec::Kind::test: break;
             }
@@ -50,6 +58,7 @@ public:
 
 private:
     Diagnostics& diagnostics_;
+    const BuiltinRegistry& builtins_;
     std::map<std::string, const AtomSpec*> first_use_;
     std::map<std::string, const RuleSpec*> first_rule_;
     bool ok_ = true;
@@ -57,8 +66,8 @@ private:
 
 }  // namespace
 
-bool check_program(const ProgramSpec& spec, Diagnostics& diagnostics) {
-    Checker checker(diagnostics);
+bool check_program(const ProgramSpec& spec, Diagnostics& diagnostics, const BuiltinRegistry& builtins) {
+    Checker checker(diagnostics, builtins);
     for (const AtomSpec& f : spec.facts) checker.use(f);
     for (const AtomSpec& a : spec.assumptions) checker.use(a);
     for (const RuleSpec& r : spec.rules) checker.rule(r);

@@ -27,7 +27,8 @@ public:
     // A ground term of a top-level fact: constants, and functions of constants evaluated now.
     std::optional<ValueId> ground(const TermSpec& t) {
         CompiledTerm c = term(t, true);
-        if (t.kind == TermSpec::Kind::variable) return std::nullopt;
+        // A variable anywhere (say inside a call) was reported by term(); there is nothing to evaluate.
+        if (!is_ground(c, Binding{})) return std::nullopt;
         Evaluation e = evaluate(c, Binding{}, values_, builtins_);
         if (!e.error.empty()) diagnostics_.error(t.where, e.error);
         return e.value;
@@ -277,10 +278,9 @@ std::optional<LoadedProgram> compile_program(const ProgramSpec& spec, Diagnostic
 
 }  // namespace qm::engine
 
-// The interim front end (rule_spec_reader.hpp) until E1's loader is in the tree.
+// Loading: the front end (rule_spec_reader.hpp), then the checker and the compiler.
 #include "engine/rule_checker.hpp"
 #include "engine/rule_spec_reader.hpp"
-#include <filesystem>
 
 namespace qm::engine {
 std::optional<LoadedProgram> load_program(const std::string& path, Diagnostics& diagnostics) {
@@ -289,22 +289,18 @@ std::optional<LoadedProgram> load_program(const std::string& path, Diagnostics& 
 
 std::optional<LoadedProgram> load_programs(std::span<const std::string> paths, Diagnostics& diagnostics) {
     ProgramSpec spec;
-    std::size_t before = diagnostics.size();
-    std::string joined;
-    for (const auto& p : paths) {
-        if (!std::filesystem::is_regular_file(p)) {
-            diagnostics.error({p, 1, 1}, "cannot open rule file '" + p + "'");
-            continue;
-        }
-        joined += "include \"" + std::filesystem::path(p).lexically_normal().string() + "\"\n";
-    }
-    read_rule_text(joined, "<command line>", spec, diagnostics);
-    for (std::size_t i = before; i < diagnostics.size(); ++i)
-        if (diagnostics.items()[i].severity == Severity::error) return std::nullopt;
-    // The checker's findings and the compiler's are independent: report both in one run.
-    bool checked = check_program(spec, diagnostics);
-    auto program = compile_program(spec, diagnostics);
-    if (!checked) return std::nullopt;
+    SourceTexts sources;
+    Diagnostics read;
+    read_rule_files(paths, spec, read, default_builtins(), &sources);
+    // A syntax error drops only its own item, so the items that were read are still checked and
+    // compiled: one run reports the syntax errors and the semantic errors of everything else, each
+    // with the source line it points at.
+    Diagnostics found;
+    bool checked = check_program(spec, found);
+    auto program = compile_program(spec, found);
+    sources.attach_lines(read, diagnostics);
+    sources.attach_lines(found, diagnostics);
+    if (read.has_errors() || !checked || found.has_errors()) return std::nullopt;
     return program;
 }
 }  // namespace qm::engine

@@ -2,8 +2,8 @@
 // Provides:   compile_program(), ProgramSpec -> CompiledProgram: interns constants, numbers each
 //             rule's variables into slots, resolves builtins, checks what the runtime relies on, and
 //             assigns strata (a predicate used under `not` or aggregated gets a lower stratum than
-//             the rules that use it that way). load_program() reads a .rules file with E1's loader
-//             and compiles it.
+//             the rules that use it that way). load_program() reads a .rules file with the front end
+//             (rule_spec_reader.hpp), checks it (rule_checker.hpp) and compiles it.
 // Errors:     located diagnostics (never throws for bad input): unknown builtin or wrong arity, a
 //             test used as a function or vice versa, a non-ground top-level fact, a variable used
 //             before it is bound (in a builtin test, a quantifier's set, a `for all` atom, a
@@ -28,7 +28,7 @@ struct LoadedProgram {
 // Empty (with diagnostics) if the program has errors.
 [[nodiscard]] std::optional<LoadedProgram> compile_program(const ProgramSpec& spec, Diagnostics& diagnostics,
                                                            const BuiltinRegistry& builtins = default_builtins());
-// Loads path (and its includes) with the program loader, then compiles it.
+// Reads path (and its includes), checks and compiles it. Every diagnostic carries its source line.
 [[nodiscard]] std::optional<LoadedProgram> load_program(const std::string& path, Diagnostics& diagnostics);
 // Loads several files (e.g. every law file of rules/) into one program, in the order given; a file
 // included by several of them is read once.

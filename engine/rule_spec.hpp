@@ -1,8 +1,8 @@
 // engine/rule_spec.hpp
 // Provides:   ProgramSpec, a neutral, parser-independent description of a rule program (names are
 //             still text, variables still names). rule_compiler.hpp turns it into a CompiledProgram;
-//             ast_to_spec.hpp fills it from E1's AST. Keeping this seam lets the compiler be tested
-//             without the parser and keeps the parser's types out of the runtime.
+//             rule_parser_to_spec.hpp fills it from the X3 parser's AST. Keeping this seam lets the
+//             compiler be tested without the parser and keeps the parser's types out of the runtime.
 // Ownership:  plain values.
 // Knows nothing of the ATMS.
 #pragma once

@@ -1,28 +1,33 @@
 // engine/rule_spec_reader.hpp
-// Provides:   read_rule_file(), a small recursive-descent reader of the agreed rule syntax (the
-//             "starting point" of docs/RULES.md) straight into a ProgramSpec, following `include`s
-//             relative to the including file. It is the runtime's interim front end, used by
-//             load_program() while E1's Spirit X3 parser and loader (engine/rule_parser.*,
-//             engine/program_loader.*) are not in the tree; once they are, load_program() should
-//             parse with them and convert the AST to a ProgramSpec instead.
-// Layout:     a top-level item (`include`, `fact`, `assume`, `rule`) starts in column 1; a rule's
-//             conditions and consequents continue on indented lines. This is what separates a
-//             consequent `assume (...)` from a following top-level `assume (...)`.
-// Errors:     located diagnostics `expected ... but found ...`; reading resumes at the next top-level
-//             item, so one run reports several errors. Include cycles and missing files are located
-//             at the `include`. Never throws for bad input.
+// Provides:   the front end of the rule language: read_rule_file() / read_rule_files() /
+//             read_rule_text() parse rule files with the Spirit X3 parser (rule_parser.hpp), follow
+//             `include "FILE"` (relative to the including file; each file is read once, in the place
+//             of its first include) and append every fact, assumption and rule, in source order, to a
+//             ProgramSpec (rule_parser_to_spec.hpp). load_program() (rule_compiler.hpp) then checks and
+//             compiles it.
+// Ownership:  the texts read are recorded in the optional SourceTexts, so that later diagnostics
+//             (checker, compiler, engine) can be shown with their source line.
+// Errors:     located diagnostics only, never an exception for bad input: every syntax error of every
+//             file (the parser resumes at the next top-level item), an unreadable file, an include
+//             cycle (at the `include`) and a missing included file (at its name).
 // Knows nothing of the ATMS.
 #pragma once
 #include "engine/builtin_registry.hpp"
+#include "engine/rule_parser_source.hpp"
 #include "engine/rule_spec.hpp"
 #include "qm/diagnostics.hpp"
+#include <span>
 #include <string>
 
 namespace qm::engine {
-// Appends the items of path (and its includes, each read once) to spec.
+// Appends the items of path (and of its includes) to spec.
 void read_rule_file(const std::string& path, ProgramSpec& spec, Diagnostics& diagnostics,
-                    const BuiltinRegistry& builtins = default_builtins());
+                    const BuiltinRegistry& builtins = default_builtins(), SourceTexts* sources = nullptr);
+// Reads several files into one spec, in the order given, as if each were included in turn (a file
+// reached twice is read once).
+void read_rule_files(std::span<const std::string> paths, ProgramSpec& spec, Diagnostics& diagnostics,
+                     const BuiltinRegistry& builtins = default_builtins(), SourceTexts* sources = nullptr);
 // Reads text as if it were the file `name` (includes resolved relative to name's directory).
 void read_rule_text(const std::string& text, const std::string& name, ProgramSpec& spec, Diagnostics& diagnostics,
-                    const BuiltinRegistry& builtins = default_builtins());
+                    const BuiltinRegistry& builtins = default_builtins(), SourceTexts* sources = nullptr);
 }  // namespace qm::engine

@@ -2,8 +2,9 @@
 // Provides:   stratify_rules(), which assigns each compiled rule the stratum it runs in: a rule runs
 //             no earlier than the predicates it uses positively, and strictly after the predicates it
 //             uses under `not` or aggregates (so those are complete when it runs). Returns the number
-//             of strata. (The front end's checker reports unstratifiable programs with the cycle;
-//             this pass only orders rules for the runtime, and reports a cycle itself if it meets one.)
+//             of strata. A program that cannot be stratified gets one located error per rule whose
+//             `not` or aggregate depends on the rule's own conclusions, naming the predicates and rules
+//             of the cycle (docs/RULES.md, "unstratifiable").
 // Knows nothing of the ATMS.
 #pragma once
 #include "engine/compiled_rule.hpp"
@@ -11,7 +12,7 @@
 #include "qm/diagnostics.hpp"
 
 namespace qm::engine {
-// Sets CompiledRule::stratum for every rule. Reports a located error per rule whose negation or
-// aggregate depends on its own conclusions. Returns max stratum + 1 (at least 1).
+// Sets CompiledRule::stratum for every rule. Reports a located error (at the `not` or aggregate) per
+// rule whose negation or aggregate depends on its own conclusions. Returns max stratum + 1 (>= 1).
 std::uint32_t stratify_rules(CompiledProgram& program, const ValueTable& values, Diagnostics& diagnostics);
 }  // namespace qm::engine

@@ -1,12 +1,19 @@
-// tests/cli/run_command_test.cpp: `qm-atms run` end to end through the built executable: exit
-// statuses (0 ok, 2 bad input), the JSON shape, --why, and the other argument forms of main.
+// tests/cli/run_command_test.cpp: `qm-atms run` end to end through the built executable. The JSON
+// output is read back by a small independent JSON reader and compared, for N-queens N = 4..8, with
+// a brute-force enumeration (facts and labels, minimal nogoods, interpretations = the solutions:
+// 2, 10, 4, 40, 92); --why on a fact that holds and on a ruled-out one (exact text); exit statuses
+// (0 ok, 2 bad input) and the located, caret-marked diagnostics of bad input.
 #include <cstdio>
 #include <cstdlib>
 #include <doctest/doctest.h>
 #include <fstream>
+#include <map>
+#include <memory>
+#include <set>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <vector>
 
 namespace {
 
@@ -25,7 +32,8 @@ std::string slurp(const std::string& path) {
 Result qm_atms(const std::string& args) {
     static int counter = 0;
     std::string base = std::string(QM_BINARY_DIR) + "/cli_test_" + std::to_string(++counter);
-    std::string cmd = std::string(QM_BINARY_DIR) + "/cli/qm-atms " + args + " >" + base + ".out 2>" + base + ".err";
+    std::string cmd = "cd " + std::string(QM_BINARY_DIR) + " && ./cli/qm-atms " + args + " >" + base + ".out 2>" +
+                      base + ".err";
     int raw = std::system(cmd.c_str());
     Result r;
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -36,69 +44,257 @@ Result qm_atms(const std::string& args) {
     return r;
 }
 
+// Written in the binary directory, named relative to it (qm_atms runs there), so messages are stable.
 std::string write_temp(const std::string& name, const std::string& text) {
-    std::string path = std::string(QM_BINARY_DIR) + "/" + name;
-    std::ofstream(path) << text;
-    return path;
+    std::ofstream(std::string(QM_BINARY_DIR) + "/" + name) << text;
+    return name;
 }
 
 std::string scenario(const std::string& name) { return std::string(QM_SOURCE_DIR) + "/scenarios/rules/" + name; }
 
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-    return n;
+// --- a minimal JSON reader: objects (keys kept in order), arrays and strings are all we need -----
+struct Json {
+    enum class Kind { string, array, object } kind = Kind::string;
+    std::string text;
+    std::vector<Json> items;                         // array elements; object values
+    std::vector<std::string> keys;                   // object keys, in order
+};
+
+class JsonReader {
+public:
+    explicit JsonReader(const std::string& s) : s_(s) {}
+    bool read(Json& out) {
+        bool ok = value(out);
+        space();
+        return ok && i_ == s_.size();
+    }
+
+private:
+    void space() {
+        while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\n')) ++i_;
+    }
+    bool eat(char c) {
+        space();
+        if (i_ < s_.size() && s_[i_] == c) return ++i_, true;
+        return false;
+    }
+    bool string(std::string& out) {
+        if (!eat('"')) return false;
+        while (i_ < s_.size() && s_[i_] != '"') {
+            if (s_[i_] == '\\') {
+                if (++i_ >= s_.size()) return false;
+                const char c = s_[i_];
+                out += c == 'n' ? '\n' : c == 't' ? '\t' : c;
+                if (c == 'u') return false;  // not produced for our texts
+            } else {
+                out += s_[i_];
+            }
+            ++i_;
+        }
+        return eat('"');
+    }
+    bool value(Json& out) {
+        space();
+        if (i_ < s_.size() && s_[i_] == '"') return out.kind = Json::Kind::string, string(out.text);
+        if (eat('[')) {
+            out.kind = Json::Kind::array;
+            if (eat(']')) return true;
+            do {
+                out.items.emplace_back();
+                if (!value(out.items.back())) return false;
+            } while (eat(','));
+            return eat(']');
+        }
+        if (eat('{')) {
+            out.kind = Json::Kind::object;
+            if (eat('}')) return true;
+            do {
+                out.keys.emplace_back();
+                out.items.emplace_back();
+                if (!string(out.keys.back()) || !eat(':') || !value(out.items.back())) return false;
+            } while (eat(','));
+            return eat('}');
+        }
+        return false;
+    }
+    const std::string& s_;
+    std::size_t i_ = 0;
+};
+
+using Env = std::set<std::string>;
+
+// An array of arrays of strings (a label, the nogoods, the interpretations), as sets.
+bool env_list(const Json& j, std::set<Env>& out) {
+    if (j.kind != Json::Kind::array) return false;
+    for (const Json& e : j.items) {
+        if (e.kind != Json::Kind::array) return false;
+        Env env;
+        for (const Json& a : e.items) {
+            if (a.kind != Json::Kind::string) return false;
+            env.insert(a.text);
+        }
+        out.insert(env);
+    }
+    return true;
+}
+
+std::string queen(int r, int c) { return "(queen " + std::to_string(r) + " " + std::to_string(c) + ")"; }
+
+void solutions(int n, int row, std::vector<int>& cols, std::set<Env>& out) {
+    if (row > n) {
+        Env s;
+        for (int r = 1; r <= n; ++r) s.insert(queen(r, cols[static_cast<std::size_t>(r)]));
+        out.insert(s);
+        return;
+    }
+    for (int c = 1; c <= n; ++c) {
+        bool safe = true;
+        for (int r = 1; r < row; ++r) {
+            int d = cols[static_cast<std::size_t>(r)] - c;
+            safe = safe && d != 0 && d != row - r && d != r - row;
+        }
+        if (!safe) continue;
+        cols[static_cast<std::size_t>(row)] = c;
+        solutions(n, row + 1, cols, out);
+    }
 }
 
 }  // namespace
 
-TEST_CASE("cli/run_command: --json prints exactly the agreed object") {
-    Result r = qm_atms("run " + scenario("queens6.rules") + " --json");
+TEST_CASE("cli/run_command: --json for N-queens equals a brute-force enumeration, N = 4..8") {
+    const std::map<int, std::size_t> known = {{4, 2}, {5, 10}, {6, 4}, {7, 40}, {8, 92}};  // OEIS A000170
+    for (auto [n, count] : known) {
+        CAPTURE(n);
+        Result r = qm_atms("run " + scenario("queens" + std::to_string(n) + ".rules") + " --json");
+        CHECK(r.status == 0);
+        CHECK(r.err.empty());
+        REQUIRE(r.out.size() > 1);
+        CHECK(r.out.back() == '\n');
+        Json top;
+        REQUIRE(JsonReader(r.out).read(top));
+        REQUIRE(top.kind == Json::Kind::object);
+        REQUIRE(top.keys == std::vector<std::string>{"facts", "nogoods", "interpretations"});
+
+        // Facts: every (queen r c), labelled by its own assumption, and every premise (row r).
+        const Json& facts = top.items[0];
+        REQUIRE(facts.kind == Json::Kind::array);
+        std::map<std::string, std::set<Env>> labels;
+        for (const Json& f : facts.items) {
+            REQUIRE(f.kind == Json::Kind::object);
+            REQUIRE(f.keys == std::vector<std::string>{"fact", "label"});
+            REQUIRE(f.items[0].kind == Json::Kind::string);
+            REQUIRE(env_list(f.items[1], labels[f.items[0].text]));
+        }
+        std::map<std::string, std::set<Env>> expected_labels;
+        for (int row = 1; row <= n; ++row) {
+            expected_labels["(row " + std::to_string(row) + ")"] = {Env{}};
+            for (int c = 1; c <= n; ++c) expected_labels[queen(row, c)] = {Env{queen(row, c)}};
+        }
+        CHECK(labels == expected_labels);
+
+        // Minimal nogoods: two queens in one row (the choice set), one column or one diagonal.
+        std::set<Env> nogoods, expected_nogoods;
+        REQUIRE(env_list(top.items[1], nogoods));
+        for (int r1 = 1; r1 <= n; ++r1)
+            for (int c1 = 1; c1 <= n; ++c1)
+                for (int r2 = r1; r2 <= n; ++r2)
+                    for (int c2 = 1; c2 <= n; ++c2) {
+                        bool attack = r1 == r2 ? c1 < c2 : (c1 == c2 || c1 - c2 == r1 - r2 || c2 - c1 == r1 - r2);
+                        if (attack) expected_nogoods.insert(Env{queen(r1, c1), queen(r2, c2)});
+                    }
+        CHECK(nogoods == expected_nogoods);
+
+        std::set<Env> interpretations, expected;
+        REQUIRE(env_list(top.items[2], interpretations));
+        CHECK(top.items[2].items.size() == count);  // no duplicates either
+        std::vector<int> cols(static_cast<std::size_t>(n) + 1, 0);
+        solutions(n, 1, cols, expected);
+        CHECK(expected.size() == count);
+        CHECK(interpretations == expected);
+        // Deterministic: a second run prints the same bytes.
+        CHECK(qm_atms("run " + scenario("queens" + std::to_string(n) + ".rules") + " --json").out == r.out);
+    }
+}
+
+TEST_CASE("cli/run_command: --json writes a fact that holds nowhere with an empty label") {
+    std::string p = write_temp("cli_json_empty.rules",
+                               "assume (open b)\nassume (closed b)\nrule door when (open ?d) (closed ?d) then (ajar ?d)\n"
+                               "rule exclusive when (open ?d) (closed ?d) then false\n");
+    Result r = qm_atms("run " + p + " --json");
     CHECK(r.status == 0);
-    CHECK(r.err.empty());
-    REQUIRE(r.out.rfind("{\"facts\": [{\"fact\": \"(queen 1 1)\", \"label\": [[\"(queen 1 1)\"]]}", 0) == 0);
-    auto nogoods = r.out.find("], \"nogoods\": [[");
-    auto interpretations = r.out.find("]], \"interpretations\": [[");
-    REQUIRE(nogoods != std::string::npos);
-    REQUIRE(interpretations != std::string::npos);
-    CHECK(r.out.substr(r.out.size() - 3) == "]}\n");
-    // 6-queens has 4 solutions of 6 queens each.
-    std::string tail = r.out.substr(interpretations + std::string("]], \"interpretations\": ").size());
-    CHECK(count(tail, "[\"(queen 1 ") == 4);
-    CHECK(count(tail, "\"(queen ") == 24);
-    // Deterministic: a second run prints the same bytes.
-    CHECK(qm_atms("run " + scenario("queens6.rules") + " --json").out == r.out);
+    CHECK(r.out == "{\"facts\": [{\"fact\": \"(ajar b)\", \"label\": []}, {\"fact\": \"(closed b)\", \"label\": "
+                   "[[\"(closed b)\"]]}, {\"fact\": \"(open b)\", \"label\": [[\"(open b)\"]]}], \"nogoods\": "
+                   "[[\"(closed b)\", \"(open b)\"]], \"interpretations\": [[]]}\n");
 }
 
-TEST_CASE("cli/run_command: --why explains a fact and a ruled-out fact") {
-    Result holds = qm_atms("run " + scenario("queens4.rules") + " --why '(queen 1 2)'");
-    CHECK(holds.status == 0);
-    CHECK(holds.out.find("(queen 1 2) holds") == 0);
-    CHECK(holds.out.find("rule place at ") != std::string::npos);
-    CHECK(holds.out.find("{?r = 1, ?c = 2}: (row 1), assume (queen 1 2)") != std::string::npos);
-    Result out = qm_atms("run " + scenario("polybox.rules") + " --why '(value f 12)'");
-    CHECK(out.status == 0);
-    CHECK(out.out.find("(value f 12) is ruled out") == 0);
-    CHECK(out.out.find("nogood {(mode a1 ok), (mode m1 ok), (mode m2 ok)}") != std::string::npos);
-    CHECK(out.out.find("rule one-value-per-wire at ") != std::string::npos);
-    Result bad = qm_atms("run " + scenario("queens4.rules") + " --why 'queen 1 2'");
-    CHECK(bad.status == 2);
-    CHECK(bad.err.find("--why:1:1: error: expected '(' to start a fact") == 0);
+TEST_CASE("cli/run_command: --why prints the justification tree, or the nogoods ruling a fact out") {
+    std::string held = write_temp("cli_why_holds.rules",
+                                  "fact (edge a b)\nfact (edge b c)\nassume (open b)\n\n"
+                                  "rule path-1\n  when (edge ?x ?y)\n  then (path ?x ?y)\n\n"
+                                  "rule path-2\n  when (path ?x ?y) (edge ?y ?z) (open ?y)\n  then (path ?x ?z)\n");
+    Result h = qm_atms("run " + held + " --why '(path a c)'");
+    CHECK(h.status == 0);
+    CHECK(h.out == "(path a c) holds\n"
+                   "  in {(open b)}:\n"
+                   "    (open b) <= assumption at cli_why_holds.rules:3: assume (open b)\n"
+                   "    (edge b c) <= premise at cli_why_holds.rules:2\n"
+                   "    (edge a b) <= premise at cli_why_holds.rules:1\n"
+                   "    (path a b) <= rule path-1 at cli_why_holds.rules:5 {?x = a, ?y = b}: (edge a b)\n"
+                   "    (path a c) <= rule path-2 at cli_why_holds.rules:9 {?x = a, ?y = b, ?z = c}: (path a b), "
+                   "(edge b c), (open b)\n");
+    std::string out = write_temp("cli_why_out.rules",
+                                 "assume (open b)\nassume (closed b)\n\nrule door\n  when (open ?d) (closed ?d)\n"
+                                 "  then (ajar ?d)\n\nrule exclusive\n  when (open ?d) (closed ?d)\n  then false\n");
+    Result o = qm_atms("run " + out + " --why '(ajar b)'");
+    CHECK(o.status == 0);
+    CHECK(o.out == "(ajar b) is ruled out: every environment supporting it is nogood\n"
+                   "  nogood {(closed b), (open b)}:\n"
+                   "    (closed b) <= assumption at cli_why_out.rules:2: assume (closed b)\n"
+                   "    (open b) <= assumption at cli_why_out.rules:1: assume (open b)\n"
+                   "    false <= rule exclusive at cli_why_out.rules:8 {?d = b}: (open b), (closed b)\n");
+    Result none = qm_atms("run " + out + " --why '(ajar c)'");
+    CHECK(none.status == 0);
+    CHECK(none.out == "(ajar c) is not a fact of this program (no rule concludes it)\n");
+    // The bundled polybox: (value f 12) is excluded by both of de Kleer and Williams' conflicts.
+    Result poly = qm_atms("run " + scenario("polybox.rules") + " --why '(value f 12)'");
+    CHECK(poly.status == 0);
+    CHECK(poly.out.find("(value f 12) is ruled out") == 0);
+    CHECK(poly.out.find("  nogood {(mode a1 ok), (mode m1 ok), (mode m2 ok)}:\n") != std::string::npos);
+    CHECK(poly.out.find("  nogood {(mode a1 ok), (mode a2 ok), (mode m1 ok), (mode m3 ok)}:\n") != std::string::npos);
 }
 
-TEST_CASE("cli/run_command: bad input exits 2 with located diagnostics") {
+TEST_CASE("cli/run_command: bad input exits 2 with located diagnostics and a caret") {
     std::string syntax = write_temp("cli_bad_syntax.rules", "fact (p 1)\nrule r when (p ?x) then (q ?y)\nfact q\n");
     Result r = qm_atms("run " + syntax);
     CHECK(r.status == 2);
-    CHECK(r.err.find(syntax + ":3:6: error: expected '(' but found 'q'") != std::string::npos);
+    CHECK(r.out.empty());
+    CHECK(r.err == "cli_bad_syntax.rules:2:28: error: variable ?y is used before it is bound\n"
+                   "  rule r when (p ?x) then (q ?y)\n"
+                   "                             ^\n"
+                   "cli_bad_syntax.rules:3:6: error: expected an atom like (p ?x) but found 'q'\n"
+                   "  fact q\n"
+                   "       ^\n");
     std::string negation = write_temp("cli_bad_negation.rules",
                                       "fact (bird opus)\nassume (penguin opus)\n"
                                       "rule flies when (bird ?b) not (penguin ?b) then (flies ?b)\n");
     Result n = qm_atms("run " + negation);
     CHECK(n.status == 2);
     CHECK(n.err.find(negation + ":3:31: error: rule 'flies': cannot decide (penguin opus)") == 0);
-    CHECK(qm_atms("run /no/such/file.rules").status == 2);
+    CHECK(n.err.find("\n  rule flies when (bird ?b) not (penguin ?b) then (flies ?b)\n"
+                     "                                ^\n") != std::string::npos);
+    Result why = qm_atms("run " + scenario("queens4.rules") + " --why 'queen 1 2'");
+    CHECK(why.status == 2);
+    CHECK(why.err == "--why:1:1: error: expected an atom like (p ?x) but found 'queen'\n  queen 1 2\n  ^\n");
+    Result ground = qm_atms("run " + scenario("queens4.rules") + " --why '(queen ?r 2)'");
+    CHECK(ground.status == 2);
+    CHECK(ground.err.find("--why:1:8: error: expected a constant but found the variable ?r") == 0);
+    Result missing = qm_atms("run /no/such/file.rules");
+    CHECK(missing.status == 2);
+    CHECK(missing.err == "/no/such/file.rules:1:1: error: cannot open rule file '/no/such/file.rules'\n");
     CHECK(qm_atms("run " + scenario("queens4.rules") + " --bogus").status == 2);
+    CHECK(qm_atms("run " + scenario("queens4.rules") + " --why").status == 2);
+    CHECK(qm_atms("run " + scenario("queens4.rules") + " --why '(queen 1 1)' --json").status == 2);
+    CHECK(qm_atms("run a.rules b.rules").status == 2);
     CHECK(qm_atms("run").status == 2);
 }
 

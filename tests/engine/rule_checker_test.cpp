@@ -1,11 +1,14 @@
 // tests/engine/rule_checker_test.cpp: check_program() against a brute-force oracle on seeded random
 // programs (a predicate is inconsistent iff two of its uses differ in arity; the number of errors is
 // the number of uses that disagree with the first one, plus one per repeated rule name), and the
-// bundled programs pass.
+// bundled programs pass; builtin test names are not predicates; the examples of docs/RULES.md compile.
 #include "engine/rule_checker.hpp"
+#include "engine/rule_compiler.hpp"
 #include "engine/rule_spec_reader.hpp"
 #include <doctest/doctest.h>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <map>
 #include <random>
 
@@ -85,17 +88,46 @@ TEST_CASE("engine/rule_checker: the bundled programs pass; messages name the fir
     CHECK(d.items()[0].message == "predicate 'p' is used here with 2 argument(s) but with 1 at t.rules:1:6");
 }
 
-TEST_CASE("engine/rule_checker: the worked example of docs/RULES.md reads, checks and compiles") {
-    const char* text = "fact (contact a b (0 +))\nfact (motion a (0 -))\nfact (motion a (+ 0))\n"
-                       "rule contact-blocks-motion\n"
-                       "  when (contact ?a ?b ?normal) (motion ?a ?d) (open-half-plane ?d (neg ?normal))\n"
-                       "  then false\n";
+TEST_CASE("engine/rule_checker: every ```rules example of docs/RULES.md reads, checks and compiles") {
+    std::ifstream in(std::string(QM_SOURCE_DIR) + "/docs/RULES.md");
+    std::stringstream doc;
+    doc << in.rdbuf();
+    const std::string text = doc.str();
+    std::size_t examples = 0;
+    for (std::size_t at = text.find("```rules\n"); at != std::string::npos; at = text.find("```rules\n", at + 1)) {
+        const std::size_t begin = at + 9, end = text.find("```", begin);
+        REQUIRE(end != std::string::npos);
+        const std::string example = text.substr(begin, end - begin);
+        CAPTURE(example);
+        qm::Diagnostics d;
+        ProgramSpec spec;
+        read_rule_text(example, "example.rules", spec, d);
+        CHECK(check_program(spec, d));
+        CHECK(compile_program(spec, d).has_value());
+        CHECK(!d.has_errors());
+        CHECK(!spec.rules.empty());
+        ++examples;
+    }
+    CHECK(examples >= 2);
+}
+
+TEST_CASE("engine/rule_checker: a builtin test's name is not a predicate, in every atom position") {
+    // Each line puts a test name in one atom position; function names (neg, +) are fine as predicates.
+    const char* text = "fact (< 1 2)\nassume (zero? (0))\nfact (neg a)\nfact (+ 1)\n"
+                       "rule r1 when (p ?x) not (= ?x 1) then (q ?x)\n"
+                       "rule r2 when (p ?x) [exists ?y in {1}: (> ?y ?x)] then (q ?x)\n"
+                       "rule r3 when (p ?x) [sum ?v over (!= ?x ?v) with + start 0 as ?t] then (q ?t)\n"
+                       "rule r4 when (p ?x) then (half-plane ?x ?x)\n"
+                       "rule r5 when (p ?x) then [for all ?y in {1}: (<= ?y ?x)]\n";
     qm::Diagnostics d;
     ProgramSpec spec;
-    read_rule_text(text, "example.rules", spec, d);
-    CHECK(check_program(spec, d));
-    CHECK(!d.has_errors());
-    REQUIRE(spec.rules.size() == 1);
-    CHECK(spec.rules[0].conditions.size() == 3);
-    CHECK(spec.rules[0].conditions[2].kind == ConditionSpec::Kind::test);
+    read_rule_text(text, "t.rules", spec, d);
+    REQUIRE(!d.has_errors());
+    CHECK(!check_program(spec, d));
+    std::vector<std::uint32_t> lines;
+    for (const auto& x : d.items()) {
+        CHECK(x.message.find("is a builtin test, not a predicate") != std::string::npos);
+        lines.push_back(x.where.line);
+    }
+    CHECK(lines == std::vector<std::uint32_t>{1, 2, 5, 6, 7, 8, 9});
 }

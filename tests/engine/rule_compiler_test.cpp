@@ -1,5 +1,5 @@
-// tests/engine/rule_compiler_test.cpp: rule text -> compiled program -> run, through the interim
-// reader (engine/rule_spec_reader.hpp) and the compiler: the scenario programs give their known
+// tests/engine/rule_compiler_test.cpp: rule text -> compiled program -> run, through the front end
+// (engine/rule_spec_reader.hpp, the X3 parser) and the compiler: the scenario programs give their known
 // answers, and bad programs give located diagnostics.
 #include "engine/engine.hpp"
 #include "engine/rule_compiler.hpp"
@@ -93,8 +93,8 @@ TEST_CASE("engine/rule_compiler: bad programs give located diagnostics, several 
           "t.rules:2:20: '<' takes 2 argument(s), not 1\n"
           "t.rules:2:35: 'abs' takes 1 argument(s), not 2\n"
           "t.rules:3:9: a top-level fact or assumption must be ground, but has ?z\n"
-          "t.rules:4:20: rule 'c': negation or aggregation through recursion: a predicate it uses under `not` "
-          "or an aggregate depends on its own conclusions\n");
+          "t.rules:4:20: rule 'c': negation through recursion: 'c', used under `not` here, depends on this rule's "
+          "own conclusion 'c' through the cycle c -> c (rule 'c', `not`)\n");
 }
 
 TEST_CASE("engine/rule_spec_reader: syntax errors are located and reading resumes at the next item") {
@@ -105,7 +105,7 @@ TEST_CASE("engine/rule_spec_reader: syntax errors are located and reading resume
                    "t.rules", spec, d);
     CHECK(messages(d) ==
           "t.rules:2:1: expected a consequent (an atom, 'false', 'assume' or a bracketed quantifier) but found 'fact'\n"
-          "t.rules:2:6: expected '(' but found 'p'\n"
+          "t.rules:2:6: expected an atom like (p ?x) but found 'p'\n"
           "t.rules:3:29: expected a direction of signs or a builtin function name but found '7'\n"
           "t.rules:5:9: cannot open included file 'no-such-file.rules'\n");
     CHECK(spec.rules.size() == 1);  // rule c
