@@ -163,11 +163,8 @@ TEST_CASE("engine/rule_builtins: rotate-90 is the quarter turn of Definition 14 
     for (const auto& f : facts(*e, "full")) CHECK(f[0] == f[1]);
 }
 
-TEST_CASE("engine/rule_builtins: rotate-90 per axis in 3-D follows Table 2.1 (not implemented yet)" *
-          doctest::should_fail()) {
-    // Issue 4 asks for "per-axis 3-D" Rotate-90. Table 2.1: a positive rotation about x turns y to z,
-    // about y turns z to x, about z turns x to y. The builtin rejects 3-D today ("3-D is not
-    // supported"), so this program reports an error; remove should_fail once it is implemented.
+TEST_CASE("engine/rule_builtins: rotate-90 per axis in 3-D follows Table 2.1") {
+    // Table 2.1: a positive rotation about x turns y to z, about y turns z to x, about z turns x to y.
     qm::Diagnostics d;
     ProgramSpec spec;
     read_rule_text("fact (v (+ 0 0) (0 0 +))\nfact (v (0 + 0) (+ 0 0))\nfact (v (0 0 +) (0 + 0))\n"

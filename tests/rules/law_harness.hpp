@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace qm::test {
@@ -21,7 +22,9 @@ public:
     // laws: file names in rules/ ("contact.rules"); facts: rule-language text (fact ... lines).
     Laws(std::vector<std::string> laws, const std::string& facts) {
         static int counter = 0;
-        const std::string path = std::string(QM_BINARY_DIR) + "/law_test_" + std::to_string(++counter) + ".rules";
+        // Test executables run in parallel: the process id keeps their files apart.
+        const std::string path = std::string(QM_BINARY_DIR) + "/law_test_" + std::to_string(::getpid()) + "_" +
+                                 std::to_string(++counter) + ".rules";
         {
             std::ofstream out(path);
             for (const auto& l : laws) out << "include \"" << QM_SOURCE_DIR << "/rules/" << l << "\"\n";
