@@ -1,15 +1,19 @@
 // alex/scene.hpp
 // Provides:   Scene, the checked model of an Alex scene (thesis chapter 6, Figure 6.1): objects with
-//             their surfaces (normal + direction to the centre of rotation, section 2.4), external
-//             translational/rotational constraint patterns, scene-level forces with cause ids, and
-//             the ordered situations (contacts, forces, given motions). Also QueryFact, one fact named
+//             their surfaces (normal + direction to the centre of rotation, section 2.4) and
+//             corners (section 3.1.1, Def 18), external translational/rotational constraint
+//             patterns, scene-level forces with cause ids, linkages (Def 21), and the ordered
+//             situations (contacts, forces, given motions). Also QueryFact, one fact named
 //             on the command line (--why / --without).
 // Ownership:  plain value types; a Scene owns everything in it. Ids index the Scene's own tables.
 // Invariants: (established by check_scene, alex/scene_checker.hpp)
 //             - names are lower case and unique per kind (objects; surfaces across the whole scene);
 //             - every Direction has the arity its role needs: translations and origins have
 //               `dimensions` signs, rotations 1 (2-D) or 3 (3-D, about x, y, z; Table 2.1);
-//             - every surface belongs to exactly one object, listed in that object's `surfaces`.
+//             - every surface belongs to exactly one object, listed in that object's `surfaces`;
+//             - a corner's two sides are different faces (not corners) of its own object, and
+//               every face has a lower SurfaceId than every corner (the printers rely on it);
+//             - a linkage joins two different objects, and no pair is listed twice.
 //             Equality (==) compares content and ignores source locations, so a scene read from
 //             either notation, or re-read from its printed form, compares equal.
 // Knows nothing of the ATMS, the rule engine or geometry.

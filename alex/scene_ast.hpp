@@ -65,6 +65,10 @@ struct Direction : x3::position_tagged { std::vector<SignToken> parts; };
 struct Description : x3::position_tagged { Name kind; Name object; };          // (rigid-ob block)
 struct SurfaceEntry : x3::position_tagged { Name name; Direction normal; Direction origin; };
 struct ObjectSurfaces : x3::position_tagged { Name object; std::vector<SurfaceEntry> surfaces; };
+// (tip c-left c-right (+ +)): a corner, the two surfaces meeting there, its origin direction.
+struct CornerEntry : x3::position_tagged { Name name; Name first; Name second; Direction origin; };
+struct ObjectCorners : x3::position_tagged { Name object; std::vector<CornerEntry> corners; };
+struct LinkageEntry : x3::position_tagged { Name first; Name second; };  // (gear-a gear-b)
 struct ConstraintEntry : x3::position_tagged { Name object; std::vector<Direction> directions; };
 struct ForceEntry : x3::position_tagged { Name object; Direction direction; Direction origin; boost::optional<Name> cause; };
 struct ContactEntry : x3::position_tagged { Name first; Name second; };
@@ -82,8 +86,11 @@ struct Surfaces : x3::position_tagged { std::vector<ObjectSurfaces> entries; };
 struct TransConstraints : x3::position_tagged { std::vector<ConstraintEntry> entries; };
 struct RotConstraints : x3::position_tagged { std::vector<ConstraintEntry> entries; };
 struct Forces : x3::position_tagged { std::vector<ForceEntry> entries; };
+struct Corners : x3::position_tagged { std::vector<ObjectCorners> entries; };
+struct Linkages : x3::position_tagged { std::vector<LinkageEntry> entries; };
 // Situation is a section only in the keyword notation (`Situation : Contact (a b), ...`).
-struct Section : x3::variant<Individuals, Descriptions, Surfaces, TransConstraints, RotConstraints, Forces, Situation> {
+struct Section : x3::variant<Individuals, Descriptions, Surfaces, TransConstraints, RotConstraints, Forces, Corners,
+                             Linkages, Situation> {
     using base_type::base_type;
     using base_type::operator=;
 };

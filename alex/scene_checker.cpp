@@ -1,11 +1,13 @@
 // alex/scene_checker.cpp: raw AST -> checked Scene (alex/scene_checker.hpp). Implements the
-// well-formedness conditions of the scene description of thesis section 6.1 / Figure 6.1.
+// well-formedness conditions of the scene description of thesis section 6.1 / Figure 6.1, with
+// corners (section 3.1.1, Definition 18) and linkages (Definition 21).
 #include "alex/scene_checker.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <map>
 #include <string>
+#include <tuple>
 
 namespace qm::alex {
 namespace {
@@ -26,6 +28,7 @@ public:
     Context(const PositionTable& pos, const SourceText& src, Diagnostics& diags) : pos_(pos), src_(src), diags_(diags) {}
 
     SourceLocation where(const ast::x3::position_tagged& node) const { return src_.locate(pos_.offset_of(node)); }
+    std::size_t offset(const ast::x3::position_tagged& node) const { return pos_.offset_of(node); }
 
     void error(const ast::x3::position_tagged& node, std::string message, std::vector<std::string> notes = {}) {
         const std::size_t off = pos_.offset_of(node);
@@ -117,12 +120,17 @@ public:
             individuals(*individuals_);
         }
         for (const auto* d : descriptions_) descriptions(*d);
+        index_corner_names();
         for (const auto* d : surfaces_) surfaces(*d);
+        // After every Surfaces entry, whatever the section order: a corner's sides are surfaces,
+        // and corners take the SurfaceIds after the faces' (the order the printers write).
+        for (const auto* c : corners_) corners(*c);
         for (const auto* c : trans_) constraints(c->entries, true);
         for (const auto* c : rot_) constraints(c->entries, false);
         for (const auto* f : forces_)
             for (const auto& e : f->entries)
                 if (auto force = check_force(e)) scene_.forces.push_back(*force);
+        for (const auto* l : linkages_) linkages(*l);
         for (const auto* sit : situations_) situation(*sit);
         if (cx_.errors() > 0) return std::nullopt;
         return std::move(scene_);
@@ -156,6 +164,8 @@ private:
         const ast::TransConstraints* t1 = nullptr;
         const ast::RotConstraints* r1 = nullptr;
         const ast::Forces* f1 = nullptr;
+        const ast::Corners* c1 = nullptr;
+        const ast::Linkages* l1 = nullptr;
         std::vector<const ast::Individuals*> ind;
         for (const auto& section : s.sections) {
             const auto& v = section.get();
@@ -165,6 +175,8 @@ private:
             else if (const auto* p = boost::get<ast::TransConstraints>(&v)) once(*p, t1, trans_, "Translational-Constraints");
             else if (const auto* p = boost::get<ast::RotConstraints>(&v)) once(*p, r1, rot_, "Rotational-Constraints");
             else if (const auto* p = boost::get<ast::Forces>(&v)) once(*p, f1, forces_, "Forces");
+            else if (const auto* p = boost::get<ast::Corners>(&v)) once(*p, c1, corners_, "Corners");
+            else if (const auto* p = boost::get<ast::Linkages>(&v)) once(*p, l1, linkages_, "Linkages");
             else if (const auto* p = boost::get<ast::Situation>(&v)) situations_.push_back(p);
         }
         for (const auto& sit : s.situations) situations_.push_back(&sit);
@@ -210,22 +222,58 @@ private:
         }
     }
 
+    // The owner of one object's group in Surfaces or Corners; empty (after reporting) when the
+    // object is undeclared or its group was already given.
+    template <class Group>
+    std::optional<ObjectId> group_owner(const Group& g, std::map<ObjectId, const Group*>& groups, const char* section,
+                                        const char* what) {
+        auto id = object(g.object, section);
+        if (!id) return id;
+        if (auto it = groups.find(*id); it != groups.end()) {
+            cx_.error(g.object, std::string("the ") + what + " of '" + scene_.objects[*id].name + "' are listed twice",
+                      {"the first list is at " + cx_.at(*it->second)});
+            return std::nullopt;
+        }
+        groups.emplace(*id, &g);
+        return id;
+    }
+
     void surfaces(const ast::Surfaces& s) {
-        std::map<std::string, const ast::ObjectSurfaces*> groups;
+        std::map<ObjectId, const ast::ObjectSurfaces*> groups;
         for (const auto& g : s.entries) {
-            auto id = object(g.object, "Surfaces");
-            if (id) {
-                const std::string name = scene_.objects[*id].name;
-                if (auto it = groups.find(name); it != groups.end()) {
-                    cx_.error(g.object, "the surfaces of '" + name + "' are listed twice",
-                              {"the first list is at " + cx_.at(*it->second)});
-                    id.reset();
-                } else {
-                    groups.emplace(name, &g);
-                }
-            }
+            auto id = group_owner(g, groups, "Surfaces", "surfaces");
             for (const auto& e : g.surfaces) surface(e, id);
         }
+    }
+
+    // `second` reuses the name declared at `first` (Definition 18 makes corners surfaces, so one
+    // namespace serves both). The first declaration in the source is the one kept.
+    void duplicate_surface(const ast::Name& first, std::optional<ObjectId> first_owner, const ast::Name& second,
+                           std::optional<ObjectId> second_owner) {
+        const std::string name = lower(second.text);
+        const std::string note = "'" + name + "' is first declared at " + cx_.at(first);
+        if (first_owner && second_owner && *first_owner != *second_owner)
+            cx_.error(second, "surface '" + name + "' is owned by two objects, '" + scene_.objects[*first_owner].name +
+                                  "' and '" + scene_.objects[*second_owner].name + "'", {note});
+        else
+            cx_.error(second, "duplicate surface '" + name + "'", {note});
+    }
+
+    // The first corner declared under each name, with its group's object, so that a face declared
+    // after it (Surfaces may follow Corners) is the one reported, although faces are checked first.
+    void index_corner_names() {
+        for (const auto* c : corners_)
+            for (const auto& g : c->entries)
+                for (const auto& e : g.corners)
+                    first_corner_.emplace(lower(e.name.text), std::pair(&e.name, scene_.find_object(lower(g.object.text))));
+    }
+
+    SurfaceId add_surface(Surface s, const ast::Name& n) {
+        const ObjectId owner = s.object;
+        const SurfaceId id = scene_.surfaces.push_back(std::move(s));
+        scene_.objects[owner].surfaces.push_back(id);
+        surface_names_.push_back(&n);
+        return id;
     }
 
     void surface(const ast::SurfaceEntry& e, std::optional<ObjectId> owner) {
@@ -234,19 +282,93 @@ private:
         auto origin = cx_.direction(e.origin, scene_.translation_arity(), "a direction to the centre of rotation");
         if (normal && std::all_of(normal->begin(), normal->end(), [](Sign x) { return x == Sign::zero; }))
             cx_.error(e.normal, "surface '" + name + "' has a zero normal; a surface normal points out of its object");
-        if (auto prev = scene_.find_surface(name)) {
-            const Surface& p = scene_.surfaces[*prev];
-            const std::string first = "'" + name + "' is first declared at " + loc(p.where);
-            if (owner && p.object != *owner)
-                cx_.error(e.name, "surface '" + name + "' is owned by two objects, '" + scene_.objects[p.object].name +
-                                      "' and '" + scene_.objects[*owner].name + "'", {first});
-            else
-                cx_.error(e.name, "duplicate surface '" + name + "'", {first});
-            return;
-        }
+        if (auto prev = scene_.find_surface(name))
+            return duplicate_surface(*surface_names_[prev->value], scene_.surfaces[*prev].object, e.name, owner);
+        if (auto k = first_corner_.find(name); k != first_corner_.end() && cx_.offset(*k->second.first) < cx_.offset(e.name))
+            return duplicate_surface(*k->second.first, k->second.second, e.name, owner);
         if (!owner || !normal || !origin) return;
-        Surface s{name, *owner, *normal, *origin, std::nullopt, cx_.where(e.name)};
-        scene_.objects[*owner].surfaces.push_back(scene_.surfaces.push_back(std::move(s)));
+        add_surface({name, *owner, *normal, *origin, std::nullopt, cx_.where(e.name)}, e.name);
+    }
+
+    // Corners (section 3.1.1): declared group by group, then their sides are resolved, so that a
+    // side naming a corner declared anywhere is reported as a corner rather than as unknown.
+    void corners(const ast::Corners& c) {
+        std::map<ObjectId, const ast::ObjectCorners*> groups;
+        std::vector<std::tuple<const ast::CornerEntry*, ObjectId, std::optional<SurfaceId>>> declared;
+        for (const auto& g : c.entries) {
+            auto id = group_owner(g, groups, "Corners", "corners");
+            for (const auto& e : g.corners) {
+                auto k = corner(e, id);
+                if (id) declared.emplace_back(&e, *id, k);  // sides checked even when the corner is not kept
+            }
+        }
+        for (const auto& [e, owner, k] : declared) corner_sides(*e, owner, k);
+    }
+
+    // A corner has zero extent, hence no normal; its origin direction is a surface's (Def 18).
+    std::optional<SurfaceId> corner(const ast::CornerEntry& e, std::optional<ObjectId> owner) {
+        const std::string name = lower(e.name.text);
+        auto origin = cx_.direction(e.origin, scene_.translation_arity(), "a direction to the centre of rotation");
+        if (auto prev = scene_.find_surface(name)) {  // a face before it, or a corner declared before it
+            duplicate_surface(*surface_names_[prev->value], scene_.surfaces[*prev].object, e.name, owner);
+            return std::nullopt;
+        }
+        if (!owner || !origin) return std::nullopt;
+        return add_surface({name, *owner, {}, *origin, CornerSides{}, cx_.where(e.name)}, e.name);
+    }
+
+    // Definition 18: Corner(x, s1, s2) names two surfaces of x's object that meet at x. `k` is
+    // the corner's id when it was kept.
+    void corner_sides(const ast::CornerEntry& e, ObjectId owner, std::optional<SurfaceId> k) {
+        const std::string corner = lower(e.name.text);
+        auto side = [&](const ast::Name& n) -> std::optional<SurfaceId> {
+            const std::string name = lower(n.text);
+            auto s = scene_.find_surface(name);
+            if (!s) {
+                cx_.error(n, "unknown surface '" + name + "' named as a side of corner '" + corner + "'");
+            } else if (scene_.surfaces[*s].is_corner()) {
+                cx_.error(n, "side '" + name + "' of corner '" + corner +
+                                 "' is itself a corner; a corner's sides are surfaces of its object");
+            } else if (scene_.surfaces[*s].object != owner) {
+                cx_.error(n, "side '" + name + "' of corner '" + corner + "' belongs to '" +
+                                 scene_.objects[scene_.surfaces[*s].object].name + "', not to '" +
+                                 scene_.objects[owner].name + "'; a corner's sides are surfaces of its object");
+            } else {
+                return s;
+            }
+            return std::nullopt;
+        };
+        auto a = side(e.first);
+        auto b = side(e.second);
+        if (a && b && *a == *b)
+            cx_.error(e.second, "corner '" + corner + "' names the side '" + scene_.surfaces[*a].name +
+                                    "' twice; a corner is where two different surfaces meet");
+        if (a && b && k) scene_.surfaces[*k].corner = CornerSides{*a, *b};
+    }
+
+    // Definition 21: two different objects, each pair once (a linkage is symmetric).
+    void linkages(const ast::Linkages& l) {
+        for (const auto& e : l.entries) {
+            auto a = object(e.first, "Linkages");
+            auto b = object(e.second, "Linkages");
+            if (!a || !b) continue;
+            const std::string& an = scene_.objects[*a].name;
+            const std::string& bn = scene_.objects[*b].name;
+            if (*a == *b) {
+                cx_.error(e.second, "object '" + an + "' is linked to itself; a linkage joins two different objects");
+                continue;
+            }
+            auto same = [&](const Linkage& x) {
+                return (x.first == *a && x.second == *b) || (x.first == *b && x.second == *a);
+            };
+            auto it = std::find_if(scene_.linkages.begin(), scene_.linkages.end(), same);
+            if (it != scene_.linkages.end()) {
+                cx_.error(e, "the linkage of '" + an + "' and '" + bn + "' is listed twice",
+                          {"the first is at " + loc(it->where)});
+                continue;
+            }
+            scene_.linkages.push_back({*a, *b, cx_.where(e)});
+        }
     }
 
     void constraints(const std::vector<ast::ConstraintEntry>& entries, bool translational) {
@@ -344,6 +466,10 @@ private:
     std::vector<const ast::TransConstraints*> trans_;
     std::vector<const ast::RotConstraints*> rot_;
     std::vector<const ast::Forces*> forces_;
+    std::vector<const ast::Corners*> corners_;
+    std::vector<const ast::Linkages*> linkages_;
+    std::vector<const ast::Name*> surface_names_;  // the declaring name of each SurfaceId
+    std::map<std::string, std::pair<const ast::Name*, std::optional<ObjectId>>> first_corner_;
     std::vector<const ast::Situation*> situations_;
 
     friend std::optional<Motion> qm::alex::check_given(const ast::MotionEntry&, const Scene&, const PositionTable&,

@@ -2,7 +2,9 @@
 // Provides:   the semantic checks that turn a raw AST (alex/scene_ast.hpp) into a checked Scene
 //             (alex/scene.hpp): section multiplicity, declared and unique names, surface ownership,
 //             sign tokens and direction arity (2-D/3-D, Table 2.1), variables only in constraints,
-//             contacts between surfaces of two different objects, forces' causes. Also the checks
+//             contacts between surfaces of two different objects, forces' causes, corners (two
+//             different faces of their own object, Def 18) and linkages (two different declared
+//             objects, each pair once; Def 21). Also the checks
 //             of a `--given` motion and of a query fact against an already checked Scene.
 // Ownership:  pure functions; the result is a value owned by the caller.
 // Errors:     every problem found is reported into `diags` (located via the PositionTable filled

@@ -1,7 +1,8 @@
 // alex/scene_parser_def.hpp
 // Provides:   the Spirit X3 grammar of Alex scenes (docs/SCENE_FORMAT.md; thesis Figure 6.1 and
-//             the notations of Figures 7.2, 7.8, 7.12, 7.16), of `--given` motions and of query
-//             facts. Include only from scene_parser.cpp: X3's compile cost is paid in one TU.
+//             the notations of Figures 7.2, 7.8, 7.12, 7.16; the Corners and Linkages sections of
+//             section 3.1.1 and Definition 21), of `--given` motions and of query facts. Include
+//             only from scene_parser.cpp: X3's compile cost is paid in one TU.
 // Ownership:  rules are constants; per-parse state (positions, diagnostics) is injected with
 //             x3::with<state_tag>.
 // Invariants: every rule whose attribute is position_tagged records its start offset on success
@@ -18,6 +19,9 @@
 BOOST_FUSION_ADAPT_STRUCT(qm::alex::ast::Description, kind, object)
 BOOST_FUSION_ADAPT_STRUCT(qm::alex::ast::SurfaceEntry, name, normal, origin)
 BOOST_FUSION_ADAPT_STRUCT(qm::alex::ast::ObjectSurfaces, object, surfaces)
+BOOST_FUSION_ADAPT_STRUCT(qm::alex::ast::CornerEntry, name, first, second, origin)
+BOOST_FUSION_ADAPT_STRUCT(qm::alex::ast::ObjectCorners, object, corners)
+BOOST_FUSION_ADAPT_STRUCT(qm::alex::ast::LinkageEntry, first, second)
 BOOST_FUSION_ADAPT_STRUCT(qm::alex::ast::ConstraintEntry, object, directions)
 BOOST_FUSION_ADAPT_STRUCT(qm::alex::ast::ForceEntry, object, direction, origin, cause)
 BOOST_FUSION_ADAPT_STRUCT(qm::alex::ast::ContactEntry, first, second)
@@ -141,6 +145,10 @@ QM_ALEX_RULE_ID(description_kw_class);
 QM_ALEX_RULE_ID(surface_entry_class);
 QM_ALEX_RULE_ID(object_surfaces_sx_class);
 QM_ALEX_RULE_ID(object_surfaces_kw_class);
+QM_ALEX_RULE_ID(corner_entry_class);
+QM_ALEX_RULE_ID(object_corners_sx_class);
+QM_ALEX_RULE_ID(object_corners_kw_class);
+QM_ALEX_RULE_ID(linkage_entry_class);
 QM_ALEX_RULE_ID(constraint_sx_class);
 QM_ALEX_RULE_ID(constraint_kw_class);
 QM_ALEX_RULE_ID(force_body_class);
@@ -168,6 +176,10 @@ QM_ALEX_RULE_ID(rot_sx_class);
 QM_ALEX_RULE_ID(rot_kw_class);
 QM_ALEX_RULE_ID(forces_sx_class);
 QM_ALEX_RULE_ID(forces_kw_class);
+QM_ALEX_RULE_ID(corners_sx_class);
+QM_ALEX_RULE_ID(corners_kw_class);
+QM_ALEX_RULE_ID(linkages_sx_class);
+QM_ALEX_RULE_ID(linkages_kw_class);
 QM_ALEX_RULE_ID(section_sx_class);
 QM_ALEX_RULE_ID(section_kw_class);
 QM_ALEX_RULE_ID(defstates_class);
@@ -189,6 +201,11 @@ const x3::rule<description_kw_class, ast::Description> description_kw = "an obje
 const x3::rule<surface_entry_class, ast::SurfaceEntry> surface_entry = "a surface entry like (top (0 +) (0 -))";
 const x3::rule<object_surfaces_sx_class, ast::ObjectSurfaces> object_surfaces_sx = "an object's surfaces";
 const x3::rule<object_surfaces_kw_class, ast::ObjectSurfaces> object_surfaces_kw = "an object's surfaces";
+const x3::rule<corner_entry_class, ast::CornerEntry> corner_entry =
+    "a corner entry like (tip side-1 side-2 (0 +))";
+const x3::rule<object_corners_sx_class, ast::ObjectCorners> object_corners_sx = "an object's corners";
+const x3::rule<object_corners_kw_class, ast::ObjectCorners> object_corners_kw = "an object's corners";
+const x3::rule<linkage_entry_class, ast::LinkageEntry> linkage_entry = "a linkage like (gear-a gear-b)";
 const x3::rule<constraint_sx_class, ast::ConstraintEntry> constraint_sx = "a constraint entry like (table (?x ?y))";
 const x3::rule<constraint_kw_class, ast::ConstraintEntry> constraint_kw = "a constraint entry like table (?x ?y)";
 const x3::rule<force_body_class, ast::ForceEntry> force_body = "a force";
@@ -218,6 +235,10 @@ const x3::rule<rot_sx_class, ast::RotConstraints> rot_sx = "Rotational-Constrain
 const x3::rule<rot_kw_class, ast::RotConstraints> rot_kw = "Rotational-Constraints";
 const x3::rule<forces_sx_class, ast::Forces> forces_sx = "Forces";
 const x3::rule<forces_kw_class, ast::Forces> forces_kw = "Forces";
+const x3::rule<corners_sx_class, ast::Corners> corners_sx = "Corners";
+const x3::rule<corners_kw_class, ast::Corners> corners_kw = "Corners";
+const x3::rule<linkages_sx_class, ast::Linkages> linkages_sx = "Linkages";
+const x3::rule<linkages_kw_class, ast::Linkages> linkages_kw = "Linkages";
 const x3::rule<section_sx_class, ast::Section> section_sx = "a section";
 const x3::rule<section_kw_class, ast::Section> section_kw = "a section";
 const x3::rule<defstates_class, std::vector<ast::Situation>> defstates = "(Defstates ...)";
@@ -249,16 +270,39 @@ const x3::rule<struct rot_sx_inner_class, ast::RotConstraints> rot_sx_inner = "r
 const x3::rule<struct rot_kw_inner_class, ast::RotConstraints> rot_kw_inner = "rot kw";
 const x3::rule<struct forces_sx_inner_class, ast::Forces> forces_sx_inner = "forces sx";
 const x3::rule<struct forces_kw_inner_class, ast::Forces> forces_kw_inner = "forces kw";
+const x3::rule<struct corners_sx_inner_class, ast::Corners> corners_sx_inner = "corners sx";
+const x3::rule<struct corners_kw_inner_class, ast::Corners> corners_kw_inner = "corners kw";
+const x3::rule<struct linkages_sx_inner_class, ast::Linkages> linkages_sx_inner = "linkages sx";
+const x3::rule<struct linkages_kw_inner_class, ast::Linkages> linkages_kw_inner = "linkages kw";
 
-// Unnamed-attribute rules that exist only to give expectation failures readable names.
+// Rules that exist only to give expectation failures readable names: an expectation on a bare
+// list (`a % ','`, `+a`) would report X3's mangled type name.
 const x3::rule<struct name_list_class, std::vector<ast::Name>> name_list = "names separated by ','";
+const x3::rule<struct name_items_class, std::vector<ast::Name>> name_items = "a name";
+const x3::rule<struct description_list_class, std::vector<ast::Description>> description_list_kw =
+    "an object description like rigid-ob(block)";
+const x3::rule<struct surface_groups_class, std::vector<ast::ObjectSurfaces>> surface_groups_kw =
+    "an object's surfaces like block (top (0 +) (0 -))";
+const x3::rule<struct surface_list_class, std::vector<ast::SurfaceEntry>> surface_list_kw =
+    "a surface entry like (top (0 +) (0 -))";
+const x3::rule<struct corner_groups_class, std::vector<ast::ObjectCorners>> corner_groups_kw =
+    "an object's corners like block (tip side-1 side-2 (0 +))";
+const x3::rule<struct corner_list_class, std::vector<ast::CornerEntry>> corner_list_kw =
+    "a corner entry like (tip side-1 side-2 (0 +))";
+const x3::rule<struct constraint_list_class, std::vector<ast::ConstraintEntry>> constraint_list_kw =
+    "a constraint entry like table (?x ?y)";
+const x3::rule<struct direction_list_class, std::vector<ast::Direction>> direction_list = "a direction like (0 +)";
+const x3::rule<struct force_list_class, std::vector<ast::ForceEntry>> force_list_kw =
+    "a force like block (0 -) (0 0)";
+const x3::rule<struct linkage_list_class, std::vector<ast::LinkageEntry>> linkage_list_kw =
+    "a linkage like (gear-a gear-b)";
 const x3::rule<struct defscenario_kw_class> defscenario_kw = "'Defscenario'";
 const x3::rule<struct sx_end_class> sx_section_end =
-    "a section keyword (Individuals, Descriptions, Surfaces, Translational-Constraints, "
-    "Rotational-Constraints, Forces) or ')'";
+    "a section keyword (Individuals, Descriptions, Surfaces, Corners, Translational-Constraints, "
+    "Rotational-Constraints, Forces, Linkages) or ')'";
 const x3::rule<struct kw_end_class> kw_section_end =
-    "a section keyword (Individuals, Descriptions, Surfaces, Translational-Constraints, "
-    "Rotational-Constraints, Forces, Situation) followed by ':'";
+    "a section keyword (Individuals, Descriptions, Surfaces, Corners, Translational-Constraints, "
+    "Rotational-Constraints, Forces, Linkages, Situation) followed by ':'";
 const x3::rule<struct eoi_class> end_of_input = "end of input";
 const x3::rule<struct colon_class> colon = "':'";
 
@@ -280,9 +324,19 @@ const auto surface_entry_def = (x3::lit('(') >> name) > direction > direction > 
 const auto object_surfaces_sx_def = (x3::lit('(') >> name) > *surface_entry > ')';
 // A group starts with an object name; the situation words are not taken as one, so that the
 // figures' `CONTACT (a b)` is reported as a misplaced keyword rather than a surface group.
-const auto object_surfaces_kw_def = (!(kw("contact") | kw("force") | kw("motion")) >> name) > (surface_entry % ',');
+const auto object_surfaces_kw_def = (!(kw("contact") | kw("force") | kw("motion")) >> name) > surface_list_kw;
+const auto surface_list_kw_def = surface_entry % ',';
+// Corners (section 3.1.1, Definition 18): grouped by object like Surfaces. Inside either list
+// a '(' can only open a corner entry, so the entry commits at its '('.
+const auto corner_entry_def = x3::lit('(') > name > name > name > direction > ')';
+const auto object_corners_sx_def = (x3::lit('(') >> name) > *corner_entry > ')';
+const auto object_corners_kw_def = (!(kw("contact") | kw("force") | kw("motion")) >> name) > corner_list_kw;
+const auto corner_list_kw_def = corner_entry % ',';
+// Linkages (Definition 21): a pair of objects.
+const auto linkage_entry_def = x3::lit('(') > name > name > ')';
 const auto constraint_sx_def = (x3::lit('(') >> name) > *direction > ')';
-const auto constraint_kw_def = name > +direction;
+const auto constraint_kw_def = name > direction_list;
+const auto direction_list_def = +direction;
 const auto force_body_def = name > direction > direction > -name;
 const auto force_entry_sx_def = (x3::lit('(') >> force_body) > ')';
 
@@ -309,30 +363,47 @@ const auto individuals_sx_inner_def = (kw("individuals") > '(' > *name > ')')[st
 const auto individuals_kw_def = individuals_kw_inner;
 const auto individuals_kw_inner_def =
     (kw("individuals") > colon > name_list)[store(&ast::Individuals::names)];
-const auto name_list_def = (x3::lit('(') > (name % ',') > ')') | (name % ',');
+const auto name_list_def = (x3::lit('(') > name_items > ')') | name_items;
+const auto name_items_def = name % ',';
+const auto description_list_kw_def = description_kw % ',';
+const auto surface_groups_kw_def = object_surfaces_kw % -x3::lit(',');
+const auto corner_groups_kw_def = object_corners_kw % -x3::lit(',');
+const auto constraint_list_kw_def = constraint_kw % ',';
+const auto force_list_kw_def = force_body % ',';
+const auto linkage_list_kw_def = linkage_entry % ',';
 const auto descriptions_sx_def = descriptions_sx_inner;
 const auto descriptions_sx_inner_def = (kw("descriptions") > '(' > *description_sx > ')')[store(&ast::Descriptions::entries)];
 const auto descriptions_kw_def = descriptions_kw_inner;
-const auto descriptions_kw_inner_def = (kw("descriptions") > colon > (description_kw % ','))[store(&ast::Descriptions::entries)];
+const auto descriptions_kw_inner_def = (kw("descriptions") > colon > description_list_kw)[store(&ast::Descriptions::entries)];
 const auto surfaces_sx_def = surfaces_sx_inner;
 const auto surfaces_sx_inner_def = (kw("surfaces") > '(' > *object_surfaces_sx > ')')[store(&ast::Surfaces::entries)];
 const auto surfaces_kw_def = surfaces_kw_inner;
-const auto surfaces_kw_inner_def = (kw("surfaces") > colon > (object_surfaces_kw % -x3::lit(',')))[store(&ast::Surfaces::entries)];
+const auto surfaces_kw_inner_def = (kw("surfaces") > colon > surface_groups_kw)[store(&ast::Surfaces::entries)];
 const auto trans_sx_def = trans_sx_inner;
 const auto trans_sx_inner_def = (kw("translational-constraints") > '(' > *constraint_sx > ')')[store(&ast::TransConstraints::entries)];
 const auto trans_kw_def = trans_kw_inner;
-const auto trans_kw_inner_def = (kw("translational-constraints") > colon > (constraint_kw % ','))[store(&ast::TransConstraints::entries)];
+const auto trans_kw_inner_def = (kw("translational-constraints") > colon > constraint_list_kw)[store(&ast::TransConstraints::entries)];
 const auto rot_sx_def = rot_sx_inner;
 const auto rot_sx_inner_def = (kw("rotational-constraints") > '(' > *constraint_sx > ')')[store(&ast::RotConstraints::entries)];
 const auto rot_kw_def = rot_kw_inner;
-const auto rot_kw_inner_def = (kw("rotational-constraints") > colon > (constraint_kw % ','))[store(&ast::RotConstraints::entries)];
+const auto rot_kw_inner_def = (kw("rotational-constraints") > colon > constraint_list_kw)[store(&ast::RotConstraints::entries)];
 const auto forces_sx_def = forces_sx_inner;
 const auto forces_sx_inner_def = (kw("forces") > '(' > *force_entry_sx > ')')[store(&ast::Forces::entries)];
 const auto forces_kw_def = forces_kw_inner;
-const auto forces_kw_inner_def = (kw("forces") > colon > (force_body % ','))[store(&ast::Forces::entries)];
+const auto forces_kw_inner_def = (kw("forces") > colon > force_list_kw)[store(&ast::Forces::entries)];
+const auto corners_sx_def = corners_sx_inner;
+const auto corners_sx_inner_def = (kw("corners") > '(' > *object_corners_sx > ')')[store(&ast::Corners::entries)];
+const auto corners_kw_def = corners_kw_inner;
+const auto corners_kw_inner_def = (kw("corners") > colon > corner_groups_kw)[store(&ast::Corners::entries)];
+const auto linkages_sx_def = linkages_sx_inner;
+const auto linkages_sx_inner_def = (kw("linkages") > '(' > *linkage_entry > ')')[store(&ast::Linkages::entries)];
+const auto linkages_kw_def = linkages_kw_inner;
+const auto linkages_kw_inner_def = (kw("linkages") > colon > linkage_list_kw)[store(&ast::Linkages::entries)];
 
-const auto section_sx_def = individuals_sx | descriptions_sx | surfaces_sx | trans_sx | rot_sx | forces_sx;
-const auto section_kw_def = individuals_kw | descriptions_kw | surfaces_kw | trans_kw | rot_kw | forces_kw | situation_kw;
+const auto section_sx_def =
+    individuals_sx | descriptions_sx | surfaces_sx | corners_sx | trans_sx | rot_sx | forces_sx | linkages_sx;
+const auto section_kw_def = individuals_kw | descriptions_kw | surfaces_kw | corners_kw | trans_kw | rot_kw | forces_kw |
+                            linkages_kw | situation_kw;
 
 const auto defscenario_kw_def = kw("defscenario");
 const auto sx_section_end_def = x3::lit(')');
@@ -357,14 +428,17 @@ const auto given_def = name > direction > direction > end_of_input;
 // The parentheses around the arguments are optional; balance is checked before parsing.
 const auto query_def = name > -x3::lit('(') > name > -name > -direction > -x3::lit(')') > end_of_input;
 
-BOOST_SPIRIT_DEFINE(name_inner, sign_inner, direction_inner, dimensions_inner, situation_sx_inner, situation_kw_inner, individuals_sx_inner, individuals_kw_inner, descriptions_sx_inner, descriptions_kw_inner, surfaces_sx_inner, surfaces_kw_inner, trans_sx_inner, trans_kw_inner, rot_sx_inner, rot_kw_inner, forces_sx_inner, forces_kw_inner)
+BOOST_SPIRIT_DEFINE(name_inner, sign_inner, direction_inner, dimensions_inner, situation_sx_inner, situation_kw_inner, individuals_sx_inner, individuals_kw_inner, descriptions_sx_inner, descriptions_kw_inner, surfaces_sx_inner, surfaces_kw_inner, trans_sx_inner, trans_kw_inner, rot_sx_inner, rot_kw_inner, forces_sx_inner, forces_kw_inner, corners_sx_inner, corners_kw_inner, linkages_sx_inner, linkages_kw_inner)
 BOOST_SPIRIT_DEFINE(name, sign, direction, dimensions, description_sx, description_kw, surface_entry,
                     object_surfaces_sx, object_surfaces_kw, constraint_sx, constraint_kw, force_body,
                     force_entry_sx, contact_sx, force_sx, motion_sx, contact_kw, force_kw, motion_kw,
-                    descriptor_sx, descriptor_body_sx, descriptor_kw, situation_sx, situation_kw)
+                    descriptor_sx, descriptor_body_sx, descriptor_kw, situation_sx, situation_kw, corner_entry,
+                    object_corners_sx, object_corners_kw, linkage_entry)
 BOOST_SPIRIT_DEFINE(individuals_sx, individuals_kw, descriptions_sx, descriptions_kw, surfaces_sx, surfaces_kw,
-                    trans_sx, trans_kw, rot_sx, rot_kw, forces_sx, forces_kw, section_sx, section_kw,
-                    name_list, defscenario_kw, sx_section_end, kw_section_end, end_of_input, colon, defstates,
+                    trans_sx, trans_kw, rot_sx, rot_kw, forces_sx, forces_kw, corners_sx, corners_kw, linkages_sx,
+                    linkages_kw, section_sx, section_kw,
+                    name_list, name_items, description_list_kw, surface_groups_kw, surface_list_kw, corner_groups_kw,
+                    corner_list_kw, constraint_list_kw, direction_list, force_list_kw, linkage_list_kw, defscenario_kw, sx_section_end, kw_section_end, end_of_input, colon, defstates,
                     scenario_sx, keyword_scenario, scenario_kw, scene_file, given, query)
 
 }  // namespace qm::alex::parser

@@ -34,7 +34,11 @@ std::string force_body(const Scene& s, const Force& f) {
     return out;
 }
 
-std::string surface_body(const Surface& f) {
+// `(name normal origin)` for a face; `(name side1 side2 origin)` for a corner (Definition 18).
+std::string surface_body(const Scene& s, const Surface& f) {
+    if (f.corner)
+        return "(" + f.name + " " + s.surfaces[f.corner->first].name + " " + s.surfaces[f.corner->second].name + " " +
+               print_direction(f.origin) + ")";
     return "(" + f.name + " " + print_direction(f.normal) + " " + print_direction(f.origin) + ")";
 }
 
@@ -42,13 +46,24 @@ std::string motion_body(const Scene& s, const Motion& m) {
     return s.objects[m.object].name + " " + print_direction(m.translation) + " " + print_direction(m.rotation);
 }
 
-// Objects that have surfaces, in the order of their first surface, so that surfaces are printed
-// (and so re-read) in the scene's SurfaceId order.
-std::vector<const Object*> surface_groups(const Scene& s) {
-    std::vector<const Object*> out;
-    for (const auto& o : s.objects)
-        if (!o.surfaces.empty()) out.push_back(&o);
-    std::sort(out.begin(), out.end(), [](const Object* a, const Object* b) { return a->surfaces[0] < b->surfaces[0]; });
+// One object's faces (corners == false) or corners, in SurfaceId order.
+struct Group {
+    const Object* object;
+    std::vector<SurfaceId> members;
+};
+
+// Groups of the objects that have faces (or corners), in the order of their first member, so that
+// they are printed (and so re-read) in the scene's SurfaceId order; the reader gives the faces
+// their ids before the corners.
+std::vector<Group> surface_groups(const Scene& s, bool corners) {
+    std::vector<Group> out;
+    for (const auto& o : s.objects) {
+        Group g{&o, {}};
+        for (SurfaceId id : o.surfaces)
+            if (s.surfaces[id].is_corner() == corners) g.members.push_back(id);
+        if (!g.members.empty()) out.push_back(std::move(g));
+    }
+    std::sort(out.begin(), out.end(), [](const Group& a, const Group& b) { return a.members[0] < b.members[0]; });
     return out;
 }
 
@@ -66,13 +81,18 @@ std::string print_scene(const Scene& s) {
     for (std::uint32_t i = 0; i < s.objects.size(); ++i) os << (i ? " " : "") << s.objects[ObjectId{i}].name;
     os << ")\n  Descriptions (";
     for (const auto& o : s.objects) os << "(" << o.description << ' ' << o.name << ")";
-    os << ")\n  Surfaces (";
-    for (const Object* o : surface_groups(s)) {
-        os << "\n    (" << o->name;
-        for (SurfaceId id : o->surfaces) os << "\n      " << surface_body(s.surfaces[id]);
-        os << ")";
-    }
     os << ")\n";
+    for (bool corners : {false, true}) {
+        const auto groups = surface_groups(s, corners);
+        if (corners && groups.empty()) continue;  // Surfaces is always written, Corners only when used
+        os << (corners ? "  Corners (" : "  Surfaces (");
+        for (const Group& g : groups) {
+            os << "\n    (" << g.object->name;
+            for (SurfaceId id : g.members) os << "\n      " << surface_body(s, s.surfaces[id]);
+            os << ")";
+        }
+        os << ")\n";
+    }
     for (bool translational : {true, false}) {
         if (!any_constraints(s, translational)) continue;
         os << (translational ? "  Translational-Constraints (" : "  Rotational-Constraints (");
@@ -83,6 +103,11 @@ std::string print_scene(const Scene& s) {
             for (const auto& p : list) os << ' ' << print_pattern(p);
             os << ")";
         }
+        os << ")\n";
+    }
+    if (!s.linkages.empty()) {
+        os << "  Linkages (";
+        for (const auto& l : s.linkages) os << "(" << s.objects[l.first].name << ' ' << s.objects[l.second].name << ")";
         os << ")\n";
     }
     os << "  Forces (";
@@ -122,12 +147,21 @@ std::string print_scene_keywords(const Scene& s) {
         }
         os << "\n";
     }
-    bool any_surface = false;
-    for (const Object* o : surface_groups(s)) {
-        os << (std::exchange(any_surface, true) ? "\n  " : "Surfaces : ") << o->name << ' ';
-        for (std::size_t i = 0; i < o->surfaces.size(); ++i) os << (i ? ", " : "") << surface_body(s.surfaces[o->surfaces[i]]);
+    for (bool corners : {false, true}) {
+        bool any = false;
+        for (const Group& g : surface_groups(s, corners)) {
+            os << (std::exchange(any, true) ? "\n  " : corners ? "Corners : " : "Surfaces : ") << g.object->name << ' ';
+            for (std::size_t i = 0; i < g.members.size(); ++i) os << (i ? ", " : "") << surface_body(s, s.surfaces[g.members[i]]);
+        }
+        if (any) os << "\n";
     }
-    if (any_surface) os << "\n";
+    if (!s.linkages.empty()) {
+        os << "Linkages : ";
+        for (std::size_t i = 0; i < s.linkages.size(); ++i)
+            os << (i ? ", " : "") << "(" << s.objects[s.linkages[i].first].name << ' '
+               << s.objects[s.linkages[i].second].name << ")";
+        os << "\n";
+    }
     if (!s.forces.empty()) {
         os << "Forces : ";
         for (std::size_t i = 0; i < s.forces.size(); ++i) os << (i ? ", " : "") << force_body(s, s.forces[i]);

@@ -1,7 +1,8 @@
 // alex/scene_printer.hpp
 // Provides:   print_scene (a checked Scene in the s-expression notation of Figure 6.1) and
 //             print_scene_keywords (the `Keyword : items` notation of Figures 7.12/7.16), both as
-//             documented in docs/SCENE_FORMAT.md, plus print_direction / print_pattern.
+//             documented in docs/SCENE_FORMAT.md, plus print_direction / print_pattern. Corners and
+//             Linkages sections are written only when the scene has corners or linkages.
 // Invariants: for every checked Scene s, reading print_scene(s) or print_scene_keywords(s) back
 //             gives a Scene equal to s (tests/alex/scene_printer_test.cpp). Implicit causes
 //             ("force#N") are not printed; explicit ones are, after the force's origin.

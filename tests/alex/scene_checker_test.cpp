@@ -86,3 +86,34 @@ TEST_CASE("alex/scene_checker: a clean AST checks without diagnostics; locations
     CHECK(scene->situations[0].contacts[0].where.line == 3);
     CHECK(scene->objects[ObjectId{1}].where.column == 33);
 }
+
+TEST_CASE("alex/scene_checker: corner and linkage errors are all reported in one run, in source order") {
+    qm::Diagnostics diags;
+    auto s = read_scene("c.def",
+                        "(Defscenario 2 s Individuals (a b)\n"
+                        " Linkages ((a a) (a b) (b a) (a z))\n"
+                        " Corners ((a (k p q (0 +)) (j p p (0 0)) (i k p (+ 0)) (h p r (0 + 0))) (b (m r x (0 -))))\n"
+                        " Surfaces ((a (p (0 +) (0 -)) (q (+ 0) (0 0))) (b (r (0 -) (0 +)) (k (0 -) (0 +)))))\n"
+                        "(Defstates ((Contact k r) (Contact k p)))",
+                        diags);
+    CHECK_FALSE(s.has_value());
+    std::vector<std::string> got;
+    for (const auto& d : diags.sorted())
+        got.push_back(std::to_string(d.where.line) + ":" + std::to_string(d.where.column) + " " + d.message);
+    // Corner k of a comes before face k of b in the source, so the face is the duplicate and k
+    // stays a's corner: a side of i, and able to touch r but not p. Corner h's sides are checked
+    // although its origin is bad.
+    const std::vector<std::string> expected{
+        "2:15 object 'a' is linked to itself; a linkage joins two different objects",
+        "2:24 the linkage of 'b' and 'a' is listed twice",
+        "2:33 object 'z' in Linkages is not declared in Individuals",
+        "3:33 corner 'j' names the side 'p' twice; a corner is where two different surfaces meet",
+        "3:45 side 'k' of corner 'i' is itself a corner; a corner's sides are surfaces of its object",
+        "3:61 side 'r' of corner 'h' belongs to 'b', not to 'a'; a corner's sides are surfaces of its object",
+        "3:63 a direction to the centre of rotation needs 2 signs in a 2-D scene but has 3",
+        "3:81 unknown surface 'x' named as a side of corner 'm'",
+        "4:68 surface 'k' is owned by two objects, 'a' and 'b'",
+        "5:28 surfaces 'k' and 'p' both belong to 'a'; a contact joins two different objects",
+    };
+    CHECK(got == expected);
+}

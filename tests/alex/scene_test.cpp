@@ -61,6 +61,25 @@ TEST_CASE("alex/scene: equality compares content, never source locations") {
     Scene z = x;
     z.situations.push_back({});
     CHECK_FALSE(x == z);
+    // Linkages (Def 21) and corner sides (Def 18) are content; a linkage's location is not.
+    Scene l = x;
+    l.objects.push_back({"b", "rigid-ob", {}, {}, {}, {}});
+    Scene l2 = l;
+    l.linkages.push_back({ObjectId{0}, ObjectId{1}, {"f.def", 1, 1}});
+    CHECK_FALSE(l == l2);
+    l2.linkages.push_back({ObjectId{0}, ObjectId{1}, {"g.def", 7, 7}});
+    CHECK(l == l2);
+    l2.linkages[0] = {ObjectId{1}, ObjectId{0}, {}};
+    CHECK_FALSE(l == l2);  // the order as written is kept
+    Scene k = x;
+    const Direction up{Sign::zero, Sign::plus};
+    for (const char* n : {"p", "q"}) k.surfaces.push_back({n, ObjectId{0}, up, up, std::nullopt, {}});
+    Scene k2 = k;
+    k.surfaces.push_back({"c", ObjectId{0}, {}, up, CornerSides{SurfaceId{0}, SurfaceId{1}}, {}});
+    k2.surfaces.push_back({"c", ObjectId{0}, {}, up, CornerSides{SurfaceId{1}, SurfaceId{0}}, {}});
+    CHECK(k.surfaces[SurfaceId{2}].is_corner());
+    CHECK_FALSE(k.surfaces[SurfaceId{0}].is_corner());
+    CHECK_FALSE(k == k2);
     CHECK(sign_char(Sign::minus) == '-');
     CHECK(sign_char(Sign::zero) == '0');
     CHECK(sign_char(Sign::plus) == '+');
