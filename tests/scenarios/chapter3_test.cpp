@@ -96,10 +96,46 @@ TEST_CASE("scenarios/chapter3: the block in three dimensions (Table 2.1)") {
     CHECK(combinations(scene, a.situations()[2]) == S{"block (0 0 0) (0 0 +); table (0 0 0) (0 0 0)"});
 }
 
+TEST_CASE("scenarios/chapter3: linked gears turn together (Def 21)") {
+    const alex::Scene scene = load_scene("linked_gears.def");
+    alex::Analysis a = analyse(scene);
+    REQUIRE(a.situations().size() == 3);
+    CHECK(a.situations()[0].combination_count() == 10);
+    const S driven{"driver (0 0) (-); gear-a (0 0) (+); gear-b (0 0) (+); gear-c (0 0) (-)"};
+    CHECK(combinations(scene, a.situations()[1]) == driven);  // the driver given turning clockwise
+    CHECK(combinations(scene, a.situations()[2]) == driven);  // a torque on the driver instead
+    for (const auto& line : combinations(scene, a.situations()[0])) {
+        // gear-a and gear-b are one body: they always turn alike.
+        const auto ra = line.substr(line.find("gear-a (0 0) ") + 13, 3);
+        const auto rb = line.substr(line.find("gear-b (0 0) ") + 13, 3);
+        CHECK(ra == rb);
+    }
+}
+
+TEST_CASE("scenarios/chapter3: corner contacts (section 3.1.1, Figure 3.3)") {
+    const alex::Scene scene = load_scene("corner_contacts.def");
+    alex::Analysis a = analyse(scene);
+    REQUIRE(a.situations().size() == 2);
+    // The lower block is free to slide on the table, so it does not sufficiently constrain the
+    // tip: the triangle slides down face A and pushes the block away, whether the tip rests on A or
+    // on the block's corner.
+    for (const auto& r : a.situations())
+        CHECK(combinations(scene, r) == S{"upper (0 -) (0); lower (+ 0) (0); table (0 0) (0)"});
+    // Held by a catch on the right, the block blocks the tip: the corner takes A's reversed normal.
+    alex::Scene held = scene;
+    held.objects[object(held, "lower")].trans_constraints.push_back(
+        {alex::PatternSlot{alex::Sign::plus, {}}, alex::PatternSlot{std::nullopt, "y"}});
+    alex::Analysis b = analyse(held);
+    const S upper = texts(b.situations()[0].freedom[object(held, "upper")].translation);
+    CHECK(upper.count("(+ -)") == 0);  // into A
+    CHECK(upper.count("(0 -)") == 0);
+    CHECK(upper.count("(- +)") == 1);  // away from A
+}
+
 TEST_CASE("scenarios/chapter3: every bundled scene loads and is analysed") {
     for (const char* name : {"arch.def", "block.def", "block_3d.def", "block_boulder.def", "block_stack.def",
                              "corner_contacts.def", "force_feedback.def", "gears.def", "lever.def",
-                             "recoil_escapement.def", "wedge_ramp.def", "wedge_ramp_catch.def"}) {
+                             "recoil_escapement.def", "wedge_ramp.def", "wedge_ramp_catch.def", "linked_gears.def"}) {
         CAPTURE(name);
         const alex::Scene scene = load_scene(name);
         alex::Analysis a = analyse(scene);
