@@ -26,6 +26,20 @@ Environment Environment::from_words(std::span<const std::uint64_t> words) {
     return e;
 }
 
+Environment Environment::from_words(std::span<const std::uint64_t> words, std::size_t first_word) {
+    Environment e;
+    e.words_.assign(first_word, 0);
+    e.words_.insert(e.words_.end(), words.begin(), words.end());
+    e.trim();
+    return e;
+}
+
+std::size_t Environment::first_word() const noexcept {
+    std::size_t w = 0;
+    while (w < words_.size() && words_[w] == 0) ++w;
+    return w;
+}
+
 void Environment::trim() noexcept {
     while (!words_.empty() && words_.back() == 0) words_.pop_back();
 }
@@ -41,6 +55,15 @@ bool words_subset(std::span<const std::uint64_t> words, std::span<const std::uin
         if ((words[i] & ~of[i]) != 0) return false;
     for (std::size_t i = common; i < words.size(); ++i)
         if (words[i] != 0) return false;
+    return true;
+}
+
+bool words_subset(std::span<const std::uint64_t> words, std::span<const std::uint64_t> of,
+                  std::size_t of_first) noexcept {
+    for (std::size_t i = 0; i < words.size(); ++i) {
+        if (words[i] == 0) continue;
+        if (i < of_first || i - of_first >= of.size() || (words[i] & ~of[i - of_first]) != 0) return false;
+    }
     return true;
 }
 
@@ -94,9 +117,12 @@ AssumptionId Environment::first() const {
 }
 
 std::size_t Environment::hash() const noexcept {
+    // Mixes only the non-zero words (with their positions): with thousands of assumptions most
+    // words of an environment are zero, and skipping them is cheaper than multiplying them in.
     std::uint64_t h = 0x9e3779b97f4a7c15ULL;
-    for (std::uint64_t w : words_) {
-        h ^= w + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    for (std::size_t i = 0; i < words_.size(); ++i) {
+        if (words_[i] == 0) continue;
+        h ^= words_[i] + 0x9e3779b97f4a7c15ULL + i + (h << 6) + (h >> 2);
         h *= 0xff51afd7ed558ccdULL;
     }
     return static_cast<std::size_t>(h ^ (h >> 33));

@@ -19,6 +19,10 @@ public:
     [[nodiscard]] static Environment of(std::span<const AssumptionId> as);
     // Builds a set from raw words (bit i <=> AssumptionId{i}); trailing zero words are dropped.
     [[nodiscard]] static Environment from_words(std::span<const std::uint64_t> words);
+    // The same for a window of words starting at word `first_word` (all words before it zero).
+    [[nodiscard]] static Environment from_words(std::span<const std::uint64_t> words, std::size_t first_word);
+    // Index of the first non-zero word (words().size() for the empty set).
+    [[nodiscard]] std::size_t first_word() const noexcept;
 
     [[nodiscard]] bool contains(AssumptionId a) const noexcept;
     [[nodiscard]] bool subset_of(const Environment& other) const noexcept;
@@ -42,6 +46,9 @@ private:
 // True iff the set given by `words` is a subset of `of` (both raw bitsets, any lengths).
 [[nodiscard]] bool words_subset(std::span<const std::uint64_t> words,
                                 std::span<const std::uint64_t> of) noexcept;
+// The same when `of` is a window: of[i] is word of_first + i, every word outside the window zero.
+[[nodiscard]] bool words_subset(std::span<const std::uint64_t> words, std::span<const std::uint64_t> of,
+                                std::size_t of_first) noexcept;
 
 [[nodiscard]] Environment join(const Environment& x, const Environment& y);
 

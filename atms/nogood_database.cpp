@@ -2,6 +2,7 @@
 #include "atms/nogood_database.hpp"
 
 #include "qm/assert.hpp"
+#include <bit>
 
 namespace qm::atms {
 namespace {
@@ -10,14 +11,17 @@ void ensure(std::vector<std::vector<std::uint32_t>>& index, AssumptionId a) {
 }
 }  // namespace
 
-bool NogoodDatabase::subsumes(const Environment& e) const noexcept {
+bool NogoodDatabase::subsumes_words(std::span<const std::uint64_t> words, std::size_t first_word) const noexcept {
     if (empty_nogood_) return true;
     // A nogood N is a subset of e only if N's lowest assumption is in e: visit just those buckets.
-    for (AssumptionId a : e.assumptions()) {
-        if (a.value >= by_first_.size()) break;
-        for (std::uint32_t i : by_first_[a.value]) {
-            const Entry& n = entries_[i];
-            if (n.live && n.env.subset_of(e)) return true;
+    for (std::size_t w = 0; w < words.size(); ++w) {
+        for (std::uint64_t bits = words[w]; bits != 0; bits &= bits - 1) {
+            const std::size_t a = (first_word + w) * 64 + static_cast<std::size_t>(std::countr_zero(bits));
+            if (a >= by_first_.size()) return false;
+            for (std::uint32_t i : by_first_[a]) {
+                const Entry& n = entries_[i];
+                if (n.live && words_subset(n.env.words(), words, first_word)) return true;
+            }
         }
     }
     return false;

@@ -2,7 +2,8 @@
 // Provides:   NogoodDatabase, the set of minimal nogoods (environments known to be inconsistent) with
 //             indexes that make the two consistency questions fast:
 //               subsumes(e)          is some nogood a subset of e?  (checks only nogoods whose
-//                                    lowest assumption is in e)
+//                                    lowest assumption is in e; subsumes_words(w, first) is the
+//                                    same question for a raw bitset window starting at word first)
 //               subsumes_with(w, a)  is some live nogood containing a a subset of w?  When w minus
 //                                    a is consistent (the backtracking step of interpretations),
 //                                    this equals subsumes(w).
@@ -19,7 +20,9 @@
 namespace qm::atms {
 class NogoodDatabase {
 public:
-    [[nodiscard]] bool subsumes(const Environment& e) const noexcept;
+    [[nodiscard]] bool subsumes(const Environment& e) const noexcept { return subsumes_words(e.words()); }
+    // words[i] is word first_word + i of the set; words outside the window are zero.
+    [[nodiscard]] bool subsumes_words(std::span<const std::uint64_t> words, std::size_t first_word = 0) const noexcept;
     [[nodiscard]] bool subsumes_with(std::span<const std::uint64_t> words, AssumptionId a) const noexcept;
     // Adds env as a minimal nogood, retiring the live nogoods that are supersets of it.
     // Pre: !subsumes(e) (an already subsumed nogood adds nothing and is the caller's bug).
