@@ -185,6 +185,10 @@ void Atms::run_events() {
             for (Consumer* c : consumers) c->label_became_nonempty(n);
             for (auto& f : callbacks) f(n);
         } else if (ev.kind == Event::Kind::callbacks) {
+            // Registered while the label was non-empty, but an earlier event's callback may have
+            // emptied it since: then the node holds in no consistent environment, and the
+            // callbacks keep waiting for the label_nonempty event of its next fill.
+            if (labels_[NodeId{ev.id}].empty()) continue;
             auto callbacks = std::move(nodes_[NodeId{ev.id}].first_label_callbacks);
             nodes_[NodeId{ev.id}].first_label_callbacks.clear();
             for (auto& f : callbacks) f(NodeId{ev.id});

@@ -68,3 +68,29 @@ TEST_CASE("atms/environment: no trailing zero words, so equal sets compare equal
     // Duplicates collapse.
     CHECK(Environment::of(std::vector{AssumptionId{70}, AssumptionId{70}}).size() == 1);
 }
+
+TEST_CASE("atms/environment: windows of words: from_words with an offset, first_word, windowed subset") {
+    std::mt19937 rng(29);
+    for (int round = 0; round < 2000; ++round) {
+        const auto x = random_set(rng, 400);
+        const auto y = random_set(rng, 400);
+        const Environment ex = env_of(x), ey = env_of(y);
+        CHECK(ex.first_word() == (x.empty() ? 0 : *x.begin() / 64));
+        // y as a window starting at its first word rebuilds y.
+        const std::size_t first = ey.first_word();
+        const auto all = ey.words();
+        const std::span<const std::uint64_t> window = all.subspan(std::min(first, all.size()));
+        CHECK(Environment::from_words(window, first) == ey);
+        const bool subset = std::includes(y.begin(), y.end(), x.begin(), x.end());
+        CHECK(words_subset(ex.words(), window, first) == subset);
+        // A window with extra zero words on either side answers the same.
+        if (first > 0) {
+            std::vector<std::uint64_t> wider(all.begin() + static_cast<std::ptrdiff_t>(first - 1), all.end());
+            wider.push_back(0);
+            CHECK(words_subset(ex.words(), wider, first - 1) == subset);
+            CHECK(Environment::from_words(wider, first - 1) == ey);
+        }
+    }
+    CHECK(Environment{}.first_word() == 0);
+    CHECK(Environment::from_words(std::vector<std::uint64_t>{0, 0}, 5) == Environment{});
+}

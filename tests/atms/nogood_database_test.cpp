@@ -42,6 +42,9 @@ TEST_CASE("atms/nogood_database: subsumes, subsumes_with and minimal agree with 
             for (int q = 0; q < 10; ++q) {
                 const Environment e = random_env(rng, 5, universe);
                 CHECK(db.subsumes(e) == subsumed_by(e));
+                // The same question on a window of e's words (as weave asks it).
+                const std::size_t first = e.first_word();
+                CHECK(db.subsumes_words(e.words().subspan(first), first) == subsumed_by(e));
                 // Contract of subsumes_with: e minus a is consistent; then it answers subsumes(e).
                 const AssumptionId a = e.first();
                 std::vector<AssumptionId> rest = e.assumptions();
