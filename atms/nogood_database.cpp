@@ -2,6 +2,7 @@
 #include "atms/nogood_database.hpp"
 
 #include "qm/assert.hpp"
+#include <algorithm>
 #include <bit>
 
 namespace qm::atms {
@@ -29,12 +30,25 @@ bool NogoodDatabase::subsumes_words(std::span<const std::uint64_t> words, std::s
 
 bool NogoodDatabase::subsumes_with(std::span<const std::uint64_t> words, AssumptionId a) const noexcept {
     if (empty_nogood_) return true;
-    if (a.value >= containing_.size()) return false;
-    for (std::uint32_t i : containing_[a.value]) {
+    if (a.value < partners_.size()) {
+        const auto& p = partners_[a.value];
+        for (std::size_t i = 0; i < std::min(p.size(), words.size()); ++i)
+            if ((p[i] & words[i]) != 0) return true;
+    }
+    if (a.value >= not_pairs_.size()) return false;
+    for (std::uint32_t i : not_pairs_[a.value]) {
         const Entry& n = entries_[i];
         if (n.live && words_subset(n.env.words(), words)) return true;
     }
     return false;
+}
+
+void NogoodDatabase::set_partner(AssumptionId a, AssumptionId b, bool on) {
+    if (partners_.size() <= a.value) partners_.resize(a.value + 1);
+    auto& p = partners_[a.value];
+    if (p.size() <= b.value / 64) p.resize(b.value / 64 + 1, 0);
+    const std::uint64_t bit = std::uint64_t{1} << (b.value % 64);
+    p[b.value / 64] = on ? (p[b.value / 64] | bit) : (p[b.value / 64] & ~bit);
 }
 
 void NogoodDatabase::add(EnvId id, const Environment& e) {
@@ -42,6 +56,7 @@ void NogoodDatabase::add(EnvId id, const Environment& e) {
     if (e.empty()) {
         // {} is nogood: every environment is inconsistent; it is the only minimal nogood.
         for (Entry& n : entries_) n.live = false;
+        partners_.clear();
         entries_.push_back(Entry{id, e, true});
         live_ = 1;
         empty_nogood_ = true;
@@ -55,6 +70,11 @@ void NogoodDatabase::add(EnvId id, const Environment& e) {
             if (n.live && e.subset_of(n.env)) {
                 n.live = false;
                 --live_;
+                if (n.env.size() == 2) {
+                    const auto pair = n.env.assumptions();
+                    set_partner(pair[0], pair[1], false);
+                    set_partner(pair[1], pair[0], false);
+                }
             }
         }
     }
@@ -66,6 +86,15 @@ void NogoodDatabase::add(EnvId id, const Environment& e) {
     for (AssumptionId a : as) {
         ensure(containing_, a);
         containing_[a.value].push_back(index);
+    }
+    if (as.size() == 2) {
+        set_partner(as[0], as[1], true);
+        set_partner(as[1], as[0], true);
+    } else {
+        for (AssumptionId a : as) {
+            ensure(not_pairs_, a);
+            not_pairs_[a.value].push_back(index);
+        }
     }
 }
 

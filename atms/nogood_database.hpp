@@ -6,7 +6,9 @@
 //                                    same question for a raw bitset window starting at word first)
 //               subsumes_with(w, a)  is some live nogood containing a a subset of w?  When w minus
 //                                    a is consistent (the backtracking step of interpretations),
-//                                    this equals subsumes(w).
+//                                    this equals subsumes(w). Two-assumption nogoods {a, b}, the
+//                                    usual exclusions, are answered by one bitset of the partners
+//                                    b of a, ANDed with w; only larger ones are tested one by one.
 // Ownership:  owns copies of its nogood environments; EnvIds refer to the owner's EnvironmentTable.
 // Invariants: live nogoods are pairwise incomparable (a new nogood retires its supersets).
 // Knows nothing of labels, nodes or rules.
@@ -33,6 +35,7 @@ public:
     [[nodiscard]] bool empty_env_is_nogood() const noexcept { return empty_nogood_; }
 
 private:
+    void set_partner(AssumptionId a, AssumptionId b, bool on);
     struct Entry {
         EnvId id;
         Environment env;
@@ -41,6 +44,8 @@ private:
     std::vector<Entry> entries_;
     std::vector<std::vector<std::uint32_t>> by_first_;    // lowest assumption -> entry indices
     std::vector<std::vector<std::uint32_t>> containing_;  // assumption -> entry indices
+    std::vector<std::vector<std::uint32_t>> not_pairs_;   // assumption -> live-or-dead entries of size != 2
+    std::vector<std::vector<std::uint64_t>> partners_;    // a -> bitset of b with {a, b} a live nogood
     std::size_t live_ = 0;
     bool empty_nogood_ = false;
 };

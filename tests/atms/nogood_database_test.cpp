@@ -50,6 +50,15 @@ TEST_CASE("atms/nogood_database: subsumes, subsumes_with and minimal agree with 
                 std::vector<AssumptionId> rest = e.assumptions();
                 rest.erase(rest.begin());
                 if (!subsumed_by(Environment::of(rest))) CHECK(db.subsumes_with(e.words(), a) == subsumed_by(e));
+                // Without that precondition: exactly "some live nogood containing a is inside e".
+                for (AssumptionId b : e.assumptions()) {
+                    const auto live = db.minimal();
+                    const bool expected_with = std::any_of(live.begin(), live.end(), [&](EnvId id) {
+                        const Environment& g = added[id.value];
+                        return g.contains(b) && g.subset_of(e);
+                    });
+                    CHECK(db.subsumes_with(e.words(), b) == expected_with);
+                }
             }
         }
     }
