@@ -18,10 +18,10 @@ using detail::BitsetPool;
 using detail::MinimalFilter;
 
 namespace {
-// The words of e from word `first` on (all earlier words of e are zero).
-std::span<const std::uint64_t> window(const Environment& e, std::size_t first) {
-    const auto w = e.words();
-    return w.size() > first ? w.subspan(first) : std::span<const std::uint64_t>{};
+// Appends env to the pool as a row of the window starting at word `first` (Pre: env lies inside).
+void push(BitsetPool& pool, const Environment& env, std::size_t first) {
+    std::uint64_t* row = pool.push({});
+    if (!env.empty()) std::copy(env.words().begin(), env.words().end(), row + (env.first_word() - first));
 }
 }  // namespace
 
@@ -34,7 +34,7 @@ std::vector<EnvId> weave(EnvironmentTable& table, const NogoodDatabase& nogoods,
         const Environment& env = table[e];
         if (env.empty()) return;
         first = std::min(first, env.first_word());
-        last = std::max(last, env.words().size());
+        last = std::max(last, env.end_word());
     };
     for (EnvId e : envs) widen(e);
     for (const Label* label : labels) {
@@ -45,7 +45,7 @@ std::vector<EnvId> weave(EnvironmentTable& table, const NogoodDatabase& nogoods,
     const std::size_t width = last - first;
     BitsetPool current(width);
     for (EnvId e : envs)
-        if (!table.is_nogood(e)) current.push(window(table[e], first));
+        if (!table.is_nogood(e)) push(current, table[e], first);
     BitsetPool unions(width);
     BitsetPool minimal(width);
     MinimalFilter filter;
@@ -55,8 +55,10 @@ std::vector<EnvId> weave(EnvironmentTable& table, const NogoodDatabase& nogoods,
             const auto c = current[i];
             for (EnvId l : *label) {
                 std::uint64_t* u = unions.push(c);
-                const auto lw = window(table[l], first);
-                for (std::size_t w = 0; w < lw.size(); ++w) u[w] |= lw[w];
+                const Environment& le = table[l];
+                if (le.empty()) continue;
+                std::uint64_t* at = u + (le.first_word() - first);
+                for (std::size_t w = 0; w < le.words().size(); ++w) at[w] |= le.words()[w];
             }
         }
         // Drop the inconsistent unions (they can never support the consequent) only after

@@ -21,7 +21,7 @@ bool NogoodDatabase::subsumes_words(std::span<const std::uint64_t> words, std::s
             if (a >= by_first_.size()) return false;
             for (std::uint32_t i : by_first_[a]) {
                 const Entry& n = entries_[i];
-                if (n.live && words_subset(n.env.words(), words, first_word)) return true;
+                if (n.live && window_subset(n.env.words(), n.env.first_word(), words, first_word)) return true;
             }
         }
     }
@@ -31,24 +31,21 @@ bool NogoodDatabase::subsumes_words(std::span<const std::uint64_t> words, std::s
 bool NogoodDatabase::subsumes_with(std::span<const std::uint64_t> words, AssumptionId a) const noexcept {
     if (empty_nogood_) return true;
     if (a.value < partners_.size()) {
-        const auto& p = partners_[a.value];
-        for (std::size_t i = 0; i < std::min(p.size(), words.size()); ++i)
-            if ((p[i] & words[i]) != 0) return true;
+        const Environment& p = partners_[a.value];
+        if (window_intersects(p.words(), p.first_word(), words, 0)) return true;
     }
     if (a.value >= not_pairs_.size()) return false;
     for (std::uint32_t i : not_pairs_[a.value]) {
         const Entry& n = entries_[i];
-        if (n.live && words_subset(n.env.words(), words)) return true;
+        if (n.live && window_subset(n.env.words(), n.env.first_word(), words, 0)) return true;
     }
     return false;
 }
 
 void NogoodDatabase::set_partner(AssumptionId a, AssumptionId b, bool on) {
     if (partners_.size() <= a.value) partners_.resize(a.value + 1);
-    auto& p = partners_[a.value];
-    if (p.size() <= b.value / 64) p.resize(b.value / 64 + 1, 0);
-    const std::uint64_t bit = std::uint64_t{1} << (b.value % 64);
-    p[b.value / 64] = on ? (p[b.value / 64] | bit) : (p[b.value / 64] & ~bit);
+    Environment& p = partners_[a.value];
+    p = on ? p.with(b) : p.without(b);
 }
 
 void NogoodDatabase::add(EnvId id, const Environment& e) {

@@ -22,9 +22,12 @@
 namespace qm::atms {
 class NogoodDatabase {
 public:
-    [[nodiscard]] bool subsumes(const Environment& e) const noexcept { return subsumes_words(e.words()); }
+    [[nodiscard]] bool subsumes(const Environment& e) const noexcept {
+        return subsumes_words(e.words(), e.first_word());
+    }
     // words[i] is word first_word + i of the set; words outside the window are zero.
     [[nodiscard]] bool subsumes_words(std::span<const std::uint64_t> words, std::size_t first_word = 0) const noexcept;
+    // words is a raw bitset from word 0 (the mutable partial choice of interpretations).
     [[nodiscard]] bool subsumes_with(std::span<const std::uint64_t> words, AssumptionId a) const noexcept;
     // Adds env as a minimal nogood, retiring the live nogoods that are supersets of it.
     // Pre: !subsumes(e) (an already subsumed nogood adds nothing and is the caller's bug).
@@ -45,7 +48,7 @@ private:
     std::vector<std::vector<std::uint32_t>> by_first_;    // lowest assumption -> entry indices
     std::vector<std::vector<std::uint32_t>> containing_;  // assumption -> entry indices
     std::vector<std::vector<std::uint32_t>> not_pairs_;   // assumption -> live-or-dead entries of size != 2
-    std::vector<std::vector<std::uint64_t>> partners_;    // a -> bitset of b with {a, b} a live nogood
+    std::vector<Environment> partners_;                   // a -> the b with {a, b} a live nogood
     std::size_t live_ = 0;
     bool empty_nogood_ = false;
 };
