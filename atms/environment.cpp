@@ -90,11 +90,31 @@ Environment Environment::with(AssumptionId a) const {
 }
 
 Environment Environment::without(AssumptionId a) const {
-    if (!contains(a)) return *this;
     Environment e = *this;
-    e.words_[a.value / word_bits - e.first_] &= ~bit_of(a);
-    e.normalise();
+    e.erase(a);
     return e;
+}
+
+void Environment::insert(AssumptionId a) {
+    const auto w = static_cast<std::uint32_t>(a.value / word_bits);
+    if (words_.empty()) {
+        first_ = w;
+        words_.assign(1, bit_of(a));
+        return;
+    }
+    if (w < first_) {
+        words_.insert(words_.begin(), first_ - w, 0);
+        first_ = w;
+    } else if (w >= end_word()) {
+        words_.resize(w - first_ + 1, 0);
+    }
+    words_[w - first_] |= bit_of(a);
+}
+
+void Environment::erase(AssumptionId a) {
+    if (!contains(a)) return;
+    words_[a.value / word_bits - first_] &= ~bit_of(a);
+    normalise();
 }
 
 Environment join(const Environment& x, const Environment& y) {

@@ -31,6 +31,8 @@ public:
     [[nodiscard]] std::uint32_t size() const noexcept;  // number of assumptions
     [[nodiscard]] Environment with(AssumptionId a) const;
     [[nodiscard]] Environment without(AssumptionId a) const;
+    void insert(AssumptionId a);  // in place: *this = with(a)
+    void erase(AssumptionId a);   // in place: *this = without(a)
     friend Environment join(const Environment& x, const Environment& y);  // x ∪ y
     // The assumptions in increasing id order.
     [[nodiscard]] std::vector<AssumptionId> assumptions() const;

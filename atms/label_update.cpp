@@ -27,6 +27,12 @@ void push(BitsetPool& pool, const Environment& env, std::size_t first) {
 
 std::vector<EnvId> weave(EnvironmentTable& table, const NogoodDatabase& nogoods, std::vector<EnvId> envs,
                          std::span<const Label* const> labels) {
+    detail::WeaveScratch scratch;
+    return weave(table, nogoods, envs, labels, scratch);
+}
+
+std::vector<EnvId> weave(EnvironmentTable& table, const NogoodDatabase& nogoods, std::span<const EnvId> envs,
+                         std::span<const Label* const> labels, detail::WeaveScratch& scratch) {
     // All unions are formed in the window of words [first, last) that holds every involved
     // assumption, so with thousands of assumptions an env of nearby ones stays a few words wide.
     std::size_t first = SIZE_MAX, last = 0;
@@ -43,12 +49,15 @@ std::vector<EnvId> weave(EnvironmentTable& table, const NogoodDatabase& nogoods,
     }
     if (first > last) first = last = 0;  // only empty environments
     const std::size_t width = last - first;
-    BitsetPool current(width);
+    BitsetPool& current = scratch.current;
+    current.reset(width);
     for (EnvId e : envs)
         if (!table.is_nogood(e)) push(current, table[e], first);
-    BitsetPool unions(width);
-    BitsetPool minimal(width);
-    MinimalFilter filter;
+    BitsetPool& unions = scratch.unions;
+    BitsetPool& minimal = scratch.minimal;
+    unions.reset(width);
+    minimal.reset(width);
+    MinimalFilter& filter = scratch.filter;
     for (const Label* label : labels) {
         unions.clear();
         for (std::size_t i = 0; i < current.size(); ++i) {

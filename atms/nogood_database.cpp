@@ -44,8 +44,8 @@ bool NogoodDatabase::subsumes_with(std::span<const std::uint64_t> words, Assumpt
 
 void NogoodDatabase::set_partner(AssumptionId a, AssumptionId b, bool on) {
     if (partners_.size() <= a.value) partners_.resize(a.value + 1);
-    Environment& p = partners_[a.value];
-    p = on ? p.with(b) : p.without(b);
+    if (on) partners_[a.value].insert(b);
+    else partners_[a.value].erase(b);
 }
 
 void NogoodDatabase::add(EnvId id, const Environment& e) {

@@ -1,7 +1,8 @@
 // atms/detail/minimal_sets.hpp (internal to atms/; nothing outside the module includes it)
 // Provides:   BitsetPool, a flat array of equal-width bitsets (scratch space for sets that are
-//             formed and mostly thrown away, such as the unions inside weave), and MinimalFilter,
-//             which keeps the minimal elements under set inclusion of a pool, duplicates removed.
+//             formed and mostly thrown away, such as the unions inside weave), MinimalFilter,
+//             which keeps the minimal elements under set inclusion of a pool, duplicates removed,
+//             and WeaveScratch, the pools of one weave kept between calls.
 // Ownership:  values; a row pointer or span is valid until the next push/clear of its pool.
 // Invariants: every row of a pool has exactly width() words (zero padded).
 // Knows nothing of environments' ids, labels or nodes: a row is only a set of bit positions.
@@ -28,6 +29,11 @@ public:
         words_.clear();
         rows_ = 0;
     }
+    // Empties the pool and sets a new row width, keeping the allocated storage.
+    void reset(std::size_t width) noexcept {
+        clear();
+        width_ = width;
+    }
 
 private:
     std::size_t width_;
@@ -48,5 +54,12 @@ private:
     std::vector<std::uint32_t> starts_;  // counting sort offsets by size
     std::vector<std::vector<std::uint32_t>> by_lowest_;  // lowest bit -> kept row indices in out
     std::vector<std::uint32_t> touched_;                  // the non-empty buckets of by_lowest_
+};
+
+// The scratch space of one weave, kept by its owner between calls so that adding a justification
+// allocates nothing once the pools have grown (label_update.hpp).
+struct WeaveScratch {
+    BitsetPool current{0}, unions{0}, minimal{0};
+    MinimalFilter filter;
 };
 }  // namespace qm::atms::detail

@@ -72,6 +72,14 @@ TEST_CASE("atms/environment: operations agree with std::set on random sets (seve
         std::set<std::uint32_t> v = x;
         v.erase(extra.value);
         CHECK(ex.without(extra) == env_of(v));
+        Environment in_place = ex;
+        in_place.insert(extra);
+        CHECK(in_place == env_of(w));
+        in_place.erase(extra);
+        CHECK(in_place == env_of(v));
+        Environment grown;  // inserting in falling order grows the window downwards
+        for (auto it = x.rbegin(); it != x.rend(); ++it) grown.insert(AssumptionId{*it});
+        CHECK(grown == ex);
         // The stored window is tight: from the lowest to the highest assumption's word.
         if (!x.empty()) {
             CHECK(ex.first_word() == *x.begin() / 64);
