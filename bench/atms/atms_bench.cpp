@@ -6,8 +6,9 @@
 //             bounded and the cost should grow with the theory;
 //      deep   a layered window theory whose derivation depth grows with its size (antecedents from
 //             the 30 nodes before the consequent), so labels grow combinatorially: the sizes listed
-//             are the ones that finish (at 6x the smallest, labels pass 10^4 envs per node and one
-//             clause takes minutes in any ATMS that keeps labels complete);
+//             are the ones that finish (from 6x the smallest on, a run takes minutes; at 8x a single
+//             clause takes 142 s and leaves labels of 13,000 envs, which any ATMS keeping labels
+//             complete must compute; docs/PERFORMANCE.md);
 //      clauses are given in random order, so labels are revised, not built bottom-up;
 //   2. N-queens as ATMS interpretations: one choice set per row (assumption = column), pairwise
 //      nogoods for attacking placements; the whole run (build the ATMS, assumptions, nogoods,
