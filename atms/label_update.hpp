@@ -2,7 +2,8 @@
 // Provides:   weave(), the core of de Kleer's label update (1986, section 4; BPS atms.lisp `weave`):
 //             given the new envs of one antecedent, combine them with the labels of the other
 //             antecedents of a justification into the minimal consistent unions.
-// Ownership:  pure function over the caller's table; interns the unions it forms.
+// Ownership:  pure function over the caller's table. Intermediate unions are scratch bitsets
+//             (detail/minimal_sets.hpp); only the returned minimal consistent unions are interned.
 // Knows nothing of nodes or justifications beyond the labels it is handed.
 #pragma once
 #include "atms/detail/minimal_sets.hpp"
