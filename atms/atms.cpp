@@ -12,10 +12,12 @@
 
 namespace qm::atms {
 
-Atms::Atms() {
+Atms::Atms() : scratch_(std::make_unique<detail::WeaveScratch>()) {
     empty_env_ = envs_.intern(Environment{}, nogoods_);
     contradiction_ = new_node(DatumId{});
 }
+
+Atms::~Atms() = default;
 
 NodeId Atms::new_node(DatumId d) {
     const NodeId n = nodes_.push_back(NodeData{d, std::nullopt, false, {}, {}, {}});
@@ -106,7 +108,7 @@ void Atms::propagate(const Pending& p) {
     others.reserve(just.antecedents.size());
     for (NodeId a : just.antecedents)
         if (!p.changed || a != *p.changed) others.push_back(&labels_[a]);
-    envs = weave(envs_, nogoods_, std::move(envs), others);
+    envs = weave(envs_, nogoods_, envs, others, *scratch_);
     if (envs.empty()) return;
     update(std::move(envs), just.consequent, p.just);
 }
@@ -185,6 +187,10 @@ void Atms::run_events() {
             for (Consumer* c : consumers) c->label_became_nonempty(n);
             for (auto& f : callbacks) f(n);
         } else if (ev.kind == Event::Kind::callbacks) {
+            // Registered while the label was non-empty, but an earlier event's callback may have
+            // emptied it since: then the node holds in no consistent environment, and the
+            // callbacks keep waiting for the label_nonempty event of its next fill.
+            if (labels_[NodeId{ev.id}].empty()) continue;
             auto callbacks = std::move(nodes_[NodeId{ev.id}].first_label_callbacks);
             nodes_[NodeId{ev.id}].first_label_callbacks.clear();
             for (auto& f : callbacks) f(NodeId{ev.id});

@@ -31,6 +31,7 @@
 #include <cstddef>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -39,6 +40,7 @@ namespace qm::atms {
 class Atms {
 public:
     Atms();
+    ~Atms();
     Atms(const Atms&) = delete;
     Atms& operator=(const Atms&) = delete;
 
@@ -165,5 +167,6 @@ private:
     std::deque<Event> events_;
     std::vector<Consumer*> consumers_;
     bool running_events_ = false;
+    std::unique_ptr<detail::WeaveScratch> scratch_;  // reused by every weave (label_update.hpp)
 };
 }  // namespace qm::atms

@@ -18,7 +18,11 @@ public:
     Consumer& operator=(const Consumer&) = delete;
     virtual ~Consumer() = default;
     // The label of `node` went from empty to non-empty (it now holds in some consistent environment).
-    // Delivered on every such transition: a label emptied by nogoods and filled again fires again.
+    // Delivered on every such transition: a label emptied by nogoods and filled again fires again,
+    // even when both happen inside one call (a nogood empties it and the same propagation refills
+    // it), so a node whose label was non-empty before and after a call may be announced: treat
+    // the event as idempotent. A label that fills and is emptied again inside one call is not
+    // announced (at delivery it holds nowhere).
     virtual void label_became_nonempty(NodeId /*node*/) {}
     // `env` became a minimal nogood. Every superset of env is then also nogood (is_consistent false),
     // but only the minimal nogood is announced.

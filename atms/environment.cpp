@@ -1,53 +1,81 @@
-// atms/environment.cpp: the bitset operations of Environment.
+// atms/environment.cpp: the bitset operations of Environment, on windows of words.
 #include "atms/environment.hpp"
 
+#include "qm/assert.hpp"
 #include <algorithm>
 #include <bit>
 
 namespace qm::atms {
 namespace {
 constexpr std::uint32_t word_bits = 64;
-}
+
+std::uint64_t bit_of(AssumptionId a) noexcept { return std::uint64_t{1} << (a.value % word_bits); }
+}  // namespace
 
 Environment Environment::of(std::span<const AssumptionId> as) {
     Environment e;
-    for (AssumptionId a : as) {
-        const std::size_t w = a.value / word_bits;
-        if (e.words_.size() <= w) e.words_.resize(w + 1, 0);
-        e.words_[w] |= std::uint64_t{1} << (a.value % word_bits);
-    }
+    if (as.empty()) return e;
+    const auto [lo, hi] = std::minmax_element(as.begin(), as.end());
+    e.first_ = lo->value / word_bits;
+    e.words_.assign(hi->value / word_bits - e.first_ + 1, 0);
+    for (AssumptionId a : as) e.words_[a.value / word_bits - e.first_] |= bit_of(a);
     return e;
 }
 
-Environment Environment::from_words(std::span<const std::uint64_t> words) {
+Environment Environment::from_words(std::span<const std::uint64_t> words) { return from_words(words, 0); }
+
+Environment Environment::from_words(std::span<const std::uint64_t> words, std::size_t first_word) {
+    std::size_t lo = 0, hi = words.size();
+    while (lo < hi && words[lo] == 0) ++lo;
+    while (hi > lo && words[hi - 1] == 0) --hi;
     Environment e;
-    e.words_.assign(words.begin(), words.end());
-    e.trim();
+    if (lo == hi) return e;
+    QM_REQUIRE(first_word + hi <= std::size_t{UINT32_MAX} / word_bits, "assumption id out of range");
+    e.first_ = static_cast<std::uint32_t>(first_word + lo);
+    e.words_.assign(words.begin() + static_cast<std::ptrdiff_t>(lo), words.begin() + static_cast<std::ptrdiff_t>(hi));
     return e;
 }
 
-void Environment::trim() noexcept {
+void Environment::normalise() noexcept {
     while (!words_.empty() && words_.back() == 0) words_.pop_back();
+    std::size_t lead = 0;
+    while (lead < words_.size() && words_[lead] == 0) ++lead;
+    if (lead > 0) {
+        words_.erase(words_.begin(), words_.begin() + static_cast<std::ptrdiff_t>(lead));
+        first_ += static_cast<std::uint32_t>(lead);
+    }
+    if (words_.empty()) first_ = 0;
 }
 
 bool Environment::contains(AssumptionId a) const noexcept {
     const std::size_t w = a.value / word_bits;
-    return w < words_.size() && ((words_[w] >> (a.value % word_bits)) & 1U) != 0;
+    return w >= first_ && w < end_word() && (words_[w - first_] & bit_of(a)) != 0;
 }
 
-bool words_subset(std::span<const std::uint64_t> words, std::span<const std::uint64_t> of) noexcept {
-    const std::size_t common = std::min(words.size(), of.size());
-    for (std::size_t i = 0; i < common; ++i)
-        if ((words[i] & ~of[i]) != 0) return false;
-    for (std::size_t i = common; i < words.size(); ++i)
-        if (words[i] != 0) return false;
+bool window_subset(std::span<const std::uint64_t> x, std::size_t x_first, std::span<const std::uint64_t> y,
+                   std::size_t y_first) noexcept {
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        if (x[i] == 0) continue;
+        const std::size_t w = x_first + i;  // absolute word index
+        if (w < y_first || w - y_first >= y.size() || (x[i] & ~y[w - y_first]) != 0) return false;
+    }
     return true;
 }
 
+bool window_intersects(std::span<const std::uint64_t> x, std::size_t x_first, std::span<const std::uint64_t> y,
+                       std::size_t y_first) noexcept {
+    const std::size_t lo = std::max(x_first, y_first);
+    const std::size_t hi = std::min(x_first + x.size(), y_first + y.size());
+    for (std::size_t w = lo; w < hi; ++w)
+        if ((x[w - x_first] & y[w - y_first]) != 0) return true;
+    return false;
+}
+
 bool Environment::subset_of(const Environment& other) const noexcept {
-    // No trailing zero words: a longer bitset has a bit the shorter one lacks.
-    if (words_.size() > other.words_.size()) return false;
-    return words_subset(words_, other.words_);
+    // Both windows are tight, so a window reaching outside the other's has a bit the other lacks.
+    if (empty()) return true;
+    if (first_ < other.first_ || end_word() > other.end_word()) return false;
+    return window_subset(words_, first_, other.words_, other.first_);
 }
 
 std::uint32_t Environment::size() const noexcept {
@@ -57,29 +85,55 @@ std::uint32_t Environment::size() const noexcept {
 }
 
 Environment Environment::with(AssumptionId a) const {
+    const AssumptionId one[] = {a};
+    return join(*this, Environment::of(one));
+}
+
+Environment Environment::without(AssumptionId a) const {
     Environment e = *this;
-    const std::size_t w = a.value / word_bits;
-    if (e.words_.size() <= w) e.words_.resize(w + 1, 0);
-    e.words_[w] |= std::uint64_t{1} << (a.value % word_bits);
+    e.erase(a);
     return e;
 }
 
+void Environment::insert(AssumptionId a) {
+    const auto w = static_cast<std::uint32_t>(a.value / word_bits);
+    if (words_.empty()) {
+        first_ = w;
+        words_.assign(1, bit_of(a));
+        return;
+    }
+    if (w < first_) {
+        words_.insert(words_.begin(), first_ - w, 0);
+        first_ = w;
+    } else if (w >= end_word()) {
+        words_.resize(w - first_ + 1, 0);
+    }
+    words_[w - first_] |= bit_of(a);
+}
+
+void Environment::erase(AssumptionId a) {
+    if (!contains(a)) return;
+    words_[a.value / word_bits - first_] &= ~bit_of(a);
+    normalise();
+}
+
 Environment join(const Environment& x, const Environment& y) {
-    const Environment& longer = x.words_.size() >= y.words_.size() ? x : y;
-    const Environment& shorter = x.words_.size() >= y.words_.size() ? y : x;
-    Environment e = longer;
-    for (std::size_t i = 0; i < shorter.words_.size(); ++i) e.words_[i] |= shorter.words_[i];
-    return e;  // the longer one's last word is non-zero, so no trim is needed
+    if (x.empty()) return y;
+    if (y.empty()) return x;
+    Environment e;
+    e.first_ = std::min(x.first_, y.first_);
+    e.words_.assign(std::max(x.end_word(), y.end_word()) - e.first_, 0);
+    for (std::size_t i = 0; i < x.words_.size(); ++i) e.words_[x.first_ - e.first_ + i] |= x.words_[i];
+    for (std::size_t i = 0; i < y.words_.size(); ++i) e.words_[y.first_ - e.first_ + i] |= y.words_[i];
+    return e;  // both ends come from a non-zero end word of x or y: no normalising needed
 }
 
 std::vector<AssumptionId> Environment::assumptions() const {
     std::vector<AssumptionId> out;
     for (std::size_t i = 0; i < words_.size(); ++i) {
-        std::uint64_t w = words_[i];
-        while (w != 0) {
-            const int bit = std::countr_zero(w);
-            out.push_back(AssumptionId{static_cast<std::uint32_t>(i * word_bits + static_cast<std::size_t>(bit))});
-            w &= w - 1;
+        for (std::uint64_t w = words_[i]; w != 0; w &= w - 1) {
+            const auto bit = static_cast<std::size_t>(std::countr_zero(w));
+            out.push_back(AssumptionId{static_cast<std::uint32_t>((first_ + i) * word_bits + bit)});
         }
     }
     return out;
@@ -87,14 +141,12 @@ std::vector<AssumptionId> Environment::assumptions() const {
 
 AssumptionId Environment::first() const {
     QM_REQUIRE(!words_.empty(), "first() of the empty environment");
-    for (std::size_t i = 0;; ++i)
-        if (words_[i] != 0)
-            return AssumptionId{static_cast<std::uint32_t>(i * word_bits +
-                                                           static_cast<std::size_t>(std::countr_zero(words_[i])))};
+    return AssumptionId{static_cast<std::uint32_t>(first_ * word_bits +
+                                                   static_cast<std::size_t>(std::countr_zero(words_.front())))};
 }
 
 std::size_t Environment::hash() const noexcept {
-    std::uint64_t h = 0x9e3779b97f4a7c15ULL;
+    std::uint64_t h = 0x9e3779b97f4a7c15ULL ^ first_;
     for (std::uint64_t w : words_) {
         h ^= w + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
         h *= 0xff51afd7ed558ccdULL;

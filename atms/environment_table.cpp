@@ -7,10 +7,21 @@
 namespace qm::atms {
 EnvId EnvironmentTable::intern(const Environment& e, const NogoodDatabase& nogoods) {
     if (auto it = index_.find(e); it != index_.end()) return it->second;
+    return add(e, nogoods.subsumes(e));
+}
+
+EnvId EnvironmentTable::intern_consistent(const Environment& e, const NogoodDatabase& nogoods) {
+    QM_ASSERT(!nogoods.subsumes(e), "intern_consistent: the environment is nogood");
+    (void)nogoods;
+    if (auto it = index_.find(e); it != index_.end()) return it->second;
+    return add(e, false);
+}
+
+EnvId EnvironmentTable::add(const Environment& e, bool nogood) {
     Entry entry;
     entry.env = e;
     entry.count = e.size();
-    entry.nogood = nogoods.subsumes(e);
+    entry.nogood = nogood;
     const EnvId id = envs_.push_back(std::move(entry));
     index_.emplace(e, id);
     for (AssumptionId a : e.assumptions()) {

@@ -26,6 +26,9 @@ public:
 
     // The id of e, creating it (with its nogood flag from `nogoods`) if new.
     EnvId intern(const Environment& e, const NogoodDatabase& nogoods);
+    // The same for an env the caller has just found consistent (weave's results), sparing the
+    // nogood test. Pre: !nogoods.subsumes(e) (checked by QM_ASSERT).
+    EnvId intern_consistent(const Environment& e, const NogoodDatabase& nogoods);
     // The union of x and y, memoised. Pre: x, y valid.
     EnvId join(EnvId x, EnvId y, const NogoodDatabase& nogoods);
 
@@ -44,6 +47,7 @@ public:
     [[nodiscard]] const std::vector<EnvId>& containing(AssumptionId a) const;
 
 private:
+    EnvId add(const Environment& e, bool nogood);  // Pre: e not interned yet
     struct Entry {
         Environment env;
         std::uint32_t count = 0;

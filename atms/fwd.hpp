@@ -12,4 +12,7 @@ struct Justification;
 struct Explanation;
 class Consumer;
 class Atms;
+namespace detail {
+struct WeaveScratch;
+}
 }  // namespace qm::atms

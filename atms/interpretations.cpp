@@ -48,8 +48,9 @@ std::size_t enumerate_interpretations(const NogoodDatabase& nogoods, std::size_t
                                       const Environment& base,
                                       const std::function<bool(const Environment&)>& visit) {
     if (nogoods.subsumes(base)) return 0;
-    std::vector<std::uint64_t> words(base.words().begin(), base.words().end());
-    words.resize(std::max(words.size(), (assumption_count + word_bits - 1) / word_bits), 0);
+    // The partial choice is a plain bitset from word 0 over every assumption.
+    std::vector<std::uint64_t> words(std::max(base.end_word(), (assumption_count + word_bits - 1) / word_bits), 0);
+    std::copy(base.words().begin(), base.words().end(), words.begin() + static_cast<std::ptrdiff_t>(base.first_word()));
     // Drop choices inconsistent with base alone once, instead of at every node of the search.
     std::vector<std::vector<AssumptionId>> choices;
     choices.reserve(choice_sets.size());

@@ -2,6 +2,8 @@
 #include "atms/nogood_database.hpp"
 
 #include "qm/assert.hpp"
+#include <algorithm>
+#include <bit>
 
 namespace qm::atms {
 namespace {
@@ -10,14 +12,17 @@ void ensure(std::vector<std::vector<std::uint32_t>>& index, AssumptionId a) {
 }
 }  // namespace
 
-bool NogoodDatabase::subsumes(const Environment& e) const noexcept {
+bool NogoodDatabase::subsumes_words(std::span<const std::uint64_t> words, std::size_t first_word) const noexcept {
     if (empty_nogood_) return true;
     // A nogood N is a subset of e only if N's highest assumption is in e: visit just those buckets.
-    for (AssumptionId a : e.assumptions()) {
-        if (a.value >= by_first_.size()) break;
-        for (std::uint32_t i : by_first_[a.value]) {
-            const Entry& n = entries_[i];
-            if (n.live && n.env.subset_of(e)) return true;
+    for (std::size_t w = 0; w < words.size(); ++w) {
+        for (std::uint64_t bits = words[w]; bits != 0; bits &= bits - 1) {
+            const std::size_t a = (first_word + w) * 64 + static_cast<std::size_t>(std::countr_zero(bits));
+            if (a >= by_first_.size()) return false;
+            for (std::uint32_t i : by_first_[a]) {
+                const Entry& n = entries_[i];
+                if (n.live && window_subset(n.env.words(), n.env.first_word(), words, first_word)) return true;
+            }
         }
     }
     return false;
@@ -25,12 +30,22 @@ bool NogoodDatabase::subsumes(const Environment& e) const noexcept {
 
 bool NogoodDatabase::subsumes_with(std::span<const std::uint64_t> words, AssumptionId a) const noexcept {
     if (empty_nogood_) return true;
-    if (a.value >= containing_.size()) return false;
-    for (std::uint32_t i : containing_[a.value]) {
+    if (a.value < partners_.size()) {
+        const Environment& p = partners_[a.value];
+        if (window_intersects(p.words(), p.first_word(), words, 0)) return true;
+    }
+    if (a.value >= not_pairs_.size()) return false;
+    for (std::uint32_t i : not_pairs_[a.value]) {
         const Entry& n = entries_[i];
-        if (n.live && words_subset(n.env.words(), words)) return true;
+        if (n.live && window_subset(n.env.words(), n.env.first_word(), words, 0)) return true;
     }
     return false;
+}
+
+void NogoodDatabase::set_partner(AssumptionId a, AssumptionId b, bool on) {
+    if (partners_.size() <= a.value) partners_.resize(a.value + 1);
+    if (on) partners_[a.value].insert(b);
+    else partners_[a.value].erase(b);
 }
 
 void NogoodDatabase::add(EnvId id, const Environment& e) {
@@ -38,6 +53,7 @@ void NogoodDatabase::add(EnvId id, const Environment& e) {
     if (e.empty()) {
         // {} is nogood: every environment is inconsistent; it is the only minimal nogood.
         for (Entry& n : entries_) n.live = false;
+        partners_.clear();
         entries_.push_back(Entry{id, e, true});
         live_ = 1;
         empty_nogood_ = true;
@@ -59,6 +75,11 @@ void NogoodDatabase::add(EnvId id, const Environment& e) {
             if (n.live && e.subset_of(n.env)) {
                 n.live = false;
                 --live_;
+                if (n.env.size() == 2) {
+                    const auto pair = n.env.assumptions();
+                    set_partner(pair[0], pair[1], false);
+                    set_partner(pair[1], pair[0], false);
+                }
             }
         }
     }
@@ -70,6 +91,15 @@ void NogoodDatabase::add(EnvId id, const Environment& e) {
     for (AssumptionId a : as) {
         ensure(containing_, a);
         containing_[a.value].push_back(index);
+    }
+    if (as.size() == 2) {
+        set_partner(as[0], as[1], true);
+        set_partner(as[1], as[0], true);
+    } else {
+        for (AssumptionId a : as) {
+            ensure(not_pairs_, a);
+            not_pairs_[a.value].push_back(index);
+        }
     }
 }
 

@@ -1,13 +1,24 @@
 // bench/atms/atms_bench.cpp
-// Prints numbers, passes or fails nothing (STYLE.md section 8):
-//   1. label propagation on seeded random layered Horn theories of growing size;
-//   2. N-queens N = 4..12 as ATMS interpretations: one choice set per row (assumption = column),
-//      pairwise nogoods for attacking placements; the whole run (build the ATMS, assumptions,
-//      nogoods, enumerate and intern all solutions) is timed, median of several repetitions;
-//   3. the same count by the streaming interpretation visitor (no interning);
-//   4. a plain bitmask backtracking N-queens as the floor.
-// Peak RSS (getrusage ru_maxrss) is printed at the end of each section.
-// Usage: atms_bench [--quick]   (--quick: fewer repetitions, N up to 10)
+// Prints numbers, passes or fails nothing (STYLE.md section 8); docs/PERFORMANCE.md records them.
+//   1. label propagation on seeded random Horn theories of growing size, two families:
+//      local  fixed depth (8 layers of derived nodes over a layer of assumptions), growing width;
+//             each node's justifications draw on nearby nodes of the layer below, so labels stay
+//             bounded and the cost should grow with the theory;
+//      deep   a layered window theory whose derivation depth grows with its size (antecedents from
+//             the 30 nodes before the consequent), so labels grow combinatorially: the sizes listed
+//             are the ones that finish (from 6x the smallest on, a run takes minutes; at 8x a single
+//             clause takes 142 s and leaves labels of 13,000 envs, which any ATMS keeping labels
+//             complete must compute; docs/PERFORMANCE.md);
+//      clauses are given in random order, so labels are revised, not built bottom-up;
+//   2. N-queens as ATMS interpretations: one choice set per row (assumption = column), pairwise
+//      nogoods for attacking placements; the whole run (build the ATMS, assumptions, nogoods,
+//      enumerate and intern all solutions) is timed; then the same with the streaming visitor
+//      (nothing interned); then a plain bitmask backtracking N-queens as the floor;
+//   3. peak memory: each configuration runs once more while the resident set's peak is watched
+//      (peak_growth_kib: how far the run raises RSS above its starting point).
+// Times are wall-clock medians (and minima) of several repetitions on one thread.
+// stdout is line buffered, so a run piped into a file or `tee` shows each row when it is done.
+// Usage: atms_bench [--quick]   (--quick: fewer repetitions, smaller sizes, N up to 10)
 #include "atms/atms.hpp"
 
 #include <algorithm>
@@ -15,67 +26,162 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <random>
-#include <sys/resource.h>
+#include <malloc.h>
 #include <vector>
 
 using namespace qm::atms;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-long peak_rss_kib() {
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    return u.ru_maxrss;  // KiB on Linux
-}
+struct Timing {
+    double median_ms = 0, min_ms = 0;
+};
 
 template <class F>
-double median_seconds(int reps, F&& run) {
+Timing time_runs(int reps, F&& run) {
     std::vector<double> t;
     for (int i = 0; i < reps; ++i) {
         const auto t0 = Clock::now();
         run();
-        t.push_back(seconds_since(t0));
+        t.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
     }
     std::sort(t.begin(), t.end());
-    return t[t.size() / 2];
+    return {t[t.size() / 2], t.front()};
 }
 
-// ---- 1. random layered Horn theories --------------------------------------------------------
-struct TheoryStats {
-    std::size_t envs = 0, label_envs = 0, nogoods = 0;
+// A field of /proc/self/status in KiB (VmRSS, VmHWM), or -1.
+long status_kib(const char* field) {
+    std::FILE* f = std::fopen("/proc/self/status", "r");
+    if (f == nullptr) return -1;
+    char line[256];
+    long kib = -1;
+    const std::size_t len = std::strlen(field);
+    while (std::fgets(line, sizeof line, f) != nullptr)
+        if (std::strncmp(line, field, len) == 0 && line[len] == ':') kib = std::atol(line + len + 1);
+    std::fclose(f);
+    return kib;
+}
+
+// How far one run of f raises the resident set above where it started, in KiB: free heap is
+// returned to the kernel first (malloc_trim), then the peak-RSS mark is reset to the current RSS
+// (writing 5 to /proc/self/clear_refs, Linux >= 4.0) and read back after the run. -1 if the
+// kernel does not allow the reset.
+template <class F>
+long peak_growth_kib(F&& f) {
+    malloc_trim(0);
+    std::FILE* c = std::fopen("/proc/self/clear_refs", "w");
+    if (c == nullptr) return -1;
+    const bool reset = std::fputs("5", c) >= 0;
+    if (std::fclose(c) != 0 || !reset) return -1;
+    const long before = status_kib("VmRSS");
+    f();
+    const long peak = status_kib("VmHWM");
+    return before < 0 || peak < 0 ? -1 : peak - before;
+}
+
+// ---- 1. random Horn theories ---------------------------------------------------------------------
+struct Clause {
+    std::vector<NodeId> antecedents;
+    std::optional<NodeId> consequent;  // none: a nogood
 };
 
-TheoryStats random_theory(std::uint32_t seed, int assumptions, int nodes, int clauses) {
+struct TheoryStats {
+    std::size_t assumptions = 0, nodes = 0, clauses = 0, envs = 0, label_envs = 0, max_label = 0, nogoods = 0;
+};
+
+TheoryStats finish(Atms& atms, const std::vector<Clause>& clauses) {
+    for (const Clause& c : clauses) {
+        if (c.consequent) atms.justify(InformantId{0}, c.antecedents, *c.consequent);
+        else atms.add_nogood(InformantId{0}, c.antecedents);
+    }
+    TheoryStats s;
+    s.assumptions = atms.assumption_count();
+    s.nodes = atms.node_count();
+    s.clauses = clauses.size();
+    s.envs = atms.environment_count();
+    s.nogoods = atms.minimal_nogoods().size();
+    for (std::uint32_t n = 0; n < atms.node_count(); ++n) {
+        s.label_envs += atms.label(NodeId{n}).size();
+        s.max_label = std::max(s.max_label, atms.label(NodeId{n}).size());
+    }
+    return s;
+}
+
+// Layer 0: `width` assumptions; layers 1..8: `width` derived nodes each. Node i of layer k gets
+// 1-3 justifications, each from 1-2 nodes of layer k-1 within 2 places of i (cyclically) and,
+// one time in four, an assumption near i too; width/4 nogoods between nearby nodes of layers 0-2.
+TheoryStats local_theory(std::uint32_t seed, int width) {
+    constexpr int depth = 8, reach = 2;
+    std::mt19937 rng(seed);
+    auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+    Atms atms;
+    std::vector<std::vector<NodeId>> layer(depth + 1);
+    for (int i = 0; i < width; ++i) layer[0].push_back(atms.add_assumption(DatumId{0}));
+    for (int k = 1; k <= depth; ++k)
+        for (int i = 0; i < width; ++i) layer[static_cast<std::size_t>(k)].push_back(atms.add_node(DatumId{0}));
+    auto near = [&](int k, int i) {
+        const int j = ((i + pick(-reach, reach)) % width + width) % width;
+        return layer[static_cast<std::size_t>(k)][static_cast<std::size_t>(j)];
+    };
+    std::vector<Clause> clauses;
+    for (int k = 1; k <= depth; ++k)
+        for (int i = 0; i < width; ++i)
+            for (int j = pick(1, 3); j > 0; --j) {
+                Clause c{{}, layer[static_cast<std::size_t>(k)][static_cast<std::size_t>(i)]};
+                for (int f = pick(1, 2); f > 0; --f) c.antecedents.push_back(near(k - 1, i));
+                if (pick(0, 3) == 0) c.antecedents.push_back(near(0, i));
+                clauses.push_back(std::move(c));
+            }
+    for (int g = 0; g < width / 4; ++g) {
+        const int i = pick(0, width - 1);
+        clauses.push_back(Clause{{near(pick(0, 2), i), near(pick(0, 2), i)}, std::nullopt});
+    }
+    std::shuffle(clauses.begin(), clauses.end(), rng);
+    return finish(atms, clauses);
+}
+
+// `assumptions` assumptions, `nodes` derived nodes, `count` clauses: each concludes a random
+// derived node from 1-3 antecedents, each an assumption with probability 1/3, else one of the 30
+// derived nodes before the consequent; 4% of the clauses are nogoods instead.
+TheoryStats deep_theory(std::uint32_t seed, int assumptions, int nodes, int count) {
     std::mt19937 rng(seed);
     auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
     Atms atms;
     std::vector<NodeId> all;
     for (int i = 0; i < assumptions; ++i) all.push_back(atms.add_assumption(DatumId{0}));
     for (int i = 0; i < nodes; ++i) all.push_back(atms.add_node(DatumId{0}));
-    for (int c = 0; c < clauses; ++c) {
-        // Consequent: a derived node; antecedents: 1-3 earlier nodes, each an assumption with
-        // probability 1/3, else a derived node from the 30 before the consequent (a layered
-        // theory, so labels stay bounded, with chains as rules make them).
+    std::vector<Clause> clauses;
+    for (int c = 0; c < count; ++c) {
         const int cons = pick(assumptions + 1, assumptions + nodes - 1);
-        std::vector<NodeId> ants;
+        Clause clause{{}, all[static_cast<std::size_t>(cons)]};
         for (int k = pick(1, 3); k > 0; --k) {
             const int i = pick(0, 2) == 0 ? pick(0, assumptions - 1) : pick(std::max(assumptions, cons - 30), cons - 1);
-            ants.push_back(all[static_cast<std::size_t>(i)]);
+            clause.antecedents.push_back(all[static_cast<std::size_t>(i)]);
         }
-        if (pick(0, 99) < 4) atms.add_nogood(InformantId{0}, ants);
-        else atms.justify(InformantId{0}, ants, all[static_cast<std::size_t>(cons)]);
+        if (pick(0, 99) < 4) clause.consequent.reset();
+        clauses.push_back(std::move(clause));
     }
-    TheoryStats s;
-    s.envs = atms.environment_count();
-    s.nogoods = atms.minimal_nogoods().size();
-    for (NodeId n : all) s.label_envs += atms.label(n).size();
-    return s;
+    return finish(atms, clauses);
 }
 
-// ---- 2/3. N-queens on the ATMS ---------------------------------------------------------------
+void print_theory_header() {
+    std::printf("%8s %7s %7s %8s %9s %9s %7s %10s %10s %10s %9s\n", "assumpt.", "nodes", "clauses", "envs",
+                "label env", "max label", "nogoods", "median ms", "min ms", "us/clause", "peak KiB");
+}
+
+template <class F>
+void theory_row(int reps, F&& build) {
+    TheoryStats s;
+    const Timing t = time_runs(reps, [&] { s = build(); });
+    const long peak = peak_growth_kib([&] { (void)build(); });
+    std::printf("%8zu %7zu %7zu %8zu %9zu %9zu %7zu %10.2f %10.2f %10.2f %9ld\n", s.assumptions, s.nodes,
+                s.clauses, s.envs, s.label_envs, s.max_label, s.nogoods, t.median_ms, t.min_ms,
+                1e3 * t.median_ms / static_cast<double>(s.clauses), peak);
+}
+
+// ---- 2. N-queens on the ATMS -------------------------------------------------------------------
 struct Queens {
     Atms atms;
     std::vector<std::vector<AssumptionId>> rows;
@@ -108,7 +214,7 @@ std::size_t queens_streaming(int n) {
                                           [](const Environment&) { return true; });
 }
 
-// ---- 4. the floor: bitmask backtracking --------------------------------------------------------
+// ---- the floor: bitmask backtracking -------------------------------------------------------------
 std::size_t queens_plain(int n, int row, std::uint32_t cols, std::uint32_t d1, std::uint32_t d2) {
     if (row == n) return 1;
     std::size_t count = 0;
@@ -123,33 +229,44 @@ std::size_t queens_plain(int n, int row, std::uint32_t cols, std::uint32_t d1, s
 }  // namespace
 
 int main(int argc, char** argv) {
-    const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
-    const int max_n = quick ? 10 : 12;
-    static const std::size_t expected[] = {0, 1, 0, 0, 2, 10, 4, 40, 92, 352, 724, 2680, 14200};
-
-    std::printf("== label propagation: random layered Horn theories (median of 5) ==\n");
-    std::printf("%10s %8s %8s %10s %10s %8s %10s\n", "assumpt.", "nodes", "clauses", "envs", "label envs",
-                "nogoods", "ms");
-    for (int scale = 1; scale <= (quick ? 8 : 32); scale *= 2) {
-        const int a = 20 * scale, nodes = 100 * scale, clauses = 200 * scale;
-        TheoryStats s;
-        const double t = median_seconds(5, [&] { s = random_theory(42, a, nodes, clauses); });
-        std::printf("%10d %8d %8d %10zu %10zu %8zu %10.2f\n", a, nodes, clauses, s.envs, s.label_envs, s.nogoods,
-                    t * 1e3);
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);
+    bool quick = false;
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--quick") == 0) {
+            quick = true;
+        } else {
+            std::fprintf(stderr, "usage: atms_bench [--quick]\n");
+            return 2;
+        }
     }
-    std::printf("peak RSS so far: %ld KiB\n\n", peak_rss_kib());
+    const int reps = quick ? 3 : 7;
 
-    std::printf("== N-queens as interpretations (build + nogoods + enumerate + intern) ==\n");
-    std::printf("%3s %9s %14s %14s %14s\n", "N", "solutions", "atms ms", "streaming ms", "plain ms");
-    for (int n = 4; n <= max_n; ++n) {
-        const int reps = quick ? 3 : (n <= 10 ? 9 : 5);
+    std::printf("== label propagation, local theories: 8 layers, growing width (median of %d) ==\n", reps);
+    print_theory_header();
+    for (int width = 100; width <= (quick ? 1600 : 6400); width *= 2)
+        theory_row(reps, [&] { return local_theory(7, width); });
+
+    std::printf("\n== label propagation, deep theories: depth grows with size (median of %d) ==\n", reps);
+    print_theory_header();
+    for (int s = 1; s <= (quick ? 4 : 5); ++s)
+        theory_row(reps, [&] { return deep_theory(42, 20 * s, 100 * s, 200 * s); });
+
+    static const std::size_t expected[] = {0, 1, 0, 0, 2, 10, 4, 40, 92, 352, 724, 2680, 14200};
+    std::printf("\n== N-queens as interpretations (whole run: build + nogoods + enumerate + intern) ==\n");
+    std::printf("%3s %9s %8s %11s %11s %13s %11s %10s %9s\n", "N", "solutions", "nogoods", "atms ms",
+                "atms min", "streaming ms", "plain ms", "target ms", "peak KiB");
+    for (int n = 4; n <= (quick ? 10 : 12); ++n) {
+        const int r = quick ? 3 : (n <= 10 ? 9 : 5);
         std::size_t got = 0, streamed = 0, plain = 0;
-        const double t_atms = median_seconds(reps, [&] { got = queens_atms(n); });
-        const double t_stream = median_seconds(reps, [&] { streamed = queens_streaming(n); });
-        const double t_plain = median_seconds(reps, [&] { plain = queens_plain(n, 0, 0, 0, 0); });
-        std::printf("%3d %9zu %14.3f %14.3f %14.3f%s\n", n, got, t_atms * 1e3, t_stream * 1e3, t_plain * 1e3,
+        const Timing t_atms = time_runs(r, [&] { got = queens_atms(n); });
+        const Timing t_stream = time_runs(r, [&] { streamed = queens_streaming(n); });
+        const Timing t_plain = time_runs(r, [&] { plain = queens_plain(n, 0, 0, 0, 0); });
+        const long peak = peak_growth_kib([&] { (void)queens_atms(n); });
+        const std::size_t nogoods = Queens(n).atms.minimal_nogoods().size();
+        const char* target = n == 8 ? "5" : n == 10 ? "100" : n == 12 ? "5000" : "";
+        std::printf("%3d %9zu %8zu %11.3f %11.3f %13.3f %11.3f %10s %9ld%s\n", n, got, nogoods, t_atms.median_ms,
+                    t_atms.min_ms, t_stream.median_ms, t_plain.median_ms, target, peak,
                     got == expected[n] && streamed == expected[n] && plain == expected[n] ? "" : "  WRONG COUNT");
     }
-    std::printf("peak RSS: %ld KiB\n", peak_rss_kib());
     return 0;
 }

@@ -3,6 +3,7 @@
 #include "atms/atms.hpp"
 
 #include <doctest/doctest.h>
+#include <algorithm>
 
 using namespace qm::atms;
 
@@ -68,6 +69,72 @@ TEST_CASE("atms/atms: the classic A, B, C example with nogood {A,B}") {
     CHECK(atms.label(z).empty());
     CHECK(atms.label(t.b).empty());
     CHECK(atms.label(t.a) == std::vector<EnvId>{t.env({t.aa})});
+}
+
+// de Kleer's worked examples as Forbus and de Kleer run them in Building Problem Solvers
+// (atest.lisp: atms-test1..3, and "an example from de Kleer's paper"); the expected labels are
+// worked out by hand here from the definitions.
+TEST_CASE("atms/atms: de Kleer's A, B, C chain: d <- a b, e <- b c, f <- d e; a simpler d; nogood {A, B}") {
+    Abc t;
+    Atms& atms = t.atms;
+    const NodeId d = atms.add_node(DatumId{0}), e = atms.add_node(DatumId{0}), f = atms.add_node(DatumId{0});
+    atms.justify(InformantId{1}, {t.a, t.b}, d);  // J1
+    atms.justify(InformantId{2}, {t.b, t.c}, e);  // J2
+    atms.justify(InformantId{3}, {d, e}, f);      // J3
+    const EnvId A = t.env({t.aa}), AB = t.env({t.aa, t.ab}), BC = t.env({t.ab, t.ac}), ABC = t.env({t.aa, t.ab, t.ac});
+    CHECK(atms.label(d) == std::vector<EnvId>{AB});
+    CHECK(atms.label(e) == std::vector<EnvId>{BC});
+    CHECK(atms.label(f) == std::vector<EnvId>{ABC});
+    // f's explanation in {A,B,C}: J1 and J2 (in some order), then J3.
+    const Explanation why = atms.explain(f, ABC);
+    REQUIRE(why.steps.size() == 3);
+    CHECK(atms.justification(why.steps[2]).informant == InformantId{3});
+    CHECK(why.assumptions == std::vector<AssumptionId>{t.aa, t.ab, t.ac});
+    // atms-test2: a simpler justification of d replaces {A,B} by {A}; f still needs B and C.
+    atms.justify(InformantId{4}, {t.a}, d);
+    CHECK(atms.label(d) == std::vector<EnvId>{A});
+    CHECK(atms.label(f) == std::vector<EnvId>{ABC});
+    // atms-test3: {A,B} is nogood, so f (which needs A, B and C) holds nowhere; d and e survive.
+    atms.add_nogood(InformantId{5}, {t.a, t.b});
+    CHECK(atms.label(d) == std::vector<EnvId>{A});
+    CHECK(atms.label(e) == std::vector<EnvId>{BC});
+    CHECK(atms.label(f).empty());
+    CHECK(atms.minimal_nogoods() == std::vector<EnvId>{AB});
+    CHECK_FALSE(atms.is_consistent(ABC));
+}
+
+TEST_CASE("atms/atms: de Kleer's x=1, y=x, x=z example, step by step") {
+    Abc t;  // A: x=1, B: y=x, C: x=z
+    Atms& atms = t.atms;
+    const NodeId x1 = atms.add_node(DatumId{1}), yx = atms.add_node(DatumId{2}), xz = atms.add_node(DatumId{3});
+    const NodeId y1 = atms.add_node(DatumId{4}), z1 = atms.add_node(DatumId{5});
+    atms.justify(InformantId{1}, {t.a}, x1);
+    atms.justify(InformantId{2}, {t.b}, yx);
+    atms.justify(InformantId{3}, {t.c}, xz);
+    const EnvId A = t.env({t.aa}), B = t.env({t.ab}), C = t.env({t.ac});
+    const EnvId AB = t.env({t.aa, t.ab}), BC = t.env({t.ab, t.ac});
+    CHECK(atms.label(x1) == std::vector<EnvId>{A});
+    CHECK(atms.label(yx) == std::vector<EnvId>{B});
+    CHECK(atms.label(xz) == std::vector<EnvId>{C});
+    atms.add_nogood(InformantId{9}, {t.a, t.b});  // register nogood {A,B}
+    CHECK(atms.minimal_nogoods() == std::vector<EnvId>{AB});
+    // x=1, y=x => y=1: its only support {A,B} is nogood.
+    atms.justify(InformantId{4}, {x1, yx}, y1);
+    CHECK(atms.label(y1).empty());
+    CHECK_FALSE(atms.is_in(y1));
+    // z=1 is given (a justification with no antecedents): it holds in {}.
+    atms.justify(InformantId{5}, std::span<const NodeId>{}, z1);
+    CHECK(atms.label(z1) == std::vector<EnvId>{atms.empty_environment()});
+    CHECK(atms.is_true(z1));
+    // z=1, x=z => x=1: now x=1 holds under A or under C, and so y=1 under {B,C}.
+    atms.justify(InformantId{6}, {z1, xz}, x1);
+    auto x1_label = std::vector<EnvId>{A, C};
+    std::sort(x1_label.begin(), x1_label.end());
+    CHECK(atms.label(x1) == x1_label);
+    CHECK(atms.label(y1) == std::vector<EnvId>{BC});
+    CHECK(atms.holds_in(y1, BC));
+    CHECK_FALSE(atms.holds_in(y1, B));
+    CHECK_FALSE(atms.holds_in(y1, t.env({t.aa, t.ab, t.ac})));  // inconsistent
 }
 
 TEST_CASE("atms/atms: a label is kept minimal when a smaller support arrives") {
@@ -169,6 +236,11 @@ TEST_CASE("atms/atms: every precondition violation is an InternalError") {
     CHECK_THROWS_AS((void)atms.env(EnvId{12345}), qm::InternalError);
     CHECK_THROWS_AS((void)atms.environment({AssumptionId{77}}), qm::InternalError);
     CHECK_THROWS_AS((void)atms.explain(bad, atms.empty_environment()), qm::InternalError);
+    // The three misuses the issue names say what went wrong.
+    CHECK_THROWS_WITH_AS(atms.justify(InformantId{0}, {t.a}, bad), doctest::Contains("unknown node id"), qm::InternalError);
+    CHECK_THROWS_WITH_AS(atms.justify(InformantId{0}, {t.a}, p), doctest::Contains("premise"), qm::InternalError);
+    const std::vector<std::vector<AssumptionId>> twice{{t.aa, t.ab}, {t.ab, t.ac}};
+    CHECK_THROWS_WITH_AS((void)atms.interpretations(twice), doctest::Contains("two choice sets"), qm::InternalError);
     // Nothing was recorded by the failed calls.
     CHECK(atms.justification_count() == 0);
 }

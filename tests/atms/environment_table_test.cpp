@@ -74,3 +74,14 @@ TEST_CASE("atms/environment_table: join of unknown ids is a clear error") {
     const EnvId a = t.intern(env({0}), nogoods);
     CHECK_THROWS_AS((void)t.join(a, EnvId{42}, nogoods), qm::InternalError);
 }
+
+TEST_CASE("atms/environment_table: intern_consistent interns like intern, with a clear nogood flag") {
+    NogoodDatabase nogoods;
+    EnvironmentTable t;
+    const EnvId a = t.intern(env({0, 1}), nogoods);
+    CHECK(t.intern_consistent(env({1, 0}), nogoods) == a);
+    const EnvId b = t.intern_consistent(env({2, 70}), nogoods);
+    CHECK(t.intern(env({70, 2}), nogoods) == b);
+    CHECK_FALSE(t.is_nogood(b));
+    CHECK(t.containing(AssumptionId{70}) == std::vector<EnvId>{b});
+}

@@ -3,6 +3,8 @@
 
 #include <doctest/doctest.h>
 #include <random>
+#include <algorithm>
+#include <iterator>
 #include <set>
 
 using namespace qm::atms;
@@ -13,6 +15,12 @@ std::set<std::uint32_t> random_set(std::mt19937& rng, std::uint32_t universe) {
     const auto n = std::uniform_int_distribution<std::uint32_t>(0, 6)(rng);
     for (std::uint32_t i = 0; i < n; ++i) s.insert(std::uniform_int_distribution<std::uint32_t>(0, universe - 1)(rng));
     return s;
+}
+// The set as a raw bitset from word 0.
+std::vector<std::uint64_t> dense(const Environment& e) {
+    std::vector<std::uint64_t> w(e.end_word(), 0);
+    std::copy(e.words().begin(), e.words().end(), w.begin() + static_cast<std::ptrdiff_t>(e.first_word()));
+    return w;
 }
 Environment env_of(const std::set<std::uint32_t>& s) {
     std::vector<AssumptionId> as;
@@ -42,7 +50,12 @@ TEST_CASE("atms/environment: operations agree with std::set on random sets (seve
         CHECK((ex.hash() == ey.hash()) >= (x == y));
         const bool subset = std::includes(y.begin(), y.end(), x.begin(), x.end());
         CHECK(ex.subset_of(ey) == subset);
-        CHECK(words_subset(ex.words(), ey.words()) == subset);
+        CHECK(window_subset(ex.words(), ex.first_word(), ey.words(), ey.first_word()) == subset);
+        CHECK(words_subset(dense(ex), dense(ey)) == subset);
+        std::set<std::uint32_t> common;
+        std::set_intersection(x.begin(), x.end(), y.begin(), y.end(), std::inserter(common, common.end()));
+        CHECK(window_intersects(ex.words(), ex.first_word(), ey.words(), ey.first_word()) == !common.empty());
+        CHECK(window_intersects(ex.words(), ex.first_word(), dense(ey), 0) == !common.empty());
         std::set<std::uint32_t> u = x;
         u.insert(y.begin(), y.end());
         CHECK(join(ex, ey) == env_of(u));
@@ -56,10 +69,36 @@ TEST_CASE("atms/environment: operations agree with std::set on random sets (seve
         std::set<std::uint32_t> w = x;
         w.insert(extra.value);
         CHECK(ex.with(extra) == env_of(w));
+        std::set<std::uint32_t> v = x;
+        v.erase(extra.value);
+        CHECK(ex.without(extra) == env_of(v));
+        Environment in_place = ex;
+        in_place.insert(extra);
+        CHECK(in_place == env_of(w));
+        in_place.erase(extra);
+        CHECK(in_place == env_of(v));
+        Environment grown;  // inserting in falling order grows the window downwards
+        for (auto it = x.rbegin(); it != x.rend(); ++it) grown.insert(AssumptionId{*it});
+        CHECK(grown == ex);
+        // The stored window is tight: from the lowest to the highest assumption's word.
+        if (!x.empty()) {
+            CHECK(ex.first_word() == *x.begin() / 64);
+            CHECK(ex.end_word() == *x.rbegin() / 64 + 1);
+        } else {
+            CHECK(ex.first_word() == 0);
+            CHECK(ex.words().empty());
+        }
+        CHECK(Environment::from_words(dense(ex)) == ex);
     }
 }
 
-TEST_CASE("atms/environment: no trailing zero words, so equal sets compare equal") {
+TEST_CASE("atms/environment: no zero words at either end, so equal sets compare equal") {
+    const Environment high = Environment::from_words(std::vector<std::uint64_t>{0, 0, 5, 0});
+    CHECK(high.words().size() == 1);
+    CHECK(high.first_word() == 2);
+    CHECK(high == Environment::of(std::vector{AssumptionId{128}, AssumptionId{130}}));
+    CHECK(high.without(AssumptionId{128}).without(AssumptionId{130}) == Environment{});
+    CHECK(Environment{}.first_word() == 0);
     std::vector<std::uint64_t> words{5, 0, 0};
     const Environment a = Environment::from_words(words);
     CHECK(a.words().size() == 1);
@@ -67,4 +106,28 @@ TEST_CASE("atms/environment: no trailing zero words, so equal sets compare equal
     CHECK(Environment::from_words(std::vector<std::uint64_t>{0, 0}) == Environment{});
     // Duplicates collapse.
     CHECK(Environment::of(std::vector{AssumptionId{70}, AssumptionId{70}}).size() == 1);
+}
+
+TEST_CASE("atms/environment: windows of words: from_words with an offset, subsets of shifted windows") {
+    std::mt19937 rng(29);
+    for (int round = 0; round < 2000; ++round) {
+        const auto x = random_set(rng, 400);
+        const auto y = random_set(rng, 400);
+        const Environment ex = env_of(x), ey = env_of(y);
+        // y's window, padded with zero words on both sides and shifted, rebuilds y.
+        const std::size_t pad = static_cast<std::size_t>(round % 3);
+        std::vector<std::uint64_t> padded(pad, 0);
+        padded.insert(padded.end(), ey.words().begin(), ey.words().end());
+        padded.push_back(0);
+        const std::size_t at = ey.first_word() >= pad ? ey.first_word() - pad : 0;
+        if (ey.first_word() >= pad) {
+            CHECK(Environment::from_words(padded, at) == ey);
+            const bool subset = std::includes(y.begin(), y.end(), x.begin(), x.end());
+            CHECK(window_subset(ex.words(), ex.first_word(), padded, at) == subset);
+        }
+    }
+    CHECK(Environment::from_words(std::vector<std::uint64_t>{0, 0}, 5) == Environment{});
+    CHECK(Environment::from_words(std::vector<std::uint64_t>{0, 4, 0}, 5) == Environment::of(std::vector{AssumptionId{6 * 64 + 2}}));
+    // An id far beyond any word yet seen is one word, not thousands.
+    CHECK(Environment::of(std::vector{AssumptionId{100000}}).words().size() == 1);
 }

@@ -63,23 +63,37 @@ TEST_CASE("atms/interpretations: N-queens counts for N = 4..8") {
 }
 
 TEST_CASE("atms/interpretations: random choice sets and nogoods agree with brute force") {
+    // Half the rounds spread the assumption ids over several words (unused assumptions between
+    // them), and some nogoods are derived through a justification rather than stated directly.
     std::mt19937 rng(17);
     auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
-    for (int round = 0; round < 400; ++round) {
+    for (int round = 0; round < 1000; ++round) {
         CAPTURE(round);
         Atms atms;
-        const int k = pick(4, 12);
+        const int k = pick(4, 14);
         std::vector<NodeId> nodes;
-        for (int i = 0; i < k; ++i) nodes.push_back(atms.add_assumption(DatumId{0}));
+        std::vector<AssumptionId> ids;  // ids[i] is the brute force's bit i
+        for (int i = 0; i < k; ++i) {
+            for (int pad = round % 2 == 0 ? 0 : pick(0, 60); pad > 0; --pad) atms.add_assumption(DatumId{1});
+            nodes.push_back(atms.add_assumption(DatumId{0}));
+            ids.push_back(*atms.assumption_of(nodes.back()));
+        }
+        auto bit_of = [&](AssumptionId a) {
+            return std::uint64_t{1} << (std::find(ids.begin(), ids.end(), a) - ids.begin());
+        };
+        auto bits = [&](const Environment& e) {
+            std::uint64_t m = 0;
+            for (AssumptionId a : e.assumptions()) m |= bit_of(a);
+            return m;
+        };
         // Partition a random subset of the assumptions into choice sets (some possibly empty).
-        std::vector<AssumptionId> order;
-        for (int i = 0; i < k; ++i) order.push_back(AssumptionId{static_cast<std::uint32_t>(i)});
+        std::vector<AssumptionId> order = ids;
         std::shuffle(order.begin(), order.end(), rng);
-        std::vector<std::vector<AssumptionId>> sets(static_cast<std::size_t>(pick(0, 4)));
+        std::vector<std::vector<AssumptionId>> sets(static_cast<std::size_t>(pick(0, 5)));
         for (AssumptionId a : order)
             if (!sets.empty() && pick(0, 5) > 0) sets[static_cast<std::size_t>(pick(0, static_cast<int>(sets.size()) - 1))].push_back(a);
         std::vector<std::uint64_t> nogood_masks;
-        const int n_nogoods = pick(0, 6);
+        const int n_nogoods = pick(0, 8);
         for (int i = 0; i < n_nogoods; ++i) {
             std::vector<NodeId> ants;
             std::uint64_t m = 0;
@@ -88,29 +102,48 @@ TEST_CASE("atms/interpretations: random choice sets and nogoods agree with brute
                 ants.push_back(nodes[static_cast<std::size_t>(a)]);
                 m |= std::uint64_t{1} << a;
             }
-            atms.add_nogood(InformantId{0}, ants);
+            if (ants.size() >= 2 && pick(0, 1) == 0) {
+                // x <- first antecedents; nogood(x, last): the same assumptions, through x.
+                const NodeId x = atms.add_node(DatumId{2});
+                atms.justify(InformantId{0}, std::span<const NodeId>(ants.data(), ants.size() - 1), x);
+                atms.add_nogood(InformantId{0}, {x, ants.back()});
+            } else {
+                atms.add_nogood(InformantId{0}, ants);
+            }
             nogood_masks.push_back(m);
         }
         // A random base of 0-2 assumptions.
         std::vector<AssumptionId> base_as;
         std::uint64_t base_mask = 0;
         for (int j = pick(0, 2); j > 0; --j) {
-            const auto a = static_cast<std::uint32_t>(pick(0, k - 1));
-            base_as.push_back(AssumptionId{a});
-            base_mask |= std::uint64_t{1} << a;
+            const AssumptionId a = ids[static_cast<std::size_t>(pick(0, k - 1))];
+            base_as.push_back(a);
+            base_mask |= bit_of(a);
         }
         const EnvId base = atms.environment(base_as);
+        std::vector<std::vector<AssumptionId>> bit_sets;  // the sets with ids replaced by bit indexes
+        for (const auto& set : sets) {
+            auto& b = bit_sets.emplace_back();
+            for (AssumptionId a : set)
+                b.push_back(AssumptionId{static_cast<std::uint32_t>(std::find(ids.begin(), ids.end(), a) - ids.begin())});
+        }
         std::vector<std::uint64_t> expected;
-        brute_force(sets, 0, base_mask, nogood_masks, expected);
+        brute_force(bit_sets, 0, base_mask, nogood_masks, expected);
         std::vector<std::uint64_t> got;
-        for (EnvId e : atms.interpretations(sets, base)) got.push_back(mask_of(atms.env(e)));
+        for (EnvId e : atms.interpretations(sets, base)) got.push_back(bits(atms.env(e)));
         REQUIRE(got == expected);
         // Without a base.
         expected.clear();
-        brute_force(sets, 0, 0, nogood_masks, expected);
+        brute_force(bit_sets, 0, 0, nogood_masks, expected);
         got.clear();
-        for (EnvId e : atms.interpretations(sets)) got.push_back(mask_of(atms.env(e)));
+        for (EnvId e : atms.interpretations(sets)) got.push_back(bits(atms.env(e)));
         REQUIRE(got == expected);
+        // Every interpretation is consistent and picks one assumption per set.
+        for (EnvId e : atms.interpretations(sets)) {
+            CHECK(atms.is_consistent(e));
+            for (const auto& set : sets)
+                CHECK(std::count_if(set.begin(), set.end(), [&](AssumptionId a) { return atms.env(e).contains(a); }) == 1);
+        }
     }
 }
 

@@ -14,6 +14,12 @@ Environment random_env(std::mt19937& rng, int max_size, std::uint32_t universe) 
     for (int i = 0; i < k; ++i) as.push_back(AssumptionId{std::uniform_int_distribution<std::uint32_t>(0, universe - 1)(rng)});
     return Environment::of(as);
 }
+// The set as a raw bitset from word 0 (what subsumes_with is given).
+std::vector<std::uint64_t> dense(const Environment& e) {
+    std::vector<std::uint64_t> w(e.end_word(), 0);
+    std::copy(e.words().begin(), e.words().end(), w.begin() + static_cast<std::ptrdiff_t>(e.first_word()));
+    return w;
+}
 }  // namespace
 
 TEST_CASE("atms/nogood_database: subsumes, subsumes_with and minimal agree with brute force") {
@@ -42,11 +48,24 @@ TEST_CASE("atms/nogood_database: subsumes, subsumes_with and minimal agree with 
             for (int q = 0; q < 10; ++q) {
                 const Environment e = random_env(rng, 5, universe);
                 CHECK(db.subsumes(e) == subsumed_by(e));
+                // The same question on a window of e's words (as weave asks it).
+                CHECK(db.subsumes_words(e.words(), e.first_word()) == subsumed_by(e));
+                const auto w = dense(e);
+                CHECK(db.subsumes_words(w) == subsumed_by(e));
                 // Contract of subsumes_with: e minus a is consistent; then it answers subsumes(e).
                 const AssumptionId a = e.first();
                 std::vector<AssumptionId> rest = e.assumptions();
                 rest.erase(rest.begin());
-                if (!subsumed_by(Environment::of(rest))) CHECK(db.subsumes_with(e.words(), a) == subsumed_by(e));
+                if (!subsumed_by(Environment::of(rest))) CHECK(db.subsumes_with(w, a) == subsumed_by(e));
+                // Without that precondition: exactly "some live nogood containing a is inside e".
+                for (AssumptionId b : e.assumptions()) {
+                    const auto live = db.minimal();
+                    const bool expected_with = std::any_of(live.begin(), live.end(), [&](EnvId id) {
+                        const Environment& g = added[id.value];
+                        return g.contains(b) && g.subset_of(e);
+                    });
+                    CHECK(db.subsumes_with(w, b) == expected_with);
+                }
             }
         }
     }

@@ -1,7 +1,13 @@
 // tests/atms/random_theory.hpp
-// Test helper (not a test): seeded random Horn theories and a brute-force oracle that enumerates
-// every environment over the assumptions and forward chains from premises + environment. Shared
-// by the label, explanation and facade tests, which check the ATMS against it.
+// Test helper (not a test): seeded random Horn theories grown one step at a time, and a brute-force
+// oracle that enumerates every environment over the theory's assumptions and forward chains from
+// premises + environment. Shared by the label update, consumer and explanation tests, which check
+// the ATMS against it.
+//
+// A step adds one clause (a justification, possibly of an assumption node, or a nogood) or, when
+// the shape asks for interleaving, one new assumption, premise or derived node, so labels are
+// checked under incremental addition of all four. With padding, unused assumptions are created
+// between the tracked ones, so tracked assumption ids spread over several 64-bit words.
 #pragma once
 #include "atms/atms.hpp"
 #include <algorithm>
@@ -16,51 +22,114 @@ struct Clause {
     NodeId consequent;
 };
 
+struct TheoryShape {
+    int assumptions = 6;      // tracked assumptions (the oracle enumerates 2^assumptions envs); <= 12
+    int derived = 12;         // derived nodes
+    int clauses = 25;         // clauses (justifications and nogoods)
+    bool interleave = false;  // false: all nodes first, then one clause per step; true: nodes and
+                              // clauses in random order (starting from one assumption, one node)
+    int max_padding = 0;      // before each tracked assumption, 0..max_padding unused ones
+};
+
 struct RandomTheory {
     Atms atms;
-    std::vector<NodeId> assumptions;  // index i holds AssumptionId{i}
+    std::vector<NodeId> assumptions;  // tracked; assumptions[i] is the oracle's bit i
     std::vector<NodeId> premises;
     std::vector<NodeId> derived;
-    std::vector<Clause> pending;      // clauses not yet given to the ATMS, in the order to add
     std::vector<Clause> added;
+    std::size_t steps = 0;
 
-    // Builds the nodes and a shuffled list of clauses; adds no clause yet.
-    RandomTheory(std::uint32_t seed, int n_assumptions, int n_derived, int n_clauses) {
-        std::mt19937 rng(seed);
-        auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
-        for (int i = 0; i < n_assumptions; ++i) assumptions.push_back(atms.add_assumption(DatumId{0}));
-        const int n_premises = pick(0, 2);
-        for (int i = 0; i < n_premises; ++i) premises.push_back(atms.add_premise(DatumId{1}));
-        for (int i = 0; i < n_derived; ++i) derived.push_back(atms.add_node(DatumId{2}));
+    RandomTheory(std::uint32_t seed, TheoryShape shape) : shape_(shape), rng_(seed) {
+        if (!shape_.interleave) {
+            for (int i = 0; i < shape_.assumptions; ++i) new_assumption();
+            for (int i = pick(0, 2); i > 0; --i) new_premise();
+            for (int i = 0; i < shape_.derived; ++i) new_derived();
+        } else {
+            new_assumption();
+            new_derived();
+            premise_budget_ = pick(0, 2);
+        }
+    }
+    RandomTheory(std::uint32_t seed, int n_assumptions, int n_derived, int n_clauses)
+        : RandomTheory(seed, TheoryShape{n_assumptions, n_derived, n_clauses, false, 0}) {}
+
+    // Performs the next step; false when the theory is complete.
+    bool add_next() {
+        const int nodes_left = static_cast<int>(shape_.assumptions - assumptions.size()) +
+                               static_cast<int>(shape_.derived - derived.size()) + premise_budget_;
+        const int clauses_left = shape_.clauses - clauses_;
+        if (nodes_left + clauses_left == 0) return false;
+        ++steps;
+        if (pick(1, nodes_left + clauses_left) <= nodes_left) {
+            int r = pick(1, nodes_left);
+            if ((r -= shape_.assumptions - static_cast<int>(assumptions.size())) <= 0) new_assumption();
+            else if ((r -= shape_.derived - static_cast<int>(derived.size())) <= 0) new_derived();
+            else {
+                --premise_budget_;
+                new_premise();
+            }
+            return true;
+        }
+        ++clauses_;
+        Clause clause;
+        const int roll = pick(0, 99);
+        if (roll < 15) clause.consequent = atms.contradiction();
+        else if (roll < 20) clause.consequent = any_of(assumptions);
+        else clause.consequent = any_of(derived);
         std::vector<NodeId> sources = assumptions;
         sources.insert(sources.end(), premises.begin(), premises.end());
         sources.insert(sources.end(), derived.begin(), derived.end());
-        for (int c = 0; c < n_clauses; ++c) {
-            Clause clause;
-            const int roll = pick(0, 99);
-            if (roll < 15) clause.consequent = atms.contradiction();
-            else if (roll < 20) clause.consequent = assumptions[static_cast<std::size_t>(pick(0, n_assumptions - 1))];
-            else clause.consequent = derived[static_cast<std::size_t>(pick(0, n_derived - 1))];
-            const int k = pick(clause.consequent == atms.contradiction() ? 1 : 0, 3);
-            for (int i = 0; i < k; ++i)
-                clause.antecedents.push_back(sources[static_cast<std::size_t>(pick(0, static_cast<int>(sources.size()) - 1))]);
-            pending.push_back(clause);
-        }
-    }
-
-    bool add_next() {
-        if (pending.empty()) return false;
-        Clause c = pending.front();
-        pending.erase(pending.begin());
-        atms.justify(InformantId{static_cast<std::uint32_t>(added.size())}, c.antecedents, c.consequent);
-        added.push_back(c);
+        const int k = pick(clause.consequent == atms.contradiction() ? 1 : 0, 3);
+        for (int i = 0; i < k; ++i) clause.antecedents.push_back(any_of(sources));
+        atms.justify(InformantId{static_cast<std::uint32_t>(added.size())}, clause.antecedents, clause.consequent);
+        added.push_back(clause);
         return true;
     }
+
+    // The oracle bits of an environment; an untracked (padding) assumption sets bit 31, which no
+    // oracle mask has, so a label holding one can never match.
+    [[nodiscard]] std::uint32_t mask_of(const Environment& e) const {
+        std::uint32_t m = 0;
+        for (AssumptionId a : e.assumptions()) {
+            const auto it = std::find(tracked_.begin(), tracked_.end(), a);
+            m |= it == tracked_.end() ? (1U << 31) : 1U << (it - tracked_.begin());
+        }
+        return m;
+    }
+    [[nodiscard]] std::vector<std::uint32_t> masks_of(const std::vector<EnvId>& envs) const {
+        std::vector<std::uint32_t> out;
+        for (EnvId e : envs) out.push_back(mask_of(atms.env(e)));
+        std::sort(out.begin(), out.end());
+        return out;
+    }
+    EnvId env_of_mask(std::uint32_t m) {
+        std::vector<AssumptionId> as;
+        for (std::size_t i = 0; i < tracked_.size(); ++i)
+            if (m & (1U << i)) as.push_back(tracked_[i]);
+        return atms.environment(as);
+    }
+
+private:
+    int pick(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+    NodeId any_of(const std::vector<NodeId>& v) { return v[static_cast<std::size_t>(pick(0, static_cast<int>(v.size()) - 1))]; }
+    void new_assumption() {
+        for (int i = pick(0, shape_.max_padding); i > 0; --i) atms.add_assumption(DatumId{3});
+        assumptions.push_back(atms.add_assumption(DatumId{0}));
+        tracked_.push_back(*atms.assumption_of(assumptions.back()));
+    }
+    void new_premise() { premises.push_back(atms.add_premise(DatumId{1})); }
+    void new_derived() { derived.push_back(atms.add_node(DatumId{2})); }
+
+    TheoryShape shape_;
+    std::mt19937 rng_;
+    std::vector<AssumptionId> tracked_;
+    int premise_budget_ = 0;
+    int clauses_ = 0;
 };
 
-// Brute-force oracle over the clauses added so far.
+// Brute-force oracle over the theory as it stands.
 struct Oracle {
-    int n;                                       // number of assumptions
+    int n;                                       // number of tracked assumptions
     std::size_t nodes;
     std::vector<std::uint8_t> derived_;          // [mask * nodes + node]: node derivable from mask
     std::vector<bool> inconsistent;              // [mask]
@@ -105,6 +174,7 @@ struct Oracle {
                 out.push_back(m);
         return out;
     }
+    // Sound + consistent + complete + minimal: exactly the minimal consistent deriving envs.
     std::vector<std::uint32_t> label(NodeId node) const {
         return minimal([&](std::uint32_t m) { return !inconsistent[m] && derived(m, node); });
     }
@@ -112,24 +182,4 @@ struct Oracle {
         return minimal([&](std::uint32_t m) { return static_cast<bool>(inconsistent[m]); });
     }
 };
-
-inline std::uint32_t mask_of(const Environment& e) {
-    std::uint32_t m = 0;
-    for (AssumptionId a : e.assumptions()) m |= 1U << a.value;
-    return m;
-}
-
-inline std::vector<std::uint32_t> masks_of(const Atms& atms, const std::vector<EnvId>& envs) {
-    std::vector<std::uint32_t> out;
-    for (EnvId e : envs) out.push_back(mask_of(atms.env(e)));
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
-inline EnvId env_of_mask(Atms& atms, std::uint32_t m) {
-    std::vector<AssumptionId> as;
-    for (std::uint32_t i = 0; i < 32; ++i)
-        if (m & (1U << i)) as.push_back(AssumptionId{i});
-    return atms.environment(as);
-}
 }  // namespace qm::atms::test
