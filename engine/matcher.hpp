@@ -60,6 +60,9 @@ public:
 
 private:
     struct Run;
+    // True when binding the seed's variables before the conditions written ahead of it changes no
+    // answer (no earlier `not`, aggregate or quantifier has one of them as a local variable).
+    static bool seed_first_is_safe(const CompiledRule& rule, std::uint32_t seeded);
     const FactStore& facts_;
     ValueTable& values_;
     const BuiltinRegistry& builtins_;
