@@ -116,7 +116,7 @@ int main(int argc, char** argv) {
     std::printf("%-28s %10s %10s %6s\n", "thesis scene", "ms", "MiB", "exit");
     for (const char* name : {"block.def", "arch.def", "gears.def", "recoil_escapement.def", "block_stack.def",
                              "wedge_ramp.def", "wedge_ramp_catch.def", "corner_contacts.def", "force_feedback.def",
-                             "block_boulder.def", "lever.def", "block_3d.def"}) {
+                             "block_boulder.def", "lever.def", "block_3d.def", "linked_gears.def"}) {
         const Sample s = median(std::string(QM_SOURCE_DIR) + "/scenarios/alex/" + name, reps);
         std::printf("%-28s %10.2f %10.1f %6d\n", name, s.ms, static_cast<double>(s.peak_kib) / 1024.0, s.status);
     }
