@@ -1,6 +1,7 @@
 // geometry/fcl_pair_oracle.cpp: FCL collision and distance as the metric diagram of a pair.
 #include "geometry/fcl_pair_oracle.hpp"
 
+#include "geometry/profile_pair_oracle.hpp"
 #include "qm/assert.hpp"
 
 #include <algorithm>
@@ -58,23 +59,9 @@ double FclPairOracle::coordinate_scale(int which) const {
 }
 
 Eigen::Vector2d FclPairOracle::free_normal(const Eigen::Vector2d& q) const {
-    // Central differences of the separation, one axis at a time. q lies on the boundary within
-    // the bisection tolerance, possibly just inside blocked space, where the distance is 0 on
-    // both sides: the step then grows until one side is apart, so the sign is never lost.
-    Eigen::Vector2d g;
-    for (int k = 0; k < 2; ++k) {
-        g[k] = 0;
-        if (part(k).fixed()) continue;
-        const double scale = coordinate_scale(k);
-        for (double h = 1e-6; h < 1e-2; h *= 4) {
-            Eigen::Vector2d e = Eigen::Vector2d::Zero();
-            e[k] = h * scale;
-            const double plus = std::max(0.0, signed_distance(q + e)), minus = std::max(0.0, signed_distance(q - e));
-            g[k] = (plus - minus) / (2 * h * scale);
-            if (plus > 0 || minus > 0) break;
-        }
-    }
-    return g;
+    // From the exact lines and arcs, not the meshes: a chord's slope would make a surface drawn
+    // along an axis (a wheel's root land, turning about its centre) flicker between signs.
+    return exact_free_normal(part(0), part(1), q);
 }
 
 std::string FclPairOracle::fingerprint() const {

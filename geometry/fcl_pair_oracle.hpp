@@ -3,8 +3,9 @@
 //             item 3): blocked(q) is FCL's collision test on the two extruded meshes
 //             (fcl_part_model.hpp) placed at the pair's configuration q = (q0, q1), i.e. the sign
 //             of their signed distance, so grid classification and boundary bisection both run
-//             on FCL; free_normal(q) is the gradient of FCL's distance on the free side, the
-//             normal into free space taken from the geometry, not from the grid.
+//             on FCL; free_normal(q) is the gradient of the exact distance of the parts' lines and
+//             arcs on the free side (profile_pair_oracle.hpp): the normal into free space taken
+//             from the geometry, not from the grid, and not from the chords of the meshes.
 // Ownership:  owns copies of both parts and their FCL models.
 // Invariants: blocked() is a pure function of q, periodic in a rotation coordinate (2 pi); a
 //             fixed part ignores its coordinate. The fingerprint names the exact geometry, the

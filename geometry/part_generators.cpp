@@ -29,42 +29,57 @@ std::string num(double x) {
     return os.str();
 }
 
-// Spur gear with straight flanks at the pressure angle (a rack-like tooth: "straight line
-// segments and arcs" only), tip and root circles as arcs. Play is the backlash of this gear on
-// its pitch circle: the tooth is thinner than half the circular pitch by that much, so two
-// meshing gears at centre distance R1 + R2 have play1 + play2 between their teeth.
+// Spur gear. Each flank is the osculating circle of the involute at the pitch circle (centre on
+// the base circle, radius R sin(pressure angle), an old drafting approximation) down to where
+// it turns radial, then a radial line to the root; tip and root are arcs. Lines and arcs
+// only, as the thesis' drawings (8.1.1), and nearly conjugate, so meshing gears keep their play.
+// Play is the backlash of this gear on its pitch circle: the tooth is thinner than half the
+// circular pitch by that much, so two gears at centre distance R1 + R2 have play1 + play2.
 ShapeResult spur_gear(const std::vector<double>& v) {
     const int n = static_cast<int>(v[0]);
     const double R = v[1], play = v[2], phi = v[3] * pi / 180, m = 2 * R / n;
     const double Ra = R + v[4] * m, Rf = R - v[5] * m;
     const double thickness = pi * m / 2 - play;
     if (thickness <= 0) return fail("the play " + num(play) + " leaves no tooth: it must be below half the circular pitch, " + num(pi * m / 2), 2);
-    if (phi >= pi / 2) return fail("the pressure angle must be below 90 degrees", 3);
-    if (Rf <= R * std::sin(phi)) return fail("the dedendum reaches below where the flanks can meet the root circle; use fewer modules or more teeth", 5);
-    const double ap = thickness / (2 * R);
-    const V P = polar(R, ap), u = polar(1, ap), w(-u.y(), u.x());
-    const V d = u * std::cos(phi) - w * std::sin(phi);  // up the upper flank, leaning towards the tooth's centre line
-    const double pd = R * std::cos(phi);
-    const V tip = P + (-pd + std::sqrt(pd * pd - R * R + Ra * Ra)) * d;
-    const V root = P + (-pd + std::sqrt(Rf * Rf - R * R * std::sin(phi) * std::sin(phi))) * d;
-    const double bt = std::atan2(tip.y(), tip.x()), br = std::atan2(root.y(), root.x());
+    if (phi <= 0 || phi >= pi / 4) return fail("the pressure angle must lie between 0 and 45 degrees", 3);
+    if (Rf <= 0) return fail("the dedendum reaches the centre; use fewer modules or more teeth", 5);
+    const double ap = thickness / (2 * R);                    // half the tooth's angle on the pitch circle
+    const V T = polar(R * std::cos(phi), ap - phi);           // centre of curvature of the upper flank
+    const double rho = R * std::sin(phi), t_norm = T.norm();
+    // The flank circle's point at radius r on the pitch point's side of the line O-T.
+    auto at_radius = [&](double r) -> std::optional<V> {
+        const double x = (t_norm * t_norm + r * r - rho * rho) / (2 * t_norm);
+        const double h2 = r * r - x * x;
+        if (h2 < 0) return std::nullopt;
+        const V u = T / t_norm, w(-u.y(), u.x());
+        return V(x * u + std::sqrt(h2) * w);
+    };
+    const auto tip = at_radius(Ra);
+    if (!tip) return fail("the addendum reaches beyond the flank circles; use a smaller addendum", 4);
+    // Where the flank circle's tangent passes through the centre the flank is radial; below that
+    // the circle would curl back into the tooth, so the flank goes on as a radial line (as an
+    // involute does below its base circle).
+    const double r_low = std::max(Rf, std::sqrt(t_norm * t_norm - rho * rho));
+    const V low = *at_radius(r_low);
+    const V root = polar(Rf, std::atan2(low.y(), low.x()));
+    const double bt = std::atan2(tip->y(), tip->x()), br = std::atan2(root.y(), root.x());
     if (bt <= 1e-9) return fail("the teeth come to a point below the tip circle; use less play or a smaller addendum", 4);
     if (br >= pi / n - 1e-9) return fail("the teeth leave no root between them; use a larger play or a smaller pressure angle", 2);
+    const bool radial = (low - root).norm() > 1e-12 * R;
+    // The upper flank runs from the tip down to the low point about T, the short way.
+    const double a0 = std::atan2(tip->y() - T.y(), tip->x() - T.x()), a1 = std::atan2(low.y() - T.y(), low.x() - T.x());
+    const bool down_ccw = std::remainder(a1 - a0, 2 * pi) > 0;
     auto mirror = [](V x) { return V(x.x(), -x.y()); };
-    std::vector<V> lower_root(n), lower_tip(n), upper_tip(n), upper_root(n);
-    for (int i = 0; i < n; ++i) {
-        const double a = 2 * pi * i / n;
-        lower_root[i] = rotate(mirror(root), a);
-        lower_tip[i] = rotate(mirror(tip), a);
-        upper_tip[i] = rotate(tip, a);
-        upper_root[i] = rotate(root, a);
-    }
     Profile p;
     for (int i = 0; i < n; ++i) {
-        p.segments.push_back(Segment::line(lower_root[i], lower_tip[i]));
-        p.segments.push_back(Segment::arc(lower_tip[i], upper_tip[i], V::Zero(), true));
-        p.segments.push_back(Segment::line(upper_tip[i], upper_root[i]));
-        p.segments.push_back(Segment::arc(upper_root[i], lower_root[(i + 1) % n], V::Zero(), true));
+        const double a = 2 * pi * i / n, b = 2 * pi * ((i + 1) % n) / n;
+        const V c_up = rotate(T, a), c_lo = rotate(mirror(T), a);
+        if (radial) p.segments.push_back(Segment::line(rotate(mirror(root), a), rotate(mirror(low), a)));
+        p.segments.push_back(Segment::arc(rotate(mirror(low), a), rotate(mirror(*tip), a), c_lo, down_ccw));
+        p.segments.push_back(Segment::arc(rotate(mirror(*tip), a), rotate(*tip, a), V::Zero(), true));
+        p.segments.push_back(Segment::arc(rotate(*tip, a), rotate(low, a), c_up, down_ccw));
+        if (radial) p.segments.push_back(Segment::line(rotate(low, a), rotate(root, a)));
+        p.segments.push_back(Segment::arc(rotate(root, a), rotate(mirror(root), b), V::Zero(), true));
     }
     return ok({p}, n);
 }
@@ -168,11 +183,11 @@ ShapeResult block(const std::vector<double>& v) {
 
 const std::vector<Generator>& generators() {
     static const std::vector<Generator> table = {
-        {"spur-gear", "spur gear with straight flanks, tip and root arcs",
+        {"spur-gear", "spur gear: flanks as arcs osculating the involute, tip and root arcs",
          {{"teeth", 12, 6, false, true, "number of teeth"},
           {"pitch-radius", 1, 0, true, false, "radius of the pitch circle"},
           {"play", 0, 0, false, false, "backlash on the pitch circle (length)"},
-          {"pressure-angle", 20, 0, false, false, "flank angle to the radius, degrees"},
+          {"pressure-angle", 20, 0, true, false, "pressure angle, degrees (below 45)"},
           {"addendum", 1, 0, true, false, "tip above the pitch circle, in modules (module = 2 pitch-radius / teeth)"},
           {"dedendum", 1.25, 0, true, false, "root below the pitch circle, in modules"}},
          spur_gear},

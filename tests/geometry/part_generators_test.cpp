@@ -95,21 +95,18 @@ TEST_CASE("geometry/part_generators: a spur gear's tips, roots and play match it
             }
         CHECK(rmax == doctest::Approx(2 + m).epsilon(1e-12));
         CHECK(rmin == doctest::Approx(2 - 1.25 * m).epsilon(1e-12));
-        // Tooth thickness on the pitch circle: the flanks cross it half a pitch minus the play apart.
-        const auto& lower = r.shape->profiles[0].segments[0];  // up the lower flank of tooth 0
-        const auto& upper = r.shape->profiles[0].segments[2];  // down its upper flank
-        auto pitch_angle = [](const Segment& s) {
-            // The flank's point at radius 2 (bisection along the line).
-            double lo = 0, hi = 1;
-            const bool rising = s.point_at(1).norm() > s.point_at(0).norm();
-            for (int i = 0; i < 200; ++i) {
-                const double mid = 0.5 * (lo + hi);
-                ((s.point_at(mid).norm() < 2) == rising ? lo : hi) = mid;
-            }
-            const auto x = s.point_at(lo);
-            return std::atan2(x.y(), x.x());
-        };
-        const double thickness = 2 * (pitch_angle(upper) - pitch_angle(lower));
+        // Tooth thickness on the pitch circle: tooth 0's flanks cross it half a pitch minus the
+        // play apart (an arc of length thickness).
+        const Segment pitch = Segment::arc({2, 0}, {-2, 0}, {0, 0}, true), pitch2 = Segment::arc({-2, 0}, {2, 0}, {0, 0}, true);
+        std::vector<double> angles;
+        for (const auto& seg : r.shape->profiles[0].segments)
+            for (const auto& circle : {pitch, pitch2})
+                for (const auto& x : intersections(seg, circle, 1e-12).points) {
+                    const double a = std::atan2(x.point.y(), x.point.x());
+                    if (std::abs(a) < std::numbers::pi / 20 && (angles.empty() || std::abs(angles.back() - a) > 1e-9)) angles.push_back(a);
+                }
+        REQUIRE(angles.size() == 2);
+        const double thickness = 2.0 * std::abs(angles[0] - angles[1]);  // pitch radius 2
         CHECK(thickness == doctest::Approx(std::numbers::pi * m / 2 - play).epsilon(1e-9));
     }
 }

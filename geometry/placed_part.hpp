@@ -1,0 +1,37 @@
+// geometry/placed_part.hpp
+// Provides:   PlacedPart, a part's exact profiles (lines and arcs) moved to a coordinate, with a
+//             bounding box per segment; and the exact queries on two placed parts: their
+//             distance (0 when they touch or overlap) and whether they overlap. These are the
+//             exact side of the pair geometry: the normal into free space of the FCL oracle, the
+//             exact profile oracle that checks FCL in the tests and measures boundary errors in
+//             the accuracy study, and the features of contacts.
+// Ownership:  a value owning its moved profiles.
+// Invariants: boxes[i][j] bounds profiles[i].segments[j] exactly (arcs included).
+// Knows nothing of FCL, the ATMS or the engine.
+#pragma once
+#include "geometry/part.hpp"
+#include <utility>
+#include <vector>
+
+namespace qm::geometry {
+
+struct Box {
+    Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e300), hi = Eigen::Vector2d::Constant(-1e300);
+    [[nodiscard]] double distance(const Box& o) const noexcept;  // 0 if they overlap
+};
+
+struct PlacedPart {
+    std::vector<Profile> profiles;
+    std::vector<std::vector<Box>> boxes;
+    Box all;
+};
+
+[[nodiscard]] PlacedPart place(const Part& part, double q);
+
+// Exact smallest distance between the two boundaries; 0 when they touch, cross, or one part
+// lies inside the other.
+[[nodiscard]] double placed_distance(const PlacedPart& a, const PlacedPart& b);
+// Do the parts share a point (boundaries meet, or one lies inside the other)?
+[[nodiscard]] bool placed_overlap(const PlacedPart& a, const PlacedPart& b);
+
+}  // namespace qm::geometry
