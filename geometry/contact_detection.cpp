@@ -2,6 +2,7 @@
 // profiles (surfaces, corners of Def 18), FCL for nearness and overlap.
 #include "geometry/contact_detection.hpp"
 
+#include "geometry/placed_part.hpp"
 #include "geometry/segment_queries.hpp"
 #include "qm/assert.hpp"
 
@@ -26,25 +27,7 @@ struct Candidate {
     Hit a, b;
 };
 
-struct Placed {
-    std::vector<Profile> profiles;
-    std::vector<std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>>> boxes;  // per segment, lo/hi
-};
-
-Placed place(const Part& p, double q) {
-    Placed out;
-    const Eigen::Isometry2d pose = p.pose(q);
-    for (const auto& profile : p.profiles) {
-        out.profiles.push_back(transformed(profile, pose));
-        auto& boxes = out.boxes.emplace_back();
-        for (const auto& s : out.profiles.back().segments) {
-            Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
-            extend_bounds(Profile{{s}}, lo, hi);
-            boxes.emplace_back(lo, hi);
-        }
-    }
-    return out;
-}
+using Placed = PlacedPart;
 
 const Segment& seg(const Placed& p, int profile, int s) {
     return p.profiles[static_cast<std::size_t>(profile)].segments[static_cast<std::size_t>(s)];
@@ -143,11 +126,6 @@ std::optional<std::array<Contact, 2>> lying_on(const Segment& a, const Segment& 
     return out;
 }
 
-bool boxes_near(const std::pair<Eigen::Vector2d, Eigen::Vector2d>& x, const std::pair<Eigen::Vector2d, Eigen::Vector2d>& y, double tol) {
-    return x.first.x() <= y.second.x() + tol && y.first.x() <= x.second.x() + tol && x.first.y() <= y.second.y() + tol &&
-           y.first.y() <= x.second.y() + tol;
-}
-
 }  // namespace
 
 int global_segment(const Part& part, int profile, int segment) {
@@ -177,27 +155,13 @@ ContactResult detect_contacts(const FclPairOracle& pair, const Eigen::Vector2d& 
     out.fcl_distance = pair.signed_distance(q);
     const double chordal = pair.model(0).chordal_tolerance();
     if (out.fcl_distance > tol + 2 * chordal) return out;  // FCL: too far apart to touch
-    if (out.fcl_distance < 0) {
-        // FCL finds the meshes overlapping. Touching within the tolerance means some configuration
-        // that close is free; probe a ring of them (a part turned by tol / reach moves at most tol).
-        std::array<double, 2> step{};
-        for (int k = 0; k < 2; ++k) {
-            const Part& p = pair.part(k);
-            step[static_cast<std::size_t>(k)] = p.fixed() ? 0.0 : p.rotates() ? tol / std::max(p.reach(), 1e-300) : tol;
-        }
-        bool near_free = false;
-        for (double r : {1.0, 0.25})
-            for (int i = 0; i < 32 && !near_free; ++i) {
-                const double a = 2 * std::numbers::pi * i / 32;
-                const Eigen::Vector2d d(r * step[0] * std::cos(a), r * step[1] * std::sin(a));
-                near_free = !pair.blocked(q + d);
-            }
-        if (!near_free) {
-            out.status = ContactStatus::overlapping;
-            out.message = "'" + pa.name + "' and '" + pb.name + "' overlap at this configuration by more than the contact tolerance (" +
-                          std::to_string(tol) + ")";
-            return out;
-        }
+    if (out.fcl_distance < 0 && !pair.separable_within(q, tol)) {
+        // FCL finds the meshes overlapping, and no shift of the tolerance's length parts them:
+        // they overlap, rather than touch.
+        out.status = ContactStatus::overlapping;
+        out.message = "'" + pa.name + "' and '" + pb.name + "' overlap at this configuration by more than the contact tolerance (" +
+                      std::to_string(tol) + ")";
+        return out;
     }
     const Placed A = place(pa, q[0]), B = place(pb, q[1]);
     std::vector<Candidate> candidates;
@@ -206,7 +170,7 @@ ContactResult detect_contacts(const FclPairOracle& pair, const Eigen::Vector2d& 
         for (int s = 0; s < count(A, i); ++s)
             for (int j = 0; j < static_cast<int>(B.profiles.size()); ++j)
                 for (int t = 0; t < count(B, j); ++t) {
-                    if (!boxes_near(A.boxes[static_cast<std::size_t>(i)][static_cast<std::size_t>(s)], B.boxes[static_cast<std::size_t>(j)][static_cast<std::size_t>(t)], tol))
+                    if (A.boxes[static_cast<std::size_t>(i)][static_cast<std::size_t>(s)].distance(B.boxes[static_cast<std::size_t>(j)][static_cast<std::size_t>(t)]) > tol)
                         continue;
                     const Segment& x = seg(A, i, s);
                     const Segment& y = seg(B, j, t);

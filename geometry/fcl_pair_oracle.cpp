@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <numbers>
 #include <sstream>
 
 namespace qm::geometry {
@@ -51,6 +52,16 @@ double FclPairOracle::signed_distance(const Eigen::Vector2d& q) const {
     ++calls_;
     if (fcl_collide(models_[0], q[0], models_[1], q[1])) return -1.0;
     return fcl_distance(models_[0], q[0], models_[1], q[1]);
+}
+
+bool FclPairOracle::separable_within(const Eigen::Vector2d& q, double depth) const {
+    for (double r : {1.0, 0.25})
+        for (int i = 0; i < 32; ++i) {
+            const double a = 2 * std::numbers::pi * i / 32;
+            ++calls_;
+            if (!fcl_collide(models_[0], q[0], models_[1], q[1], r * depth * Eigen::Vector2d(std::cos(a), std::sin(a)))) return true;
+        }
+    return false;
 }
 
 double FclPairOracle::coordinate_scale(int which) const {

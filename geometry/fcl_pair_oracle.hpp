@@ -33,6 +33,10 @@ public:
     // FCL's distance between the placed parts when apart; -1 when FCL reports a collision (a
     // mesh pair gives no penetration depth, only the sign).
     [[nodiscard]] double signed_distance(const Eigen::Vector2d& q) const;
+    // Does moving the first part by some translation of length `depth` (probed in 32 directions,
+    // and at a quarter of it) part them? An estimate of "penetration depth <= depth", whatever
+    // the parts' degrees of freedom.
+    [[nodiscard]] bool separable_within(const Eigen::Vector2d& q, double depth) const;
     // Pre: which is 0 or 1.
     [[nodiscard]] const FclPartModel& model(int which) const { return models_[static_cast<std::size_t>(which)]; }
     [[nodiscard]] const Part& part(int which) const { return models_[static_cast<std::size_t>(which)].part(); }

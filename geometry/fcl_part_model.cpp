@@ -50,10 +50,12 @@ fcl::Transform3d FclPartModel::transform(double q) const {
     return out;
 }
 
-bool fcl_collide(const FclPartModel& a, double qa, const FclPartModel& b, double qb) {
+bool fcl_collide(const FclPartModel& a, double qa, const FclPartModel& b, double qb, const Eigen::Vector2d& shift) {
     fcl::CollisionRequestd request;
     fcl::CollisionResultd result;
-    fcl::collide(a.geometry().get(), a.transform(qa), b.geometry().get(), b.transform(qb), request, result);
+    fcl::Transform3d ta = a.transform(qa);
+    ta.translation().head<2>() += shift;
+    fcl::collide(a.geometry().get(), ta, b.geometry().get(), b.transform(qb), request, result);
     return result.isCollision();
 }
 

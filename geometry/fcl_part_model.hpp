@@ -35,8 +35,10 @@ private:
     std::size_t triangles_ = 0;
 };
 
-// Is the pair colliding at coordinates (qa, qb)? FCL's narrow phase on the two meshes.
-[[nodiscard]] bool fcl_collide(const FclPartModel& a, double qa, const FclPartModel& b, double qb);
+// Is the pair colliding at coordinates (qa, qb), with a moved further by `shift` (a probe of
+// penetration depth)? FCL's narrow phase on the two meshes.
+[[nodiscard]] bool fcl_collide(const FclPartModel& a, double qa, const FclPartModel& b, double qb,
+                               const Eigen::Vector2d& shift = Eigen::Vector2d::Zero());
 // FCL's distance between the meshes at (qa, qb): > 0 when apart; 0 when they touch or overlap.
 [[nodiscard]] double fcl_distance(const FclPartModel& a, double qa, const FclPartModel& b, double qb);
 

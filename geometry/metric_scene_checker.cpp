@@ -177,8 +177,12 @@ void Checker::part(const mast::PartEntry& e, Mechanism& m) {
         if (slot) error(*item, std::string("part '") + name + "' has two " + what + " items");
         else slot = item;
     };
+    int drawings = 0;
     for (const auto& item : e.items) {
-        if (draw(item, drawn)) continue;
+        if (draw(item, drawn)) {
+            ++drawings;
+            continue;
+        }
         const auto& v = item.get();
         if (const auto* g = boost::get<mast::GeneratorItem>(&v)) once(generator, g, "generated shapes");
         else if (const auto* a = boost::get<mast::AtItem>(&v)) once(at, a, "(at ...)");
@@ -206,8 +210,9 @@ void Checker::part(const mast::PartEntry& e, Mechanism& m) {
                 given[pn] = &p;
                 params.emplace_back(pn, value(p.value));
             }
-            const ShapeResult r = make_shape(*g, params);
-            if (r.shape) {
+            const ShapeResult r = ok ? make_shape(*g, params) : ShapeResult{};  // no shape from non-finite values
+            if (!ok) {
+            } else if (r.shape) {
                 shape = *r.shape;
             } else {
                 const Node* blame = generator;
@@ -220,7 +225,7 @@ void Checker::part(const mast::PartEntry& e, Mechanism& m) {
                 error(*blame, std::string(g->name) + ": " + r.error);
             }
         }
-    } else if (drawn.empty()) {
+    } else if (drawings == 0) {
         error(e, "part '" + name + "' has no shape: draw it with (polygon ...), (circle ...) or (profile ...), or generate it, e.g. (spur-gear (teeth 12))");
     } else {
         Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
