@@ -25,7 +25,7 @@ Eigen::Vector2d centre_of(const Part& p) {
 }  // namespace
 
 FclPairOracle::FclPairOracle(const Part& a, const Part& b, double chordal_tolerance)
-    : models_{FclPartModel(a, chordal_tolerance, 0, pair_height(a, b)), FclPartModel(b, chordal_tolerance, 1, pair_height(a, b))},
+    : models_{FclPartModel(a, chordal_tolerance, pair_height(a, b)), FclPartModel(b, chordal_tolerance, pair_height(a, b))},
       chordal_tolerance_(chordal_tolerance) {
     for (int k = 0; k < 2; ++k) {
         const Part& p = part(k);

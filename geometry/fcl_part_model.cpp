@@ -1,7 +1,6 @@
 // geometry/fcl_part_model.cpp: parts as extruded FCL meshes.
 #include "geometry/fcl_part_model.hpp"
 
-#include "geometry/triangulation.hpp"
 #include "qm/assert.hpp"
 
 #include <fcl/geometry/bvh/BVH_model.h>
@@ -11,23 +10,17 @@
 
 namespace qm::geometry {
 
-FclPartModel::FclPartModel(const Part& part, double chordal_tolerance, int layer, double height)
+FclPartModel::FclPartModel(const Part& part, double chordal_tolerance, double height)
     : part_(part), chordal_tolerance_(chordal_tolerance) {
-    QM_REQUIRE(chordal_tolerance > 0 && height > 0 && (layer == 0 || layer == 1) && !part.profiles.empty(),
-               "FclPartModel needs a positive tolerance and height, layer 0 or 1, and a shape");
-    const double z0 = layer == 0 ? -height : -0.5 * height, z1 = layer == 0 ? height : 2 * height;
+    QM_REQUIRE(chordal_tolerance > 0 && height > 0 && !part.profiles.empty(), "FclPartModel needs a positive tolerance and height, and a shape");
     std::vector<fcl::Vector3d> v;
     std::vector<fcl::Triangle> t;
     for (const auto& profile : part.profiles) {
-        const Polygon poly = tessellate(profile, chordal_tolerance);
+        outlines_.push_back(tessellate(profile, chordal_tolerance));
+        const Polygon& poly = outlines_.back();
         const std::size_t base = v.size(), n = poly.size();
-        for (const auto& p : poly) v.emplace_back(p.x(), p.y(), z0);
-        for (const auto& p : poly) v.emplace_back(p.x(), p.y(), z1);
-        for (const auto& tri : triangulate(poly)) {
-            const auto a = static_cast<std::size_t>(tri[0]), b = static_cast<std::size_t>(tri[1]), c = static_cast<std::size_t>(tri[2]);
-            t.emplace_back(base + a, base + c, base + b);              // bottom cap, facing down
-            t.emplace_back(base + n + a, base + n + b, base + n + c);  // top cap, facing up
-        }
+        for (const auto& p : poly) v.emplace_back(p.x(), p.y(), -height);
+        for (const auto& p : poly) v.emplace_back(p.x(), p.y(), height);
         for (std::size_t i = 0; i < n; ++i) {
             const std::size_t j = (i + 1) % n;
             t.emplace_back(base + i, base + j, base + n + j);
@@ -40,6 +33,20 @@ FclPartModel::FclPartModel(const Part& part, double chordal_tolerance, int layer
     mesh->endModel();
     triangles_ = t.size();
     mesh_ = std::move(mesh);
+}
+
+bool FclPartModel::contains(const Eigen::Vector2d& x, double q) const {
+    const Eigen::Vector2d local = part_.pose(q).inverse() * x;
+    for (const auto& poly : outlines_) {
+        bool in = false;  // even-odd crossings of a ray along +x
+        for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+            const auto& a = poly[i];
+            const auto& b = poly[j];
+            if ((a.y() > local.y()) != (b.y() > local.y()) && local.x() < a.x() + (local.y() - a.y()) / (b.y() - a.y()) * (b.x() - a.x())) in = !in;
+        }
+        if (in) return true;
+    }
+    return false;
 }
 
 fcl::Transform3d FclPartModel::transform(double q) const {
@@ -56,7 +63,11 @@ bool fcl_collide(const FclPartModel& a, double qa, const FclPartModel& b, double
     fcl::Transform3d ta = a.transform(qa);
     ta.translation().head<2>() += shift;
     fcl::collide(a.geometry().get(), ta, b.geometry().get(), b.transform(qb), request, result);
-    return result.isCollision();
+    if (result.isCollision()) return true;
+    // Walls apart: the parts overlap only if one lies wholly inside the other.
+    Eigen::Isometry2d shift_a = Eigen::Isometry2d::Identity();
+    shift_a.translate(shift);
+    return b.contains(shift_a * a.some_point(qa), qb) || a.contains(shift_a.inverse() * b.some_point(qb), qa);
 }
 
 double fcl_distance(const FclPartModel& a, double qa, const FclPartModel& b, double qb) {

@@ -34,4 +34,13 @@ struct PlacedPart {
 // Do the parts share a point (boundaries meet, or one lies inside the other)?
 [[nodiscard]] bool placed_overlap(const PlacedPart& a, const PlacedPart& b);
 
+// The segment pairs (i, s, j, t) whose boxes lie within `radius` of each other: the only pairs
+// that can be nearest after either part moves by less than (radius - distance) / 2.
+struct SegmentPair {
+    int i, s, j, t;
+};
+[[nodiscard]] std::vector<SegmentPair> near_pairs(const PlacedPart& a, const PlacedPart& b, double radius);
+// Smallest distance over the given pairs only (boundaries; containment is not looked at).
+[[nodiscard]] double distance_over(const PlacedPart& a, const PlacedPart& b, const std::vector<SegmentPair>& pairs);
+
 }  // namespace qm::geometry

@@ -1,13 +1,21 @@
-// geometry/triangulation.cpp: ear clipping. Only reflex vertices can lie inside an ear, so each
-// ear test looks at the remaining reflex vertices (a part's profile has few: the roots of its
-// teeth), which keeps finely tessellated arcs cheap.
-#include "geometry/triangulation.hpp"
-
+// bench/geometry/ear_clipping.hpp (benchmark only)
+// Provides:   triangulate(), the triangles of a simple polygon by ear clipping, for the caps of
+//             extruded prisms in fcl_mesh_bench.cpp, which measures what caps cost FCL (the
+//             library's meshes are walls only: geometry/fcl_part_model.hpp).
+// Ownership:  value results only.
+// Invariants: for a simple counter-clockwise polygon of n >= 3 vertices: n - 2 triangles, each
+//             counter-clockwise, whose areas sum to the polygon's area (tested).
+// Knows nothing of FCL, the ATMS or the engine.
+#pragma once
+#include "geometry/polygon_pair.hpp"
 #include "qm/assert.hpp"
-
 #include <algorithm>
+#include <array>
+#include <vector>
 
-namespace qm::geometry {
+// Only reflex vertices can lie inside an ear, so each ear test looks at the remaining reflex
+// vertices. Pre: poly is simple and counter-clockwise with >= 3 vertices.
+namespace qm::geometry::bench {
 namespace {
 
 double cross3(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
@@ -21,7 +29,7 @@ bool in_triangle(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen
 
 }  // namespace
 
-std::vector<std::array<int, 3>> triangulate(const Polygon& poly) {
+inline std::vector<std::array<int, 3>> triangulate(const Polygon& poly) {
     const int n = static_cast<int>(poly.size());
     QM_REQUIRE(n >= 3, "triangulate needs three vertices");
     std::vector<int> prev(static_cast<std::size_t>(n)), next(static_cast<std::size_t>(n));
@@ -69,4 +77,4 @@ std::vector<std::array<int, 3>> triangulate(const Polygon& poly) {
     return out;
 }
 
-}  // namespace qm::geometry
+}  // namespace qm::geometry::bench
