@@ -29,57 +29,50 @@ std::string num(double x) {
     return os.str();
 }
 
-// Spur gear. Each flank is the osculating circle of the involute at the pitch circle (centre on
-// the base circle, radius R sin(pressure angle), an old drafting approximation) down to where
-// it turns radial, then a radial line to the root; tip and root are arcs. Lines and arcs
-// only, as the thesis' drawings (8.1.1), and nearly conjugate, so meshing gears keep their play.
-// Play is the backlash of this gear on its pitch circle: the tooth is thinner than half the
-// circular pitch by that much, so two gears at centre distance R1 + R2 have play1 + play2.
+// Spur gear. Each flank is the circle through three points of the true involute (at the base
+// or root circle, the pitch circle and the tip circle), down to the base circle, then a radial
+// line to the root (as an involute tooth has below its base circle); tip and root are arcs.
+// Lines and arcs only, as the thesis' drawings (8.1.1), and nearly conjugate, so meshing gears
+// keep their play. Play is the backlash of this gear on its pitch circle: the tooth is thinner
+// than half the circular pitch by that much, so two gears at centre distance R1 + R2 have
+// play1 + play2 between their teeth.
 ShapeResult spur_gear(const std::vector<double>& v) {
     const int n = static_cast<int>(v[0]);
     const double R = v[1], play = v[2], phi = v[3] * pi / 180, m = 2 * R / n;
-    const double Ra = R + v[4] * m, Rf = R - v[5] * m;
+    const double Ra = R + v[4] * m, Rf = R - v[5] * m, Rb = R * std::cos(phi);
     const double thickness = pi * m / 2 - play;
     if (thickness <= 0) return fail("the play " + num(play) + " leaves no tooth: it must be below half the circular pitch, " + num(pi * m / 2), 2);
-    if (phi <= 0 || phi >= pi / 4) return fail("the pressure angle must lie between 0 and 45 degrees", 3);
+    if (phi <= 0 || phi >= pi / 3) return fail("the pressure angle must lie between 0 and 60 degrees", 3);
     if (Rf <= 0) return fail("the dedendum reaches the centre; use fewer modules or more teeth", 5);
-    const double ap = thickness / (2 * R);                    // half the tooth's angle on the pitch circle
-    const V T = polar(R * std::cos(phi), ap - phi);           // centre of curvature of the upper flank
-    const double rho = R * std::sin(phi), t_norm = T.norm();
-    // The flank circle's point at radius r on the pitch point's side of the line O-T.
-    auto at_radius = [&](double r) -> std::optional<V> {
-        const double x = (t_norm * t_norm + r * r - rho * rho) / (2 * t_norm);
-        const double h2 = r * r - x * x;
-        if (h2 < 0) return std::nullopt;
-        const V u = T / t_norm, w(-u.y(), u.x());
-        return V(x * u + std::sqrt(h2) * w);
-    };
-    const auto tip = at_radius(Ra);
-    if (!tip) return fail("the addendum reaches beyond the flank circles; use a smaller addendum", 4);
-    // Where the flank circle's tangent passes through the centre the flank is radial; below that
-    // the circle would curl back into the tooth, so the flank goes on as a radial line (as an
-    // involute does below its base circle).
-    const double r_low = std::max(Rf, std::sqrt(t_norm * t_norm - rho * rho));
-    const V low = *at_radius(r_low);
+    // The upper flank's involute: polar angle at radius r >= Rb (the tooth's centre line at 0).
+    auto inv = [](double a) { return std::tan(a) - a; };
+    auto involute = [&](double r) { return polar(r, thickness / (2 * R) + inv(phi) - inv(std::acos(Rb / r))); };
+    const double r_low = std::max(Rf, Rb);
+    const V tip = involute(Ra), pitch_point = involute(R), low = involute(r_low);
     const V root = polar(Rf, std::atan2(low.y(), low.x()));
-    const double bt = std::atan2(tip->y(), tip->x()), br = std::atan2(root.y(), root.x());
+    const double bt = std::atan2(tip.y(), tip.x()), br = std::atan2(root.y(), root.x());
     if (bt <= 1e-9) return fail("the teeth come to a point below the tip circle; use less play or a smaller addendum", 4);
     if (br >= pi / n - 1e-9) return fail("the teeth leave no root between them; use a larger play or a smaller pressure angle", 2);
+    // The circle through the three involute points.
+    const V a = tip - low, b = pitch_point - low;
+    const double det = 2 * (a.x() * b.y() - a.y() * b.x());
+    if (std::abs(det) < 1e-15 * R * R) return fail("the flank is too short to draw; use a larger addendum", 4);
+    const V T = low + V(b.y() * a.squaredNorm() - a.y() * b.squaredNorm(), a.x() * b.squaredNorm() - b.x() * a.squaredNorm()) / det;
     const bool radial = (low - root).norm() > 1e-12 * R;
     // The upper flank runs from the tip down to the low point about T, the short way.
-    const double a0 = std::atan2(tip->y() - T.y(), tip->x() - T.x()), a1 = std::atan2(low.y() - T.y(), low.x() - T.x());
+    const double a0 = std::atan2(tip.y() - T.y(), tip.x() - T.x()), a1 = std::atan2(low.y() - T.y(), low.x() - T.x());
     const bool down_ccw = std::remainder(a1 - a0, 2 * pi) > 0;
     auto mirror = [](V x) { return V(x.x(), -x.y()); };
     Profile p;
     for (int i = 0; i < n; ++i) {
-        const double a = 2 * pi * i / n, b = 2 * pi * ((i + 1) % n) / n;
-        const V c_up = rotate(T, a), c_lo = rotate(mirror(T), a);
-        if (radial) p.segments.push_back(Segment::line(rotate(mirror(root), a), rotate(mirror(low), a)));
-        p.segments.push_back(Segment::arc(rotate(mirror(low), a), rotate(mirror(*tip), a), c_lo, down_ccw));
-        p.segments.push_back(Segment::arc(rotate(mirror(*tip), a), rotate(*tip, a), V::Zero(), true));
-        p.segments.push_back(Segment::arc(rotate(*tip, a), rotate(low, a), c_up, down_ccw));
-        if (radial) p.segments.push_back(Segment::line(rotate(low, a), rotate(root, a)));
-        p.segments.push_back(Segment::arc(rotate(root, a), rotate(mirror(root), b), V::Zero(), true));
+        const double ai = 2 * pi * i / n, bi = 2 * pi * ((i + 1) % n) / n;
+        const V c_up = rotate(T, ai), c_lo = rotate(mirror(T), ai);
+        if (radial) p.segments.push_back(Segment::line(rotate(mirror(root), ai), rotate(mirror(low), ai)));
+        p.segments.push_back(Segment::arc(rotate(mirror(low), ai), rotate(mirror(tip), ai), c_lo, down_ccw));
+        p.segments.push_back(Segment::arc(rotate(mirror(tip), ai), rotate(tip, ai), V::Zero(), true));
+        p.segments.push_back(Segment::arc(rotate(tip, ai), rotate(low, ai), c_up, down_ccw));
+        if (radial) p.segments.push_back(Segment::line(rotate(low, ai), rotate(root, ai)));
+        p.segments.push_back(Segment::arc(rotate(root, ai), rotate(mirror(root), bi), V::Zero(), true));
     }
     return ok({p}, n);
 }
@@ -183,11 +176,11 @@ ShapeResult block(const std::vector<double>& v) {
 
 const std::vector<Generator>& generators() {
     static const std::vector<Generator> table = {
-        {"spur-gear", "spur gear: flanks as arcs osculating the involute, tip and root arcs",
+        {"spur-gear", "spur gear: flanks as arcs through three points of the involute, tip and root arcs",
          {{"teeth", 12, 6, false, true, "number of teeth"},
           {"pitch-radius", 1, 0, true, false, "radius of the pitch circle"},
           {"play", 0, 0, false, false, "backlash on the pitch circle (length)"},
-          {"pressure-angle", 20, 0, true, false, "pressure angle, degrees (below 45)"},
+          {"pressure-angle", 20, 0, true, false, "pressure angle, degrees (below 60)"},
           {"addendum", 1, 0, true, false, "tip above the pitch circle, in modules (module = 2 pitch-radius / teeth)"},
           {"dedendum", 1.25, 0, true, false, "root below the pitch circle, in modules"}},
          spur_gear},
