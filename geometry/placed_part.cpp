@@ -95,6 +95,61 @@ bool placed_overlap(const PlacedPart& a, const PlacedPart& b) {
     return meet || contains_a_point_of(a, b) || contains_a_point_of(b, a);
 }
 
+ContactDirection contact_direction(const PlacedPart& a, const PlacedPart& b, double scale) {
+    ContactDirection out;
+    const double d = placed_distance(a, b);
+    if (d > 1e-9 * scale) {
+        double best = 1e300;
+        for_box_pairs(a, b, d, [&](double d2, int i, int s, int j, int t) {
+            if (d2 > best * best) return;
+            const auto sd = segment_distance(seg(a, i, s), seg(b, j, t));
+            if (sd.distance < best) {
+                best = sd.distance;
+                out = {(sd.pa - sd.pb) / sd.distance, 0.5 * (sd.pa + sd.pb), true};
+            }
+        });
+        return out;
+    }
+    double deepest = -1;
+    const double limit = 1e-3 * scale;  // overlaps this shallow are touching within a tolerance
+    auto consider = [&](double depth, const Eigen::Vector2d& n, const Eigen::Vector2d& x) {
+        if (depth > deepest && depth <= limit && n.norm() > 0.5) {
+            deepest = depth;
+            out = {n.normalized(), x, true};
+        }
+    };
+    // A vertex e of `inner`'s segment lying on the inner side of `outer` (a segment of the other
+    // part) near its interior: depth and the other's outward normal there.
+    auto vertex_in = [&](const Segment& outer, const Eigen::Vector2d& e, double sign) {
+        const auto cp = closest_point(outer, e);
+        if (cp.t <= 1e-9 || cp.t >= 1 - 1e-9) return;
+        const Eigen::Vector2d out_n = outer.outward_normal_at(cp.t);
+        if ((e - cp.point).dot(out_n) < 0) consider(cp.distance, sign * out_n, e);
+    };
+    for_box_pairs(a, b, 0.0, [&](double, int i, int s, int j, int t) {
+        const Segment& x = seg(a, i, s);
+        const Segment& y = seg(b, j, t);
+        const auto meet = intersections(x, y, 0.0);
+        if (meet.points.empty()) return;
+        for (const auto& e : {x.from, x.to}) vertex_in(y, e, 1.0);   // a's vertex in b: a leaves along b's normal
+        for (const auto& e : {y.from, y.to}) vertex_in(x, e, -1.0);  // b's vertex in a: a leaves against its own normal
+        if (meet.points.size() >= 2) {
+            const Eigen::Vector2d mid = 0.5 * (meet.points[0].point + meet.points[1].point);
+            const auto ca = closest_point(x, mid), cb = closest_point(y, mid);
+            consider((ca.point - cb.point).norm(), y.outward_normal_at(cb.t) - x.outward_normal_at(ca.t), mid);
+        } else if (deepest < 0) {
+            // One crossing and no vertex inside: the surfaces' normals where they cross, leaving
+            // out a side whose crossing is at its end (a corner).
+            const auto& m = meet.points.front();
+            Eigen::Vector2d n = Eigen::Vector2d::Zero();
+            if (m.tb > 1e-9 && m.tb < 1 - 1e-9) n += y.outward_normal_at(m.tb);
+            if (m.ta > 1e-9 && m.ta < 1 - 1e-9) n -= x.outward_normal_at(m.ta);
+            if (n.norm() > 0.5) out = {n.normalized(), m.point, true};
+        }
+    });
+    return out;
+}
+
 std::vector<SegmentPair> near_pairs(const PlacedPart& a, const PlacedPart& b, double radius) {
     std::vector<SegmentPair> out;
     for_box_pairs(a, b, radius, [&](double, int i, int s, int j, int t) { out.push_back({i, s, j, t}); });

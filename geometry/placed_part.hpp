@@ -34,6 +34,21 @@ struct PlacedPart {
 // Do the parts share a point (boundaries meet, or one lies inside the other)?
 [[nodiscard]] bool placed_overlap(const PlacedPart& a, const PlacedPart& b);
 
+// The contact between two placed parts that touch or nearly touch: the unit direction `n` in
+// which the first part moves away from the second there, and the contact point `x`. Apart: the
+// line between the nearest points. Overlapping a little (a configuration found on tessellated
+// meshes overlaps the exact arcs by up to the chordal error): the deepest penetration among the
+// crossing segments: a vertex of one inside the other (n is the other's surface normal), or the
+// middle of a crossing chord (n from both surfaces' normals). `found` is false when no
+// direction can be told (corner exactly on corner).
+struct ContactDirection {
+    Eigen::Vector2d n = Eigen::Vector2d::Zero();
+    Eigen::Vector2d x = Eigen::Vector2d::Zero();
+    bool found = false;
+};
+// Pre: both parts have profiles; scale is the parts' size (for what counts as touching).
+[[nodiscard]] ContactDirection contact_direction(const PlacedPart& a, const PlacedPart& b, double scale);
+
 // The segment pairs (i, s, j, t) whose boxes lie within `radius` of each other: the only pairs
 // that can be nearest after either part moves by less than (radius - distance) / 2.
 struct SegmentPair {

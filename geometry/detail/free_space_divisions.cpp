@@ -70,8 +70,14 @@ void Builder::grow_fsds() {
                     } else if (blocked(d.at(next))) {
                         const Eigen::Vector2d e = bisect_contact(oracle, d.at(t), false, d.at(next), r.boundary_tolerance, space.oracle_calls);
                         d.length = std::abs(e[axis] - origin[axis]);
-                        end_on_boundary(d, d.length, JoinKind::fsd_end);
-                        divisions.push_back(d);
+                        // Meeting the boundary within half a cell of its join, the division is
+                        // the join's own CSEG seen along its tangent (at a smooth extremum, once
+                        // tessellation has rounded it into chords), not a division of free
+                        // space: the grid resolves nothing that narrow anyway.
+                        if (d.length >= 0.5 * ax.step()) {
+                            end_on_boundary(d, d.length, JoinKind::fsd_end);
+                            divisions.push_back(d);
+                        }
                         ended = true;
                     }
                     t = next;
