@@ -22,7 +22,7 @@ ShapeResult ok(std::vector<Profile> profiles, int symmetry) {
     return {Shape{std::move(profiles), symmetry}, {}, -1};
 }
 
-std::string num(double x) {
+std::string decimal(double x) {
     std::ostringstream os;
     os.precision(6);
     os << x;
@@ -41,7 +41,7 @@ ShapeResult spur_gear(const std::vector<double>& v) {
     const double R = v[1], play = v[2], phi = v[3] * pi / 180, m = 2 * R / n;
     const double Ra = R + v[4] * m, Rf = R - v[5] * m, Rb = R * std::cos(phi);
     const double thickness = pi * m / 2 - play;
-    if (thickness <= 0) return fail("the play " + num(play) + " leaves no tooth: it must be below half the circular pitch, " + num(pi * m / 2), 2);
+    if (thickness <= 0) return fail("the play " + decimal(play) + " leaves no tooth: it must be below half the circular pitch, " + decimal(pi * m / 2), 2);
     if (phi <= 0 || phi >= pi / 3) return fail("the pressure angle must lie between 0 and 60 degrees", 3);
     if (Rf <= 0) return fail("the dedendum reaches the centre; use fewer modules or more teeth", 5);
     // The upper flank's involute: polar angle at radius r >= Rb (the tooth's centre line at 0).
@@ -248,7 +248,7 @@ ShapeResult make_shape(const Generator& g, const std::vector<std::pair<std::stri
         if (!std::isfinite(x)) return fail(std::string(p.name) + " must be a finite number", static_cast<int>(i));
         if (p.integer && x != std::floor(x)) return fail(std::string(p.name) + " must be a whole number", static_cast<int>(i));
         if (p.min_exclusive ? !(x > p.min) : !(x >= p.min))
-            return fail(std::string(p.name) + " must be " + (p.min_exclusive ? "greater than " : "at least ") + num(p.min), static_cast<int>(i));
+            return fail(std::string(p.name) + " must be " + (p.min_exclusive ? "greater than " : "at least ") + decimal(p.min), static_cast<int>(i));
         if (p.integer && x > 10000) return fail(std::string(p.name) + " must be at most 10000", static_cast<int>(i));
     }
     return g.make(values);

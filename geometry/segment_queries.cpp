@@ -8,7 +8,7 @@
 namespace qm::geometry {
 namespace {
 
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+double perp_dot(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 double angle_of(const Eigen::Vector2d& v) { return std::atan2(v.y(), v.x()); }
 
@@ -30,11 +30,11 @@ bool on_segment(const Segment& s, const Eigen::Vector2d& x, double eps) { return
 
 void line_line(const Segment& a, const Segment& b, double eps, Intersections& out) {
     const Eigen::Vector2d da = a.to - a.from, db = b.to - b.from;
-    const double den = cross(da, db);
+    const double den = perp_dot(da, db);
     const double la = da.norm(), lb = db.norm();
     if (std::abs(den) <= eps * 1e-3 * std::max(la, lb) || std::abs(den) <= 1e-12 * la * lb) {
         // Parallel: collinear if b's ends are on a's line.
-        if (std::abs(cross(da, b.from - a.from)) > eps * la) return;
+        if (std::abs(perp_dot(da, b.from - a.from)) > eps * la) return;
         std::vector<Eigen::Vector2d> shared;
         for (const auto& x : {a.from, a.to})
             if (on_segment(b, x, eps)) shared.push_back(x);
@@ -52,7 +52,7 @@ void line_line(const Segment& a, const Segment& b, double eps, Intersections& ou
         for (const auto& x : shared) add_point(out, a, b, x, eps);
         return;
     }
-    const double t = cross(b.from - a.from, db) / den, u = cross(b.from - a.from, da) / den;
+    const double t = perp_dot(b.from - a.from, db) / den, u = perp_dot(b.from - a.from, da) / den;
     const double ta = eps / std::max(la, 1e-300), tb = eps / std::max(lb, 1e-300);
     if (t >= -ta && t <= 1 + ta && u >= -tb && u <= 1 + tb) add_point(out, a, b, a.from + std::clamp(t, 0.0, 1.0) * da, eps);
 }
