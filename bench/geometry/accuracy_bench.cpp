@@ -61,10 +61,14 @@ Row run(const ClosedFormPair& c, const PairOracle& oracle, Kind kind, double tes
 void print(const std::vector<Row>& rows) {
     std::cout << "| pair | chordal tol | boundary tol | max normal error | max along-axis error | sign errors / points | time ms | places | CSEGs | joins | faces |\n"
               << "|---|---|---|---|---|---|---|---|---|---|---|\n";
-    for (const auto& r : rows)
-        std::cout << "| " << r.pair << " | " << std::setprecision(0) << std::scientific << r.tess << " | " << r.tol << " | " << std::setprecision(2) << r.normal_err << " | " << r.axis_err << " | "
+    for (const auto& r : rows) {
+        std::cout << "| " << r.pair << " | ";
+        if (r.tess > 0) std::cout << std::setprecision(0) << std::scientific << r.tess;
+        else std::cout << "exact";
+        std::cout << " | " << std::setprecision(0) << std::scientific << r.tol << " | " << std::setprecision(2) << r.normal_err << " | " << r.axis_err << " | "
                   << r.sign_errors << " / " << r.points << " | " << std::fixed << std::setprecision(1) << r.ms << " | " << r.places << " | "
                   << r.csegs << " | " << r.joins << " | " << r.faces << " |\n";
+    }
 }
 
 // Log-log plot: max normal error against the tolerance setting varied (boundary tolerance for

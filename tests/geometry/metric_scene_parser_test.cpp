@@ -45,7 +45,7 @@ TEST_CASE("geometry/metric_scene_parser: the bundled metric scenes read into the
     CHECK(wheel.rotates());
     CHECK(wheel.symmetry == 15);
     CHECK(pallets.dof.pivot.isApprox(Eigen::Vector2d(0, 1.4)));
-    CHECK(esc.settings.chordal_tolerance == 1e-5);
+    CHECK(esc.settings.chordal_tolerance == 1e-7);
     CHECK(esc.settings.grid == std::array<int, 2>{64, 64});
     REQUIRE(esc.pairs.size() == 1);
     REQUIRE(esc.pairs[0].window[1]);
