@@ -51,7 +51,7 @@ TEST_CASE("geometry/fcl_pair_oracle: FCL agrees with the exact polygon oracle aw
         const FclPairOracle fcl(a, b, tol);
         const PolygonPairOracle exact(tessellated(a, tol), tessellated(b, tol));
         int blocked = 0, free = 0;
-        for (int i = 0; i < 400; ++i) {
+        for (int i = 0; i < 250; ++i) {
             const Eigen::Vector2d q(a.translates() ? offset(rng) : angle(rng), b.translates() ? offset(rng) : angle(rng));
             const double d = exact.distance(q);
             const bool fb = fcl.blocked(q);
