@@ -1,6 +1,7 @@
 // cli/main.cpp: the qm-atms command. The only place that prints diagnostics and picks the exit
 // status: 0 success, 2 bad input, 1 internal error (STYLE.md section 6).
 #include "qm/assert.hpp"
+#include "metric_command.hpp"
 #include "run_command.hpp"
 #include "scene_command.hpp"
 #include <exception>
@@ -26,12 +27,19 @@ int main(int argc, char** argv) {
             return 2;
         }
         if (args[0] == "--help" || args[0] == "-h") {
-            std::cout << usage << '\n' << qm::cli::scene_usage() << '\n' << qm::cli::run_usage();
+            std::cout << usage << '\n' << qm::cli::scene_usage() << '\n' << qm::cli::metric_usage() << '\n'
+                      << qm::cli::run_usage();
             return 0;
         }
         if (args[0] == "run") {
             doing = "running " + (args.size() > 1 ? args[1] : std::string("a rule program"));
             return qm::cli::run_command(std::span<const std::string>(args).subspan(1), std::cout, std::cerr);
+        }
+        if (args[0] == "--emit-def" || args[0] == "--places") {  // metric scenes (cli/metric_command.hpp)
+            doing = "reading " + (args.size() > 1 ? args[1] : std::string("a metric scene"));
+            const auto rest = std::span<const std::string>(args).subspan(1);
+            return args[0] == "--emit-def" ? qm::cli::emit_def_command(rest, std::cout, std::cerr)
+                                           : qm::cli::places_command(rest, std::cout, std::cerr);
         }
         doing = "analysing " + args[0];
         return qm::cli::scene_command(args, std::cin, std::cout, std::cerr);

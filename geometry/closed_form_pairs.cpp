@@ -13,6 +13,22 @@ constexpr double pi = std::numbers::pi;
 
 Polygon rectangle(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
 
+Part part(std::vector<Profile> profiles, PolygonDof dof, const CSpaceAxis& axis) {
+    Part p;
+    p.name = "part";
+    for (auto& x : profiles) p.profiles.push_back(counter_clockwise(x));
+    p.dof = dof;
+    p.lo = axis.lo;
+    p.hi = axis.hi;
+    return p;
+}
+
+// The stadium of stadium() below, exactly: two lines and two half circles.
+Profile stadium_profile(double length, double r) {
+    return Profile{{Segment::line({0, -r}, {length, -r}), Segment::arc({length, -r}, {length, r}, {length, 0}, true),
+                    Segment::line({length, r}, {0, r}), Segment::arc({0, r}, {0, -r}, {0, 0}, true)}};
+}
+
 CSpaceAxis rotation_axis() { return CSpaceAxis{-pi, pi, true, 64}; }
 CSpaceAxis translation_axis(double lo, double hi) { return CSpaceAxis{lo, hi, false, 64}; }
 
@@ -74,7 +90,10 @@ ClosedFormPair bar_and_block() {
         PolygonPart block{{rectangle(0, -3, 3, 3)}, {PolygonDof::Kind::translation, {0, 0}, {1, 0}}};
         return PolygonPairOracle(bar, block);
     };
-    return {"bar-and-block", exact, {rotation_axis(), translation_axis(0.6, 1.3)}, tess};
+    const std::array<CSpaceAxis, 2> axes{rotation_axis(), translation_axis(0.6, 1.3)};
+    return {"bar-and-block", exact, axes, tess,
+            {part({stadium_profile(L, r)}, {PolygonDof::Kind::rotation, {0, 0}, {1, 0}}, axes[0]),
+             part({polygon_profile(rectangle(0, -3, 3, 3))}, {PolygonDof::Kind::translation, {0, 0}, {1, 0}}, axes[1])}};
 }
 
 // Disk cam (radius R, centre at eccentricity e from the pivot) under a flat follower whose lower
@@ -89,7 +108,10 @@ ClosedFormPair disk_cam_and_follower() {
         PolygonPart follower{{rectangle(-2, 0, 2, 1)}, {PolygonDof::Kind::translation, {0, 0}, {0, 1}}};
         return PolygonPairOracle(cam, follower);
     };
-    return {"disk-cam-and-follower", exact, {rotation_axis(), translation_axis(0.2, 1.0)}, tess};
+    const std::array<CSpaceAxis, 2> axes{rotation_axis(), translation_axis(0.2, 1.0)};
+    return {"disk-cam-and-follower", exact, axes, tess,
+            {part({circle_profile({e, 0}, R)}, {PolygonDof::Kind::rotation, {0, 0}, {1, 0}}, axes[0]),
+             part({polygon_profile(rectangle(-2, 0, 2, 1))}, {PolygonDof::Kind::translation, {0, 0}, {0, 1}}, axes[1])}};
 }
 
 // Two eccentric disks on pivots (0,0) and (D,0): f = Ra + Rb - |cA(q0) - cB(q1)|.
@@ -111,7 +133,10 @@ ClosedFormPair two_disks() {
         PolygonPart b{{tessellated_circle({D + eb, 0}, Rb, tol)}, {PolygonDof::Kind::rotation, {D, 0}, {1, 0}}};
         return PolygonPairOracle(a, b);
     };
-    return {"two-disks", exact, {rotation_axis(), rotation_axis()}, tess};
+    const std::array<CSpaceAxis, 2> axes{rotation_axis(), rotation_axis()};
+    return {"two-disks", exact, axes, tess,
+            {part({circle_profile({ea, 0}, Ra)}, {PolygonDof::Kind::rotation, {0, 0}, {1, 0}}, axes[0]),
+             part({circle_profile({D + eb, 0}, Rb)}, {PolygonDof::Kind::rotation, {D, 0}, {1, 0}}, axes[1])}};
 }
 
 // Crank pin (radius r at crank radius c) in the vertical slot (width w) of a yoke translating
@@ -130,7 +155,11 @@ ClosedFormPair pin_in_slot() {
                          {PolygonDof::Kind::translation, {0, 0}, {1, 0}}};
         return PolygonPairOracle(pin, yoke);
     };
-    return {"pin-in-slot", exact, {rotation_axis(), translation_axis(-0.8, 0.8)}, tess};
+    const std::array<CSpaceAxis, 2> axes{rotation_axis(), translation_axis(-0.8, 0.8)};
+    return {"pin-in-slot", exact, axes, tess,
+            {part({circle_profile({c, 0}, r)}, {PolygonDof::Kind::rotation, {0, 0}, {1, 0}}, axes[0]),
+             part({polygon_profile(rectangle(-w / 2 - 3, -2, -w / 2, 2)), polygon_profile(rectangle(w / 2, -2, w / 2 + 3, 2))},
+                  {PolygonDof::Kind::translation, {0, 0}, {1, 0}}, axes[1])}};
 }
 
 }  // namespace qm::geometry

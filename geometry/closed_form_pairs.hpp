@@ -2,13 +2,15 @@
 // Provides:   the closed-form test pairs of the accuracy study (issue item 6): a bar turning
 //             against a block, a circular disk cam against a flat follower, two eccentric disks,
 //             and a crank pin in a slotted yoke. Each pair comes as an AnalyticOracle (the exact
-//             contact function f, blocked iff f > 0, with its gradient) and as polygons tessellated
-//             to a chordal tolerance, together with its configuration-space axes.
+//             contact function f, blocked iff f > 0, with its gradient), as polygons tessellated
+//             to a chordal tolerance, and as the two parts drawn with lines and arcs (for the FCL
+//             oracle), together with its configuration-space axes.
 // Ownership:  value types; AnalyticOracle holds std::functions owning their parameters.
 // Knows nothing of FCL, the ATMS or the engine.
 #pragma once
 #include "geometry/cspace.hpp"
 #include "geometry/pair_oracle.hpp"
+#include "geometry/part.hpp"
 #include "geometry/polygon_pair.hpp"
 #include <array>
 #include <cmath>
@@ -44,6 +46,8 @@ struct ClosedFormPair {
     std::array<CSpaceAxis, 2> axes;
     // The same pair with every arc tessellated to the chordal tolerance.
     std::function<PolygonPairOracle(double chordal_tolerance)> tessellated;
+    // The two parts, drawn exactly with lines and arcs (q0 drives the first, q1 the second).
+    std::array<Part, 2> parts;
 };
 
 [[nodiscard]] ClosedFormPair bar_and_block();

@@ -59,9 +59,10 @@ void add_adjacency(const PairOracle& oracle, const CSpaceRequest& r, const std::
         }
         return true;
     };
-    auto face_near = [&](const Eigen::Vector2d& q, Eigen::Vector2d dir_cells) -> std::optional<PlaceId> {
+    auto face_near = [&](const Eigen::Vector2d& q, Eigen::Vector2d dir_cells,
+                         const Eigen::Vector2d& nudge = Eigen::Vector2d::Zero()) -> std::optional<PlaceId> {
         if (dir_cells.norm() == 0) return std::nullopt;
-        const Eigen::Vector2d y = q + 0.3 * dir_cells.normalized().cwiseProduct(cell);
+        const Eigen::Vector2d y = q + 0.3 * dir_cells.normalized().cwiseProduct(cell) + nudge;
         if (!in_domain(y) || oracle.blocked(wrap(r, y))) return std::nullopt;
         if (auto f = faces.face_at(y)) return face_places[static_cast<std::size_t>(*f)];
         return std::nullopt;
@@ -102,13 +103,33 @@ void add_adjacency(const PairOracle& oracle, const CSpaceRequest& r, const std::
     const std::vector<Adjacency> line_moves = out;
     for (const auto& a : line_moves)
         if (a.to != a.from && v.at(a.to).kind == PlaceKind::join) add(a.to, a.from, negated(a.motion), true, false);
-    // (3) joins to faces.
+    // (3) joins to faces. A join lies on the boundary only to within the bisection tolerance, on
+    // either side of it; a motion straight along a CSEG through the join would then reach the
+    // face or not by rounding. The sample is nudged a thousandth of a cell into blocked space
+    // (against the mean of the join's normals), so such a motion counts as sliding, in every
+    // drawing of the scene (moved, turned, scaled).
+    // A motion straight along a division that leaves the join follows the division (reached by
+    // reciprocity above); sampling it would land on the division's own line, in either face by
+    // rounding.
+    std::set<std::pair<std::uint32_t, QualDirection>> along_division;
+    for (const auto& l : lines) {
+        if (!l.two_sided) continue;
+        if (l.start) along_division.insert({l.start->value, qualitative(l.tangent, r.normal_zero_tolerance)});
+        if (l.end) along_division.insert({l.end->value, negated(qualitative(l.tangent, r.normal_zero_tolerance))});
+    }
     for (const auto& p : v.places) {
         if (p.kind != PlaceKind::join) continue;
+        Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+        for (const auto n : p.normals) mean += Eigen::Vector2d(n.s[0], n.s[1]).normalized();
+        const Eigen::Vector2d nudge = mean.norm() > 1e-9 ? Eigen::Vector2d(-1e-3 * mean.normalized().cwiseProduct(cell)) : Eigen::Vector2d::Zero();
         for (const auto d : all) {
             bool any = std::any_of(out.begin(), out.end(), [&](const Adjacency& a) { return a.from == p.id && a.motion == d; });
+            if (along_division.count({p.id.value, d})) {
+                if (!any) add(p.id, p.id, d, false, true);
+                continue;
+            }
             for (const auto& dir : actual_directions(d))
-                if (auto f = face_near(p.points.front(), dir)) {
+                if (auto f = face_near(p.points.front(), dir, nudge)) {
                     add(p.id, *f, d, true, false);
                     any = true;
                 }

@@ -9,29 +9,37 @@
 namespace qm::geometry::detail {
 
 // A direction that runs along a CSEG parallel to the axis (a box edge) is that CSEG, not an
-// FSD: a little way along, a small step across it is blocked on one side. A tangent to a curved
-// CSEG has left the curve by then, so it stays an FSD.
+// FSD: a quarter and a twentieth of a cell along, a small step across it is blocked on one side
+// at both. A tangent to a curved CSEG has left the curve by the quarter, so it stays an FSD. The
+// step across is a thousandth of a cell at least: a flat CSEG found on tessellated parts wobbles
+// by the chordal error, far more than the bisection tolerance.
 bool Builder::runs_along_boundary(const Division& d, const CSpaceAxis& ax) {
     const int other = 1 - d.axis;
-    const double across = 16 * r.boundary_tolerance + 1e-9 * r.axes[static_cast<std::size_t>(other)].span();
-    for (double t : {0.05 * ax.step(), 0.25 * ax.step()})
-        for (double side : {-1.0, 1.0}) {
+    const double across = std::max(16 * r.boundary_tolerance + 1e-9 * r.axes[static_cast<std::size_t>(other)].span(), 1e-3 * cell()[other]);
+    for (double side : {-1.0, 1.0}) {
+        bool both = true;
+        for (double t : {0.05 * ax.step(), 0.25 * ax.step()}) {
             Eigen::Vector2d q = d.at(t);
             q[other] += side * across;
-            if (in_domain(q) && blocked(q)) return true;
+            both = both && in_domain(q) && blocked(q);
         }
+        if (both) return true;
+    }
     return false;
 }
 
-// Two joins at the same height start the same division; keep one.
+// Two joins at the same height start the same division; keep one. "The same height" is within
+// a thousandth of a cell (or the bisection tolerance, if coarser): two divisions nearer than
+// that bound no face the grid can see.
 bool Builder::duplicate(const Division& d) const {
     const int other = 1 - d.axis;
+    const double same = std::max(8 * r.boundary_tolerance, 1e-3 * cell()[other]);
     for (const auto& e : divisions) {
-        if (e.axis != d.axis || std::abs(difference(r, e.start, d.start)[other]) > 8 * r.boundary_tolerance) continue;
+        if (e.axis != d.axis || std::abs(difference(r, e.start, d.start)[other]) > same) continue;
         const auto& ax = r.axes[static_cast<std::size_t>(d.axis)];
         double t = e.dir * (d.start[d.axis] - e.start[e.axis]);
         if (ax.periodic) t = std::fmod(std::fmod(t, ax.span()) + ax.span(), ax.span());
-        if (t >= -8 * r.boundary_tolerance && t <= e.length + 8 * r.boundary_tolerance && e.dir == d.dir) return true;
+        if (t >= -same && t <= e.length + same && e.dir == d.dir) return true;
         if (e.length >= ax.span() && ax.periodic) return true;  // a loop covers the whole line
     }
     return false;
@@ -70,8 +78,14 @@ void Builder::grow_fsds() {
                     } else if (blocked(d.at(next))) {
                         const Eigen::Vector2d e = bisect_contact(oracle, d.at(t), false, d.at(next), r.boundary_tolerance, space.oracle_calls);
                         d.length = std::abs(e[axis] - origin[axis]);
-                        end_on_boundary(d, d.length, JoinKind::fsd_end);
-                        divisions.push_back(d);
+                        // Meeting the boundary within half a cell of its join, the division is
+                        // the join's own CSEG seen along its tangent (at a smooth extremum, once
+                        // tessellation has rounded it into chords), not a division of free
+                        // space: the grid resolves nothing that narrow anyway.
+                        if (d.length >= 0.5 * ax.step()) {
+                            end_on_boundary(d, d.length, JoinKind::fsd_end);
+                            divisions.push_back(d);
+                        }
                         ended = true;
                     }
                     t = next;

@@ -1,0 +1,36 @@
+// cli/metric_command.hpp
+// Provides:   the metric-scene commands of qm-atms (docs/METRIC_SCENE_FORMAT.md):
+//             - `qm-atms --emit-def METRIC-SCENE [CONFIG]`: the Alex scene (docs/SCENE_FORMAT.md) of
+//               the parts at configuration CONFIG (`part=value, ...`: degrees for rotations,
+//               lengths for translations, unnamed parts as drawn), with one situation holding the
+//               contacts detected there and the external forces acting there;
+//             - `qm-atms --places METRIC-SCENE [--json] [--svg DIR] [--cache DIR | --no-cache]`:
+//               the place vocabulary of each kinematic pair (Def 20), from the on-disk cache when
+//               the same pair and settings were computed before (8.1.3);
+//             - metric_scene_at(), the conversion geometry -> alex::Scene behind --emit-def, for
+//               analysing a metric scene at a configuration exactly as a symbolic scene.
+// Errors:     bad input (scene, CONFIG, parts overlapping at CONFIG, bad options) goes to `diags`
+//             / `err` as `file:line:col: error: ...` with the source line and a caret; the
+//             commands then return 2. Warnings (a corner-against-corner contact that an Alex
+//             scene cannot state, a pair with no free space) are printed and do not fail.
+//             qm::InternalError propagates to main (exit 1).
+#pragma once
+#include "alex/scene.hpp"
+#include "qm/diagnostics.hpp"
+#include <optional>
+#include <ostream>
+#include <span>
+#include <string>
+
+namespace qm::cli {
+
+// The scene at `config` (the CONFIG syntax; empty = as drawn). The result is a checked Scene
+// (it has been printed and read back through the Alex reader). Errors go to diags.
+[[nodiscard]] std::optional<qm::alex::Scene> metric_scene_at(const std::string& path, const std::string& config, Diagnostics& diags);
+
+// args: the arguments after `--emit-def` / `--places`.
+[[nodiscard]] int emit_def_command(std::span<const std::string> args, std::ostream& out, std::ostream& err);
+[[nodiscard]] int places_command(std::span<const std::string> args, std::ostream& out, std::ostream& err);
+[[nodiscard]] const char* metric_usage() noexcept;
+
+}  // namespace qm::cli

@@ -1,0 +1,211 @@
+// tests/cli/metric_command_test.cpp: `qm-atms --emit-def` and `qm-atms --places` end to end through the
+// built executable (cli/metric_command.hpp): the Alex scene of a metric scene at a configuration
+// (contacts with their surfaces' normals and origin directions, corners, linkages as one body,
+// constraints of sliding parts, the forces acting there), located errors with exit status 2,
+// and place vocabularies as text, JSON and SVG, reused from the on-disk cache.
+#include <cstdio>
+#include <cstdlib>
+#include <doctest/doctest.h>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+
+struct Result {
+    int status = -1;
+    std::string out, err;
+};
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+Result qm_atms(const std::string& args) {
+    static int counter = 0;
+    const std::string base = std::string(QM_BINARY_DIR) + "/metric_test_" + std::to_string(++counter);
+    const std::string cmd = std::string(QM_BINARY_DIR) + "/cli/qm-atms " + args + " >" + base + ".out 2>" + base + ".err";
+    const int raw = std::system(cmd.c_str());
+    Result r;
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = slurp(base + ".out");
+    r.err = slurp(base + ".err");
+    std::remove((base + ".out").c_str());
+    std::remove((base + ".err").c_str());
+    return r;
+}
+
+std::string write_temp(const std::string& name, const std::string& text) {
+    const std::string path = std::string(QM_BINARY_DIR) + "/" + name;
+    std::ofstream(path) << text;
+    return path;
+}
+
+std::string scene(const std::string& name) { return std::string(QM_SOURCE_DIR) + "/scenarios/metric/" + name; }
+
+std::size_t count(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
+    return n;
+}
+
+const std::string table_top =
+    "(Defmechanism table-top\n"
+    "  Parts ((table (block (width 4) (height 1)) (at 0 -0.5) (fixed))\n"
+    "         (block (block) (at 0 0.5) (rotation))\n"
+    "         (slider (polygon (0 -0.5) (0.5 0) (0 0.5) (-0.5 0)) (at 1.5 0.5) (translation (0 1) (limits 0 1)))))\n";
+
+}  // namespace
+
+TEST_CASE("cli/metric_command: --emit-def writes the Alex scene at a configuration (the cam touching its follower)") {
+    // The cam's top is at 0.5 + 0.2 sin(30 deg) = 0.6: the follower, drawn at 0.5, rests on it at 0.1.
+    const Result r = qm_atms("--emit-def " + scene("cam.def") + " 'cam=30, follower=0.1'");
+    CHECK(r.status == 0);
+    CHECK(r.err.empty());
+    CHECK(r.out ==
+          "; Alex scene of " + scene("cam.def") + " at 'cam=30, follower=0.1' (qm-atms --emit-def)\n"
+          "(Defscenario 2 cam\n"
+          "  Individuals (cam follower)\n"
+          "  Descriptions ((rigid-ob cam)(rigid-ob follower))\n"
+          "  Surfaces (\n"
+          "    (cam\n"
+          "      (cam-s1 (0 +) (- -)))\n"  // the cam's top, normal up, its pivot down-left
+          "    (follower\n"
+          "      (follower-s1 (0 -) (0 0))))\n"  // a sliding part has no centre of rotation
+          "  Translational-Constraints ((cam (?x ?y))(follower (- -) (- 0) (- +) (+ -) (+ 0) (+ +)))\n"
+          "  Rotational-Constraints ((follower (?r)))\n"
+          "  Forces ())\n"
+          "(Defstates\n"
+          "  ((Contact cam-s1 follower-s1)\n"
+          "   (Force cam (0 +) (- 0) motor)\n"
+          "   (Force follower (0 -) (0 0) gravity)))\n");
+    // Lifted clear of the cam there is no contact; the forces still act.
+    const Result lifted = qm_atms("--emit-def " + scene("cam.def") + " 'cam=30, follower=0.2'");
+    CHECK(lifted.status == 0);
+    CHECK(count(lifted.out, "Contact") == 0);
+    CHECK(count(lifted.out, "(Force ") == 2);
+}
+
+TEST_CASE("cli/metric_command: a block on a table touches at both ends of its bottom, with distinct origin directions") {
+    const Result r = qm_atms("--emit-def " + write_temp("table_top.def", table_top));
+    CHECK(r.status == 0);
+    CHECK(r.out.find("(block-s1 (0 -) (+ +))") != std::string::npos);  // bottom-left: the pivot is up and right
+    CHECK(r.out.find("(block-s1-2 (0 -) (- +))") != std::string::npos);
+    CHECK(r.out.find("(table-s3 (0 +) (0 0))") != std::string::npos);  // fixed: no centre of rotation
+    CHECK(r.out.find("(Contact table-s3 block-s1)") != std::string::npos);
+    CHECK(r.out.find("(Contact table-s3 block-s1-2)") != std::string::npos);
+    // The slider stands on its lower limit: moving down past it is constrained too.
+    CHECK(r.out.find("(slider (- -) (- 0) (- +) (0 -) (+ -) (+ 0) (+ +))") != std::string::npos);
+    // Its corner resting on the table: a corner's normal is the reverse of the table's (3.1.1).
+    const Result down = qm_atms("--emit-def " + write_temp("table_top.def", table_top) + " 'block=0, slider=0'");
+    CHECK(down.status == 0);
+    CHECK(down.out.find("(slider-c1 (0 -) (0 0))") != std::string::npos);
+    CHECK(down.out.find("(Contact table-s3 slider-c1)") != std::string::npos);
+    const Result up = qm_atms("--emit-def " + write_temp("table_top.def", table_top) + " 'slider=1'");
+    CHECK(up.out.find("(slider (- -) (- 0) (- +) (0 -) (+ -) (+ 0) (+ +))") == std::string::npos);  // off its lower limit
+    CHECK(up.out.find("(slider (- -) (- 0) (- +) (0 +) (+ -) (+ 0) (+ +))") != std::string::npos);  // on its upper one
+}
+
+TEST_CASE("cli/metric_command: corner against corner is left out with a warning (Def 26)") {
+    const std::string tips =
+        "(Defmechanism tips\n"
+        "  Parts ((upper (polygon (0 -0.5) (0.5 0) (0 0.5) (-0.5 0)) (at 0 0.5) (translation (0 1) (limits -1 1)))\n"
+        "         (lower (polygon (0 -0.5) (0.5 0) (0 0.5) (-0.5 0)) (at 0 -0.5) (rotation))))\n";
+    const Result r = qm_atms("--emit-def " + write_temp("tips.def", tips));
+    CHECK(r.status == 0);
+    CHECK(count(r.out, "Contact") == 0);
+    CHECK(r.err.find("tips.def:1:1: warning: corner of 'upper' against corner of 'lower'") != std::string::npos);
+    CHECK(r.err.find("Def 26") != std::string::npos);
+}
+
+TEST_CASE("cli/metric_command: parts on one shaft are one Alex object; undeclared pairs are not looked at") {
+    // gear-1 turned onto gear-2's teeth, and gear-3 back onto pinion-2's (gear-2 and pinion-2 stay
+    // as drawn: one coordinate for the shaft).
+    const Result r = qm_atms("--emit-def " + scene("gear_train.def") + " 'gear-1=1.0875, gear-3=-0.8586'");
+    CHECK(r.status == 0);
+    CHECK(r.out.find("Individuals (gear-1 gear-2 gear-3)") != std::string::npos);  // pinion-2 rides on gear-2
+    const auto group = r.out.substr(r.out.find("    (gear-2\n"), r.out.find("    (gear-3\n") - r.out.find("    (gear-2\n"));
+    CHECK(group.find("(pinion-2-") != std::string::npos);  // its surfaces belong to the shaft's object
+    CHECK(count(r.out, "(Force gear-1 (0 +) (- 0) spring)") == 1);
+    // Every contact names a gear-1 surface with a gear-2 one, or a pinion-2 surface (on object
+    // gear-2) with a gear-3 one: only the declared pairs.
+    std::istringstream lines(r.out);
+    int contacts = 0;
+    for (std::string line; std::getline(lines, line);) {
+        if (line.find("(Contact ") == std::string::npos) continue;
+        ++contacts;
+        const bool first = line.find("gear-1-") != std::string::npos && line.find("gear-2-") != std::string::npos;
+        const bool second = line.find("pinion-2-") != std::string::npos && line.find("gear-3-") != std::string::npos;
+        CHECK((first || second));
+    }
+    CHECK(contacts >= 1);
+}
+
+TEST_CASE("cli/metric_command: bad input is located, exit status 2") {
+    Result r = qm_atms("--emit-def " + scene("cam.def") + " 'cam=30, follower=0'");
+    CHECK(r.status == 2);
+    CHECK(r.err.find("cam.def:8:10: error: 'cam' and 'follower' overlap at this configuration") != std::string::npos);
+    CHECK(r.err.find("    Pairs ((cam follower))\n           ^\n") != std::string::npos);
+    r = qm_atms("--emit-def " + scene("cam.def") + " 'cam=30, wheel=2'");
+    CHECK(r.status == 2);
+    CHECK(r.err == "CONFIG:1:9: error: unknown part 'wheel'; the moving parts are cam, follower\n  cam=30, wheel=2\n          ^\n");
+    r = qm_atms("--emit-def " + scene("cam.def") + " 'follower=9'");
+    CHECK(r.status == 2);
+    CHECK(r.err.find("outside its limits") != std::string::npos);
+    r = qm_atms("--emit-def " + write_temp("open.def", "(Defmechanism open Parts ((p (profile (0 0) (line 1 0) (line 1 1) (line 0 2)) (fixed))))"));
+    CHECK(r.status == 2);
+    CHECK(r.err.find("open.def:1:67: error: part 'p': the profile is open") != std::string::npos);
+    r = qm_atms("--places " + write_temp("pairs.def", "(Defmechanism p Parts ((a (block) (rotation))) Pairs ((a b)))"));
+    CHECK(r.status == 2);
+    CHECK(r.err.find("pairs.def:1:58: error: unknown part 'b'") != std::string::npos);
+    r = qm_atms("--places " + std::string(QM_BINARY_DIR) + "/no-such-file.def");
+    CHECK(r.status == 2);
+    CHECK(r.err.find("cannot read metric scene file") != std::string::npos);
+    r = qm_atms("--places " + scene("cam.def") + " --colour");
+    CHECK(r.status == 2);
+    CHECK(r.err.find("unknown or incomplete option '--colour'") != std::string::npos);
+    r = qm_atms("--emit-def");
+    CHECK(r.status == 2);
+    const Result help = qm_atms("--help");
+    CHECK(help.status == 0);
+    CHECK(help.out.find("--emit-def METRIC-SCENE") != std::string::npos);
+    CHECK(help.out.find("--places METRIC-SCENE") != std::string::npos);
+}
+
+TEST_CASE("cli/metric_command: --places prints each pair's vocabulary, reuses the cache, writes JSON and SVG") {
+    const std::string cache = std::string(QM_BINARY_DIR) + "/metric_test_cache";
+    std::filesystem::remove_all(cache);
+    const Result first = qm_atms("--places " + scene("scotch_yoke.def") + " --cache " + cache);
+    CHECK(first.status == 0);
+    CHECK(first.out.find("mechanism scotch-yoke: 1 kinematic pair\n") == 0);
+    CHECK(first.out.find("pair crank yoke (q0 = crank: rotation 0..6.283185307 periodic; q1 = yoke: translation -1.4..0.2)\n") != std::string::npos);
+    CHECK(first.out.find("from cache") == std::string::npos);
+    CHECK(count(first.out, "\nplace ") > 10);
+    CHECK(count(first.out, "(adjacent ") > 50);
+    const Result second = qm_atms("--places " + scene("scotch_yoke.def") + " --cache " + cache);
+    CHECK(second.out.find(") from cache\n") != std::string::npos);
+    // The same vocabulary, whether computed or read back.
+    CHECK(second.out.substr(second.out.find("places ")) == first.out.substr(first.out.find("places ")));
+    const Result json = qm_atms("--places " + scene("scotch_yoke.def") + " --json --cache " + cache);
+    CHECK(json.status == 0);
+    CHECK(json.out.find("{\"schema\":\"qm-metric-places/1\",\"mechanism\":\"scotch-yoke\",\"pairs\":[{\"parts\":[\"crank\",\"yoke\"],\"from_cache\":true,"
+                        "\"vocabulary\":{\"schema\":\"qm-place-vocabulary/1\"") == 0);
+    CHECK(json.out.find("],\"skipped\":[],\"linkages\":[]}\n") != std::string::npos);
+    const std::string svg = std::string(QM_BINARY_DIR) + "/metric_test_svg";
+    std::filesystem::remove_all(svg);
+    const Result pictures = qm_atms("--places " + scene("gear_train.def") + " --no-cache --svg " + svg);
+    CHECK(pictures.status == 0);
+    CHECK(pictures.out.find("linkage gear-2 pinion-2\n") != std::string::npos);
+    CHECK(slurp(svg + "/gear-1--gear-2.svg").find("<svg") != std::string::npos);
+    CHECK(slurp(svg + "/pinion-2--gear-3.svg").find("<svg") != std::string::npos);
+    // A declared pair that can never touch gets no configuration space (Def 20).
+    const Result far = qm_atms("--places " + write_temp("far.def", "(Defmechanism far Parts ((a (disk-cam) (rotation)) (b (disk-cam) (at 9 0) (rotation))) Pairs ((a b)))") +
+                               " --no-cache");
+    CHECK(far.status == 0);
+    CHECK(far.out.find("no configuration space for a b: their motion envelopes do not intersect, so they never touch (Def 20)") != std::string::npos);
+}
