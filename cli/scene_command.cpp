@@ -3,9 +3,12 @@
 #include "alex/analysis.hpp"
 #include "alex/result_printer.hpp"
 #include "alex/scene_parser.hpp"
+#include "metric_command.hpp"
 #include "query_text.hpp"
 #include "rules_location.hpp"
+#include <cctype>
 #include <charconv>
+#include <fstream>
 #include <iostream>
 #include <optional>
 #include <unistd.h>
@@ -21,8 +24,31 @@ struct SceneOptions {
     std::optional<std::size_t> situation;
     std::vector<std::string> given, without;
     std::optional<std::string> rules;
+    std::optional<std::string> config;  // metric scenes: the configuration (cli/metric_command.hpp)
     std::size_t limit = 100000;
 };
+
+// A metric scene (docs/METRIC_SCENE_FORMAT.md) opens with `(Defmechanism`, after blanks and `;`
+// comments; an Alex scene does not.
+bool is_metric_scene(const std::string& path) {
+    std::ifstream in(path);
+    std::string word;
+    char c = 0;
+    while (in.get(c)) {
+        if (c == ';') {
+            std::string rest;
+            std::getline(in, rest);
+        } else if (!std::isspace(static_cast<unsigned char>(c))) {
+            if (c != '(') return false;
+            while (in.get(c) && std::isspace(static_cast<unsigned char>(c))) {
+            }
+            do word += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            while (in.get(c) && std::isalnum(static_cast<unsigned char>(c)));
+            return word == "defmechanism";
+        }
+    }
+    return false;
+}
 
 std::optional<std::size_t> positive(const std::string& s) {
     std::size_t v = 0;
@@ -68,6 +94,10 @@ std::optional<SceneOptions> parse(std::span<const std::string> args, std::ostrea
             auto v = value("a folder of .rules files");
             if (!v) return std::nullopt;
             o.rules = *v;
+        } else if (a == "--config") {
+            auto v = value("a configuration of a metric scene, e.g. --config 'wheel=12, pallets=-3'");
+            if (!v) return std::nullopt;
+            o.config = *v;
         } else if (a == "--limit") {
             auto v = value("a number of combinations");
             if (!v) return std::nullopt;
@@ -210,6 +240,7 @@ private:
 const char* scene_usage() noexcept {
     return "usage: qm-atms SCENE.def [--json] [--why FACT [--situation N]] [--given 'OBJ TRANS ROT']...\n"
            "                         [--without 'Contact A B' | 'Force OBJ']... [--rules DIR] [--limit N] [-i]\n"
+           "                         [--config 'PART=VALUE, ...']   (a metric scene, at that configuration)\n"
            "  prints, for every situation, the free directions, every consistent combination of motions\n"
            "  and whether the structure is stable (thesis chapters 6-7)\n"
            "  --json          the same as JSON (docs/OUTPUT.md)\n"
@@ -219,7 +250,9 @@ const char* scene_usage() noexcept {
            "  --without F     take a contact or force away in every situation (what if)\n"
            "  --rules DIR     the folder of laws (default: the rules/ installed with qm-atms)\n"
            "  --limit N       stop enumerating a chain's combinations after N (default 100000)\n"
-           "  -i              answer queries typed on standard input (type help)\n";
+           "  -i              answer queries typed on standard input (type help)\n"
+           "  --config C      a metric scene (docs/METRIC_SCENE_FORMAT.md) is analysed at configuration C,\n"
+           "                  e.g. 'wheel=12, pallets=-3' (degrees or lengths; parts not named stay as drawn)\n";
 }
 
 int scene_command(std::span<const std::string> args, std::istream& in, std::ostream& out, std::ostream& err) {
@@ -229,8 +262,19 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
         return 2;
     }
     Diagnostics d;
-    auto scene = alex::read_scene_file(options->scene, d);
-    if (!scene) {
+    std::optional<alex::Scene> scene;
+    if (is_metric_scene(options->scene)) {
+        // A metric scene is analysed at a configuration, as the Alex scene --emit-def would write.
+        scene = metric_scene_at(options->scene, options->config.value_or(""), d);
+        if (scene && !d.items().empty()) {
+            d.print(err);  // warnings (e.g. a contact an Alex scene cannot state)
+            d = Diagnostics{};
+        }
+    } else {
+        if (options->config) d.error({"--config", 1, 1}, "expected a metric scene (Defmechanism) with --config");
+        scene = alex::read_scene_file(options->scene, d);
+    }
+    if (!scene || d.has_errors()) {
         d.print(err);
         return 2;
     }

@@ -179,6 +179,23 @@ TEST_CASE("cli/scene_command: the interactive mode answers without reloading") {
     CHECK(r.err.find("expected a motion or a freedom") != std::string::npos);
 }
 
+TEST_CASE("cli/scene_command: a metric scene is analysed at a configuration like an Alex scene") {
+    const std::string cam = std::string(QM_SOURCE_DIR) + "/scenarios/metric/cam.def";
+    Result r = qm_atms(cam + " --json");
+    REQUIRE(r.status == 0);
+    auto doc = Json::parse(r.out);
+    REQUIRE(doc.has_value());
+    CHECK(check_schema(*doc, 2) == 1);
+    // The same as analysing the Alex scene --emit-def writes.
+    const std::string emitted = std::string(QM_BINARY_DIR) + "/scene_cli_cam_emitted.def";
+    Result def = qm_atms("--emit-def " + cam);
+    REQUIRE(def.status == 0);
+    std::ofstream(emitted) << def.out;
+    CHECK(qm_atms(emitted + " --json").out == r.out);
+    CHECK(qm_atms(cam + " --config 'nosuch=3'").status == 2);
+    CHECK(qm_atms(scene("block.def") + " --config 'cam=3'").status == 2);  // --config needs a metric scene
+}
+
 TEST_CASE("cli/scene_command: bad input is located and exits with 2") {
     const std::string bad = std::string(QM_BINARY_DIR) + "/scene_cli_bad.def";
     std::ofstream(bad) << "(Defscenario 2 broken\n  Individuals (a b\n";
