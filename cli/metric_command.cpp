@@ -59,21 +59,17 @@ public:
         scene_.situations.emplace_back();
     }
 
-    // Surfaces and contacts of one pair's contacts.
-    void add_contacts(const g::PairSpec& pair, const g::ContactResult& r, Diagnostics& diags) {
-        const double zt = m_.settings.normal_zero_tolerance;
+    // Surfaces, corners and contacts of one pair's contacts. A convex corner is written as an Alex
+    // corner between its two sides (Def 18); how it constrains, alone against a face or against
+    // another corner (section 3.1.1, Defs 25-26), is the laws' business (rules/corners.rules).
+    void add_contacts(const g::PairSpec& pair, const g::ContactResult& r) {
         for (const auto& c : r.contacts) {
-            const bool ca = c.first.kind == g::FeatureKind::corner, cb = c.second.kind == g::FeatureKind::corner;
-            if (!ca && !cb) {
-                contact(pair.a, c.first, c.first.normal, pair.b, c.second, c.second.normal, r.tolerance);
-            } else if (ca != cb) {
-                // 3.1.1: a corner touching a surface takes the reverse of the surface's normal.
-                const Eigen::Vector2d n = ca ? c.second.normal : c.first.normal;
-                contact(pair.a, c.first, ca ? Eigen::Vector2d(-n) : c.first.normal, pair.b, c.second, cb ? Eigen::Vector2d(-n) : c.second.normal,
-                        r.tolerance);
-            } else {
-                corner_against_corner(pair, c, r.tolerance, zt, diags);
-            }
+            const a::SurfaceId x = feature(pair.a, c.first, r.tolerance), y = feature(pair.b, c.second, r.tolerance);
+            a::Contact k;
+            k.first = x;
+            k.second = y;
+            auto& list = scene_.situations.front().contacts;
+            if (std::find(list.begin(), list.end(), k) == list.end()) list.push_back(k);
         }
     }
 
@@ -155,52 +151,34 @@ private:
         return id;
     }
 
-    void contact(g::PartId pa, const g::ContactFeature& fa, const Eigen::Vector2d& na, g::PartId pb, const g::ContactFeature& fb,
-                 const Eigen::Vector2d& nb, double tol) {
-        a::Contact c;
-        c.first = surface(pa, fa, na, tol);
-        c.second = surface(pb, fb, nb, tol);
-        auto& list = scene_.situations.front().contacts;
-        for (const auto& x : list)
-            if (x == c) return;
-        list.push_back(c);
+    a::SurfaceId feature(g::PartId p, const g::ContactFeature& f, double tol) {
+        return f.kind == g::FeatureKind::corner ? corner(p, f, tol) : surface(p, f, f.normal, tol);
     }
 
-    // 3.1.1 and Defs 25-26: two convex corners touch. Each corner can touch those sides of the
-    // other corner whose normal lies in its reverse half planes; the constraint is the
-    // intersection over these potential contacts. Alex scenes state contacts whose constraints
-    // add up, so the contact is written only when the potential contacts agree on one normal
-    // (or there is one); otherwise it is left out, with a warning.
-    void corner_against_corner(const g::PairSpec& pair, const g::Contact& c, double tol, double zt, Diagnostics& diags) {
-        struct Potential {
-            bool corner_on_first;
-            int side;
-            Eigen::Vector2d n;  // outward normal of the touched side
-        };
-        std::vector<Potential> potentials;
-        for (int s = 0; s < 2; ++s) {
-            if (g::can_contact(c.first, c.second.sides[static_cast<std::size_t>(s)], zt)) potentials.push_back({true, s, c.second.sides[static_cast<std::size_t>(s)]});
-            if (g::can_contact(c.second, c.first.sides[static_cast<std::size_t>(s)], zt)) potentials.push_back({false, s, c.first.sides[static_cast<std::size_t>(s)]});
+    // The Alex corner of a corner feature: its two sides as faces, and the corner between them,
+    // with its own origin direction.
+    a::SurfaceId corner(g::PartId p, const g::ContactFeature& f, double tol) {
+        const g::Part& part = m_.parts[p];
+        g::ContactFeature before = f, after = f;
+        before.kind = after.kind = g::FeatureKind::surface;
+        before.segment = f.previous;
+        before.normal = f.sides[0];
+        after.normal = f.sides[1];
+        const a::SurfaceId first = surface(p, before, before.normal, tol), second = surface(p, after, after.normal, tol);
+        a::Surface s;
+        s.object = object_.at(p.value);
+        s.corner = a::CornerSides{first, second};
+        s.origin = direction_of(g::origin_direction(part, q_.at(p), f.point, std::max(tol, zero_length(part))));
+        const std::string base = part.name + "-c" + std::to_string(g::global_segment(part, f.profile, f.segment) + 1);
+        for (int n = 1;; ++n) {
+            s.name = n == 1 ? base : base + "-" + std::to_string(n);
+            const auto existing = scene_.find_surface(s.name);
+            if (!existing) break;
+            if (scene_.surfaces[*existing].corner == s.corner && scene_.surfaces[*existing].origin == s.origin) return *existing;
         }
-        // The normal of each potential contact as seen from the first part's side.
-        std::vector<g::QualDirection> seen;
-        for (const auto& p : potentials) seen.push_back(g::qualitative(p.corner_on_first ? Eigen::Vector2d(-p.n) : p.n, zt));
-        const bool agree = !seen.empty() && std::all_of(seen.begin(), seen.end(), [&](const auto& x) { return x == seen.front(); });
-        if (!agree) {
-            warn(diags, m_, pair.where,
-                 "corner of '" + m_.parts[pair.a].name + "' against corner of '" + m_.parts[pair.b].name + "' at (" + std::to_string(c.first.point.x()) + " " +
-                     std::to_string(c.first.point.y()) + "): its constraint is the intersection of " + std::to_string(potentials.size()) +
-                     " potential contacts (Def 26), which Alex contacts cannot state; the contact is left out");
-            return;
-        }
-        for (const auto& p : potentials) {
-            g::ContactFeature side = p.corner_on_first ? c.second : c.first;
-            side.kind = g::FeatureKind::surface;
-            side.segment = p.side == 0 ? side.previous : side.segment;
-            side.normal = p.n;
-            if (p.corner_on_first) contact(pair.a, c.first, -p.n, pair.b, side, p.n, tol);
-            else contact(pair.a, side, p.n, pair.b, c.second, -p.n, tol);
-        }
+        const a::SurfaceId id = scene_.surfaces.push_back(s);
+        scene_.objects[s.object].surfaces.push_back(id);
+        return id;
     }
 
     const g::Mechanism& m_;
@@ -230,7 +208,7 @@ std::optional<SceneText> scene_at(const std::string& path, const std::string& co
             ok = false;
             continue;
         }
-        builder.add_contacts(pair, r, diags);
+        builder.add_contacts(pair, r);
     }
     if (!ok) return std::nullopt;
     builder.add_forces();

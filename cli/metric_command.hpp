@@ -11,8 +11,8 @@
 //               analysing a metric scene at a configuration exactly as a symbolic scene.
 // Errors:     bad input (scene, CONFIG, parts overlapping at CONFIG, bad options) goes to `diags`
 //             / `err` as `file:line:col: error: ...` with the source line and a caret; the
-//             commands then return 2. Warnings (a corner-against-corner contact that an Alex
-//             scene cannot state, a pair with no free space) are printed and do not fail.
+//             commands then return 2. Warnings (a pair with no free space) are printed and do
+//             not fail. Corners in contact are written as Alex corners (Def 18).
 //             qm::InternalError propagates to main (exit 1).
 #pragma once
 #include "alex/scene.hpp"

@@ -5,6 +5,7 @@
 // and place vocabularies as text, JSON and SVG, reused from the on-disk cache.
 #include <cstdio>
 #include <cstdlib>
+#include "../support/json_value.hpp"
 #include <doctest/doctest.h>
 #include <filesystem>
 #include <fstream>
@@ -101,26 +102,43 @@ TEST_CASE("cli/metric_command: a block on a table touches at both ends of its bo
     CHECK(r.out.find("(Contact table-s3 block-s1-2)") != std::string::npos);
     // The slider stands on its lower limit: moving down past it is constrained too.
     CHECK(r.out.find("(slider (- -) (- 0) (- +) (0 -) (+ -) (+ 0) (+ +))") != std::string::npos);
-    // Its corner resting on the table: a corner's normal is the reverse of the table's (3.1.1).
+    // Its corner resting on the table: an Alex corner between its two lower sides (Def 18); the
+    // laws give it the reverse of the table's normal (3.1.1, rules/corners.rules).
     const Result down = qm_atms("--emit-def " + write_temp("table_top.def", table_top) + " 'block=0, slider=0'");
     CHECK(down.status == 0);
-    CHECK(down.out.find("(slider-c1 (0 -) (0 0))") != std::string::npos);
+    CHECK(down.out.find("(slider-s4 (- -) (0 0))") != std::string::npos);
+    CHECK(down.out.find("(slider-s1 (+ -) (0 0))") != std::string::npos);
+    CHECK(down.out.find("(slider-c1 slider-s4 slider-s1 (0 0))") != std::string::npos);
     CHECK(down.out.find("(Contact table-s3 slider-c1)") != std::string::npos);
     const Result up = qm_atms("--emit-def " + write_temp("table_top.def", table_top) + " 'slider=1'");
     CHECK(up.out.find("(slider (- -) (- 0) (- +) (0 -) (+ -) (+ 0) (+ +))") == std::string::npos);  // off its lower limit
     CHECK(up.out.find("(slider (- -) (- 0) (- +) (0 +) (+ -) (+ 0) (+ +))") != std::string::npos);  // on its upper one
 }
 
-TEST_CASE("cli/metric_command: corner against corner is left out with a warning (Def 26)") {
+TEST_CASE("cli/metric_command: corner against corner is written as two Alex corners (Def 26)") {
     const std::string tips =
         "(Defmechanism tips\n"
         "  Parts ((upper (polygon (0 -0.5) (0.5 0) (0 0.5) (-0.5 0)) (at 0 0.5) (translation (0 1) (limits -1 1)))\n"
         "         (lower (polygon (0 -0.5) (0.5 0) (0 0.5) (-0.5 0)) (at 0 -0.5) (rotation))))\n";
     const Result r = qm_atms("--emit-def " + write_temp("tips.def", tips));
     CHECK(r.status == 0);
-    CHECK(count(r.out, "Contact") == 0);
-    CHECK(r.err.find("tips.def:1:1: warning: corner of 'upper' against corner of 'lower'") != std::string::npos);
-    CHECK(r.err.find("Def 26") != std::string::npos);
+    CHECK(r.err.empty());
+    CHECK(r.out.find("(upper-c1 upper-s4 upper-s1 (0 0))") != std::string::npos);
+    CHECK(r.out.find("(lower-c3 lower-s2 lower-s3 (0 -))") != std::string::npos);
+    CHECK(r.out.find("(Contact upper-c1 lower-c3)") != std::string::npos);
+    // The laws decide the contact (rules/corners.rules): the upper tip, which slides only
+    // vertically, moves down only if it pushes the pivoted lower diamond round.
+    const Result a = qm_atms(write_temp("tips.def", tips) + " --json");
+    CHECK(a.status == 0);
+    auto doc = qm::test::Json::parse(a.out);
+    REQUIRE(doc.has_value());
+    bool falls = false;
+    for (const auto& m : (*doc)["situations"].array()[0]["motions"].array())
+        if (m["upper"]["translation"].string() == "(0 -)") {
+            falls = true;
+            CHECK(m["lower"]["rotation"].string() != "(0)");
+        }
+    CHECK(falls);
 }
 
 TEST_CASE("cli/metric_command: parts on one shaft are one Alex object; undeclared pairs are not looked at") {
