@@ -59,6 +59,26 @@ TEST_CASE("rules/force: a free force pushes what it moves the body into (5.3.2)"
     CHECK_FALSE(l.holds("(force-on a (- 0) (- 0) hand)"));  // nothing comes back through the same face
 }
 
+TEST_CASE("rules/force: a net torque pushes the object it turns into, one contact on (5.3.2)") {
+    // A pinned cam driven counter-clockwise touches a follower above it, right of the cam's centre:
+    // turning (+) moves that point up, into the follower, which is held down by its weight.
+    const std::string cam = "fact (dimensions 2)\nfact (rigid-body cam)\nfact (rigid-body follower)\n" +
+                            qm::test::pinned("cam") +
+                            "fact (surface cam top)\nfact (surface-normal top (0 +))\nfact (origin-dir top (- -))\n"
+                            "fact (surface follower foot)\nfact (surface-normal foot (0 -))\nfact (origin-dir foot (0 0))\n"
+                            "fact (contact top foot)\nfact (external-force follower (0 -) (0 0) weight)\n";
+    Laws l(laws, cam + "fact (external-force cam (0 +) (- 0) motor)\n");
+    CHECK(l.holds("(cause-torque cam motor (+))"));
+    CHECK(l.holds("(pushed-force follower (0 +) (0 0) motor)"));
+    CHECK(l.holds("(net-force follower (0 ?))"));            // motor against weight: either may win
+    CHECK(l.holds("(trans-nearness follower (0 +) 0)"));
+    // Two opposite torques of one cause cancel before anything is pushed (Law 5).
+    Laws balanced(laws, cam + "fact (external-force cam (0 +) (- 0) motor)\nfact (external-force cam (0 -) (- 0) motor)\n");
+    CHECK(balanced.holds("(cause-torque cam motor (0))"));
+    CHECK(balanced.all("pushed-force").empty());
+    CHECK(balanced.holds("(net-force follower (0 -))"));
+}
+
 TEST_CASE("rules/given_motion: a current motion persists, and pushes what it moves into (6.2, Table 3.2)") {
     const std::string scene = "fact (dimensions 2)\nfact (rigid-body a)\nfact (rigid-body b)\n"
                               "fact (surface a ar)\nfact (surface-normal ar (+ 0))\nfact (origin-dir ar (- 0))\n"
