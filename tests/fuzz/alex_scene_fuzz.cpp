@@ -12,6 +12,10 @@
 // instruments them; the linker then takes no object from libqm_alex.a for these symbols.
 #include "alex/scene.cpp"
 #include "alex/scene_checker.cpp"
+#include "alex/scene_checker_constraints.cpp"
+#include "alex/scene_checker_directions.cpp"
+#include "alex/scene_checker_situations.cpp"
+#include "alex/scene_checker_surfaces.cpp"
 #include "alex/scene_parser.cpp"
 #include "alex/scene_printer.cpp"
 
