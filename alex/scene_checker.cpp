@@ -16,6 +16,7 @@ std::optional<Scene> SceneChecker::run(const ast::Scenario& s) {
     scene_.where = cx_.where(s.name);
     dimensions(s.dimensions);
     collect_sections(s);
+    contact_list(s);
     if (!individuals_) {
         cx_.error(s.name, "scene '" + s.name.text + "' has no Individuals section");
     } else {
@@ -54,14 +55,34 @@ void SceneChecker::dimensions(const ast::Dimensions& d) {
 
 // Each section kind may appear once (Figure 6.1); situations may repeat (keyword notation).
 template <class T>
-void SceneChecker::once(const T& section, const T*& slot, std::vector<const T*>& all, const char* keyword) {
+void SceneChecker::once(const T& section, const T*& slot, std::vector<const T*>& all, const char* keyword,
+                        const std::string& reading) {
     if (slot) {
-        cx_.error(section, std::string("duplicate ") + keyword + " section",
+        cx_.error(section, std::string("duplicate ") + keyword + " section" + reading,
                   {std::string("the first ") + keyword + " section is at " + cx_.at(*slot)});
         return;
     }
     slot = &section;
     all.push_back(&section);
+}
+
+// A bare constraint list of the kind decided is registered as a keyworded copy of itself (same
+// position), so that it counts against the keyworded sections as Figure 6.1 intends.
+void SceneChecker::bare(const ast::BareConstraints& b, std::optional<bool> translational,
+                        const ast::TransConstraints*& t1, const ast::RotConstraints*& r1) {
+    if (!translational) return;
+    const std::string reading = " (a list without its keyword after Surfaces is read as one, Figure 6.1)";
+    if (*translational) {
+        ast::TransConstraints& t = bare_trans_.emplace_back();
+        static_cast<ast::x3::position_tagged&>(t) = b;
+        t.entries = b.entries;
+        once(t, t1, trans_, "Translational-Constraints", reading);
+    } else {
+        ast::RotConstraints& r = bare_rot_.emplace_back();
+        static_cast<ast::x3::position_tagged&>(r) = b;
+        r.entries = b.entries;
+        once(r, r1, rot_, "Rotational-Constraints", reading);
+    }
 }
 
 void SceneChecker::collect_sections(const ast::Scenario& s) {
@@ -73,8 +94,8 @@ void SceneChecker::collect_sections(const ast::Scenario& s) {
     const ast::Corners* c1 = nullptr;
     const ast::Linkages* l1 = nullptr;
     std::vector<const ast::Individuals*> ind;
-    for (const auto& section : s.sections) {
-        const auto& v = section.get();
+    for (std::size_t i = 0; i < s.sections.size(); ++i) {
+        const auto& v = s.sections[i].get();
         if (const auto* p = boost::get<ast::Individuals>(&v)) once(*p, individuals_, ind, "Individuals");
         else if (const auto* p = boost::get<ast::Descriptions>(&v)) once(*p, d1, descriptions_, "Descriptions");
         else if (const auto* p = boost::get<ast::Surfaces>(&v)) once(*p, s1, surfaces_, "Surfaces");
@@ -84,8 +105,26 @@ void SceneChecker::collect_sections(const ast::Scenario& s) {
         else if (const auto* p = boost::get<ast::Corners>(&v)) once(*p, c1, corners_, "Corners");
         else if (const auto* p = boost::get<ast::Linkages>(&v)) once(*p, l1, linkages_, "Linkages");
         else if (const auto* p = boost::get<ast::Situation>(&v)) situations_.push_back(p);
+        else if (const auto* p = boost::get<ast::SituationList>(&v))
+            for (const auto& sit : p->situations) situations_.push_back(&sit);
+        else if (const auto* p = boost::get<ast::BareConstraints>(&v)) bare(*p, bare_kind(s.sections, i), t1, r1);
     }
     for (const auto& sit : s.situations) situations_.push_back(&sit);
+}
+
+// Figures 7.12 and 7.16 end with `CONTACT (a b), (c d)` and no other situation: the contacts of
+// the one situation analysed (Figure 7.17 needs both of 7.16's contacts at once). Beside other
+// situations it could be one more or part of the last, so it is then an error.
+void SceneChecker::contact_list(const ast::Scenario& s) {
+    if (!s.contact_list) return;
+    if (!situations_.empty()) {
+        cx_.error(*s.contact_list,
+                  "a closing CONTACT list is read as the scene's only situation (Figures 7.12, 7.16), but this "
+                  "scene has other situations; write it as 'Situation : Contact (a b), Contact (c d)'",
+                  {"the first other situation is at " + cx_.at(*situations_.front())});
+        return;
+    }
+    situations_.push_back(&*s.contact_list);
 }
 
 void SceneChecker::individuals(const ast::Individuals& ind) {

@@ -6,6 +6,7 @@
 #include "alex/detail/scene_checker.hpp"
 
 #include <algorithm>
+#include <set>
 
 namespace qm::alex::detail {
 
@@ -22,6 +23,60 @@ void SceneChecker::constraints(const std::vector<ast::ConstraintEntry>& entries,
             list.push_back(std::move(*p));
         }
     }
+}
+
+namespace {
+bool is_bare(const std::vector<ast::Section>& sections, std::size_t i) {
+    return i < sections.size() && boost::get<ast::BareConstraints>(&sections[i].get()) != nullptr;
+}
+bool is_surfaces(const std::vector<ast::Section>& sections, std::size_t i) {
+    return i < sections.size() && boost::get<ast::Surfaces>(&sections[i].get()) != nullptr;
+}
+}  // namespace
+
+// Figure 6.1: `Surfaces "(" ... ")" [<translational constraints>] [<rotational constraints>]`.
+// Two lists after Surfaces are the translational, then the rotational constraints. One list is
+// whichever its directions' arity says: in 2-D a translation has 2 signs and a rotation 1; in
+// 3-D both have 3, so a lone list cannot be told and needs its keyword.
+std::optional<bool> SceneChecker::bare_kind(const std::vector<ast::Section>& sections, std::size_t i) {
+    const auto& list = boost::get<ast::BareConstraints>(sections[i].get());
+    const bool first = i > 0 && is_surfaces(sections, i - 1);
+    const bool second = i > 1 && is_bare(sections, i - 1) && is_surfaces(sections, i - 2);
+    if (!first && !second) {
+        if (i > 2 && is_bare(sections, i - 1) && is_bare(sections, i - 2) && is_surfaces(sections, i - 3))
+            cx_.error(list, "a third constraint list without its keyword after Surfaces; Figure 6.1 allows two, "
+                            "the translational and then the rotational constraints");
+        else
+            cx_.error(list, "a constraint list without its keyword must follow Surfaces (Figure 6.1: Surfaces, "
+                            "then the translational and the rotational constraints); elsewhere write "
+                            "Translational-Constraints or Rotational-Constraints before it");
+        return std::nullopt;
+    }
+    if (second) return false;
+    if (is_bare(sections, i + 1)) return true;
+    if (list.entries.empty()) return std::nullopt;  // `()`: no constraint, whichever kind it is
+    std::set<std::size_t> arities;
+    for (const auto& e : list.entries)
+        for (const auto& d : e.directions) arities.insert(d.parts.size());
+    const std::string write = "; write Translational-Constraints or Rotational-Constraints before it";
+    if (scene_.dimensions == 3) {
+        cx_.error(list, "in a 3-D scene translations and rotations both have 3 signs, so a single constraint list "
+                        "without its keyword after Surfaces could be either" + write);
+        return std::nullopt;
+    }
+    if (arities == std::set<std::size_t>{2}) return true;
+    if (arities == std::set<std::size_t>{1}) return false;
+    std::string found = "no direction";
+    if (!arities.empty()) {
+        found = "directions of ";
+        std::size_t n = 0;
+        for (std::size_t a : arities)
+            found += (n++ == 0 ? "" : n == arities.size() ? " and " : ", ") + std::to_string(a);
+        found += " signs";
+    }
+    cx_.error(list, "a single constraint list without its keyword after Surfaces is read by the arity of its "
+                    "directions (2 signs: translational, 1 sign: rotational), but this one has " + found + write);
+    return std::nullopt;
 }
 
 std::optional<Force> SceneChecker::check_force(const ast::ForceEntry& e) {

@@ -14,6 +14,7 @@
 #include "alex/scene_ast.hpp"
 #include "alex/scene_checker.hpp"
 #include "qm/diagnostics.hpp"
+#include <deque>
 #include <map>
 #include <optional>
 #include <string>
@@ -76,8 +77,14 @@ private:
     // scene_checker.cpp
     void dimensions(const ast::Dimensions& d);
     template <class T>
-    void once(const T& section, const T*& slot, std::vector<const T*>& all, const char* keyword);
+    void once(const T& section, const T*& slot, std::vector<const T*>& all, const char* keyword,
+              const std::string& reading = {});
     void collect_sections(const ast::Scenario& s);
+    // Registers a bare constraint list as the kind bare_kind decided (none: nothing to register).
+    void bare(const ast::BareConstraints& b, std::optional<bool> translational, const ast::TransConstraints*& t1,
+              const ast::RotConstraints*& r1);
+    // The closing CONTACT list of the keyword notation: the only situation, when there is no other.
+    void contact_list(const ast::Scenario& s);
     void individuals(const ast::Individuals& ind);
     void descriptions(const ast::Descriptions& d);
 
@@ -96,6 +103,11 @@ private:
     void corner_sides(const ast::CornerEntry& e, ObjectId owner, std::optional<SurfaceId> k);
 
     // scene_checker_constraints.cpp
+    // Figure 6.1's constraint lists without keywords: whether sections[i] is translational
+    // (true) or rotational (false), by its place after Surfaces, else by the arity of its
+    // directions; empty after reporting why it cannot be told, or for a lone empty list (no
+    // constraint either way).
+    std::optional<bool> bare_kind(const std::vector<ast::Section>& sections, std::size_t i);
     void constraints(const std::vector<ast::ConstraintEntry>& entries, bool translational);
     std::optional<Force> check_force(const ast::ForceEntry& e);
     void linkages(const ast::Linkages& l);
@@ -116,6 +128,9 @@ private:
     std::vector<const ast::Name*> surface_names_;  // the declaring name of each SurfaceId
     std::map<std::string, std::pair<const ast::Name*, std::optional<ObjectId>>> first_corner_;
     std::vector<const ast::Situation*> situations_;
+    // Keyworded copies of the bare constraint lists (std::deque: the pointers above stay valid).
+    std::deque<ast::TransConstraints> bare_trans_;
+    std::deque<ast::RotConstraints> bare_rot_;
 };
 
 }  // namespace qm::alex::detail
