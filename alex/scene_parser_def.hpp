@@ -1,7 +1,9 @@
 // alex/scene_parser_def.hpp
 // Provides:   the Spirit X3 grammar of Alex scenes (docs/SCENE_FORMAT.md; thesis Figure 6.1 and
-//             the notations of Figures 7.2, 7.8, 7.12, 7.16; the Corners and Linkages sections of
-//             section 3.1.1 and Definition 21), of `--given` motions and of query facts. Include
+//             the notations of Figures 7.2, 7.8, 7.12, 7.16 with their own spellings: `Name dims`
+//             headers, `(defState ...)`, `Situations {...}`, closing CONTACT lists, keyword-less
+//             constraint lists and `obj (entry*)` surface lists; the Corners and Linkages sections
+//             of section 3.1.1 and Definition 21), of `--given` motions and of query facts. Include
 //             only from scene_parser.cpp: X3's compile cost is paid in one TU.
 // Ownership:  rules are constants; per-parse state (positions, diagnostics) is injected with
 //             x3::with<state_tag>.
@@ -120,11 +122,50 @@ struct report_errors {
 };
 
 // --- lexical pieces --------------------------------------------------------------------------
-inline const auto name_char = x3::alnum | x3::char_('-') | x3::char_('_');
-inline const auto skipper = x3::space | x3::lexeme[';' >> *(x3::char_ - x3::eol) >> (x3::eol | x3::eoi)];
+// Spelled out (ASCII) rather than x3::space/alpha/alnum/digit and x3::no_case: their
+// classification requires a char in 0..UCHAR_MAX (BOOST_ASSERT), which a byte >= 0x80 in a
+// signed char is not, so any non-ASCII byte outside a comment aborted a debug build. The
+// classes below and char_/lit compare bytes and accept any input.
+inline const auto blank = x3::char_(" \t\n\r\v\f");
+inline const auto letter = x3::char_('a', 'z') | x3::char_('A', 'Z');
+inline const auto digit = x3::char_('0', '9');
+inline const auto name_char = letter | digit | x3::char_('-') | x3::char_('_');
+inline const auto skipper = blank | x3::lexeme[';' >> *(x3::char_ - x3::eol) >> (x3::eol | x3::eoi)];
 
-// A case-insensitive keyword, not followed by a name character. Pre: s is lower case.
-inline auto kw(const char* s) { return x3::lexeme[x3::no_case[x3::lit(s)] >> !name_char]; }
+// A case-insensitive keyword, not followed by a name character (ASCII case folding only).
+struct keyword_parser : x3::parser<keyword_parser> {
+    using attribute_type = x3::unused_type;
+    static const bool has_attribute = false;
+    explicit constexpr keyword_parser(const char* w) : word(w) {}
+    template <class It, class Ctx, class RCtx, class Attr>
+    bool parse(It& first, const It& last, const Ctx& ctx, RCtx&, Attr&) const {
+        x3::skip_over(first, last, ctx);
+        It it = first;
+        for (const char* p = word; *p != '\0'; ++p, ++it) {
+            if (it == last) return false;
+            const char c = *it;
+            if ((c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c) != *p) return false;
+        }
+        if (it != last) {
+            const char c = *it;
+            if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_')
+                return false;
+        }
+        first = it;
+        return true;
+    }
+    const char* word;  // lower case
+};
+// Pre: s is lower case and outlives the parser (a literal).
+inline keyword_parser kw(const char* s) { return keyword_parser(s); }
+}  // namespace qm::alex::parser
+// What an expectation failure on a bare keyword names: the keyword in quotes.
+template <>
+struct boost::spirit::x3::get_info<qm::alex::parser::keyword_parser> {
+    using result_type = std::string;
+    std::string operator()(const qm::alex::parser::keyword_parser& p) const { return std::string("'") + p.word + "'"; }
+};
+namespace qm::alex::parser {
 
 // Note: `a >> b > c` is written `(a >> b) > c` (the C++ precedence) so that clang does not warn.
 
@@ -355,15 +396,15 @@ const x3::rule<struct colon_class> colon = "':'";
 
 // A name starts with a letter; a word followed by ':' is a section keyword, never a name.
 const auto name_def = name_inner;
-const auto name_inner_def = (x3::raw[x3::lexeme[x3::alpha >> *name_char]] >> !x3::lit(':'))[store_text(&ast::Name::text)];
+const auto name_inner_def = (x3::raw[x3::lexeme[letter >> *name_char]] >> !x3::lit(':'))[store_text(&ast::Name::text)];
 // Any token up to a blank, parenthesis, comma, colon or comment: the checker judges it, so that
 // `--` or `++` get a helpful message instead of a bare syntax error.
 const auto sign_def = sign_inner;
-const auto sign_inner_def = x3::raw[x3::lexeme[+(x3::char_ - x3::space - x3::char_("(),:;"))]][store_text(&ast::SignToken::text)];
+const auto sign_inner_def = x3::raw[x3::lexeme[+(x3::char_ - blank - x3::char_("(),:;"))]][store_text(&ast::SignToken::text)];
 const auto direction_def = direction_inner;
 const auto direction_inner_def = ((x3::lit('(') >> *sign) > ')')[store(&ast::Direction::parts)];
 const auto dimensions_def = dimensions_inner;
-const auto dimensions_inner_def = x3::raw[x3::lexeme[+x3::digit >> !name_char]][store_text(&ast::Dimensions::text)];
+const auto dimensions_inner_def = x3::raw[x3::lexeme[+digit >> !name_char]][store_text(&ast::Dimensions::text)];
 
 const auto description_sx_def = (x3::lit('(') >> name) > name > ')';
 const auto description_kw_def = (name >> '(') > name > ')';
@@ -417,7 +458,8 @@ const auto descriptor_kw_def = contact_kw | force_kw | motion_kw;
 // Figure 7.2: `{}` is a situation without descriptors, `{Contact(tb block-b-l), ...}` one with.
 const auto situation_braces_def = situation_braces_inner;
 const auto situation_braces_inner_def = (x3::lit('{') > brace_items)[store(&ast::Situation::descriptors)];
-const auto brace_items_def = (x3::lit('}') >> x3::attr(std::vector<ast::Descriptor>{})) | (descriptor_kw % ',' > brace_close);
+const auto brace_items_def =
+    (x3::lit('}') >> x3::attr(std::vector<ast::Descriptor>{})) | (descriptor_kw % ',' > brace_close);
 const auto brace_close_def = x3::lit('}');
 const auto brace_situations_def = +situation_braces;
 const auto situations_braces_def = (kw("situations") >> -colon) > brace_situations;

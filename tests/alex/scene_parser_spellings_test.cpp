@@ -83,7 +83,8 @@ public:
     // The keyword notation, with Figure 7.2's `Situations {...}` and the closing CONTACT list.
     std::string keywords() {
         std::vector<std::string> sections;
-        sections.push_back("Individuals : " + (coin() ? "(" + join(object_names(), ", ") + ")" : join(object_names(), ", ")));
+        const std::string names = join(object_names(), ", ");
+        sections.push_back("Individuals : " + (coin() ? "(" + names + ")" : names));
         if (coin()) sections.push_back("Descriptions : " + join(each_object([&](const std::string& o) {
                                            return "rigid-ob" + std::string(coin() ? " " : "") + "(" + o + ")";
                                        }), ", "));
@@ -107,7 +108,8 @@ public:
                 groups.push_back(text);
             }
             if (!groups.empty())
-                sections.push_back(std::string(corners ? "Corners : " : "Surfaces : ") + join(groups, coin() ? ",\n  " : "\n  "));
+                sections.push_back(std::string(corners ? "Corners : " : "Surfaces : ") +
+                                   join(groups, coin() ? ",\n  " : "\n  "));
         }
         if (!s_.linkages.empty()) sections.push_back("Linkages : " + join(linkages(), ", "));
         if (!s_.forces.empty()) sections.push_back("Forces : " + join(forces("", ""), ", "));
@@ -226,11 +228,13 @@ private:
     }
     std::vector<std::string> linkages() const {
         std::vector<std::string> out;
-        for (const auto& l : s_.linkages) out.push_back("(" + s_.objects[l.first].name + " " + s_.objects[l.second].name + ")");
+        for (const auto& l : s_.linkages)
+            out.push_back("(" + s_.objects[l.first].name + " " + s_.objects[l.second].name + ")");
         return out;
     }
     std::string force_body(const Force& f) const {
-        std::string out = s_.objects[f.object].name + " " + print_direction(f.direction) + " " + print_direction(f.origin);
+        std::string out =
+            s_.objects[f.object].name + " " + print_direction(f.direction) + " " + print_direction(f.origin);
         if (s_.causes[f.cause].is_explicit) out += " " + s_.causes[f.cause].name;
         return out;
     }
@@ -429,7 +433,8 @@ TEST_CASE("alex/scene_parser: a closing CONTACT list (Figures 7.12, 7.16) is the
     // After a keyword-notation Forces list, with or without an explicit cause.
     for (const char* forces : {"Forces : a (0 -) (0 0)\n", "Forces : a (0 -) (0 0) hand\n"}) {
         INFO(forces);
-        CHECK(read_ok(kw + forces + "CONTACT (p q), (q r)") == read_ok(kw + forces + "Situation : Contact (p q), Contact (q r)"));
+        CHECK(read_ok(kw + forces + "CONTACT (p q), (q r)") ==
+              read_ok(kw + forces + "Situation : Contact (p q), Contact (q r)"));
     }
     // A cause named like the keyword is still a cause when no '(' follows it.
     const Scene cause = read_ok(kw + "Forces : a (0 -) (0 0) contact");
