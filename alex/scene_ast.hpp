@@ -2,7 +2,9 @@
 // Provides:   the raw AST of an Alex scene file as the parser (alex/scene_parser.hpp) produces it,
 //             before any check: names are as spelled, signs are raw tokens ("+", "--", "?x"), and
 //             sections come in source order. Both notations of docs/SCENE_FORMAT.md (s-expression,
-//             Figures 6.1/7.2/7.8, and `Keyword : items`, Figures 7.12/7.16) produce this same AST.
+//             Figures 6.1/7.2/7.8, and `Keyword : items`, Figures 7.12/7.16) produce this same AST;
+//             so do the figures' own spellings (bare constraint lists after Surfaces, brace-
+//             delimited situations, a closing CONTACT list), which are resolved by the checker.
 //             Also SourceText (a file's text with line lookup) and PositionTable, which maps each
 //             node's position tag to its byte offset so that the checker can point at the source.
 // Ownership:  plain values. Every node derives from x3::position_tagged; id_first indexes the
@@ -88,9 +90,15 @@ struct RotConstraints : x3::position_tagged { std::vector<ConstraintEntry> entri
 struct Forces : x3::position_tagged { std::vector<ForceEntry> entries; };
 struct Corners : x3::position_tagged { std::vector<ObjectCorners> entries; };
 struct Linkages : x3::position_tagged { std::vector<LinkageEntry> entries; };
-// Situation is a section only in the keyword notation (`Situation : Contact (a b), ...`).
+// A constraint list written without its keyword after Surfaces, as Figure 6.1's BNF has it
+// (`Surfaces (...) ((table (?x ?y))) ((table (?r)))`); the checker decides which kind it is.
+struct BareConstraints : x3::position_tagged { std::vector<ConstraintEntry> entries; };
+// `Situations {} {Contact(a b), ...}` (Figure 7.2) as a section of the keyword notation.
+struct SituationList : x3::position_tagged { std::vector<Situation> situations; };
+// Situation and SituationList are sections only in the keyword notation
+// (`Situation : Contact (a b), ...`); BareConstraints only in the s-expression notation.
 struct Section : x3::variant<Individuals, Descriptions, Surfaces, TransConstraints, RotConstraints, Forces, Corners,
-                             Linkages, Situation> {
+                             Linkages, Situation, BareConstraints, SituationList> {
     using base_type::base_type;
     using base_type::operator=;
 };
@@ -101,7 +109,10 @@ struct Scenario : x3::position_tagged {
     Dimensions dimensions;
     Name name;
     std::vector<Section> sections;
-    std::vector<Situation> situations;
+    std::vector<Situation> situations;    // (Defstates ...) or `Situations {...}` after the sections
+    // The keyword notation's closing `CONTACT (a b), (c d)` (Figures 7.12, 7.16): one situation,
+    // tagged at CONTACT, holding only contacts. Allowed only in a scene with no other situation.
+    boost::optional<Situation> contact_list;
 };
 
 // A query fact as written: `Rotational-Motion (follower (-))`, `Contact a b`, `Force obj`.

@@ -26,7 +26,9 @@ struct ParsedScene {
     PositionTable positions;  // locates the nodes of `scenario` in the SourceText parsed
 };
 
-// Parses either notation (a file whose first token is '(' is s-expression notation).
+// Parses either notation (a file whose first token is '(' is s-expression notation; after a
+// `Name dims` header, sections whose keyword is followed by '(' are too, as in Figures 7.2 and
+// 7.8), with the figures' and the BNF's own spellings (docs/SCENE_FORMAT.md).
 [[nodiscard]] std::optional<ParsedScene> parse_scene_ast(const SourceText& src, Diagnostics& diags);
 
 // Parses and checks a scene. `file` names the input in diagnostics.

@@ -1,7 +1,9 @@
 // alex/scene_parser_def.hpp
 // Provides:   the Spirit X3 grammar of Alex scenes (docs/SCENE_FORMAT.md; thesis Figure 6.1 and
-//             the notations of Figures 7.2, 7.8, 7.12, 7.16; the Corners and Linkages sections of
-//             section 3.1.1 and Definition 21), of `--given` motions and of query facts. Include
+//             the notations of Figures 7.2, 7.8, 7.12, 7.16 with their own spellings: `Name dims`
+//             headers, `(defState ...)`, `Situations {...}`, closing CONTACT lists, keyword-less
+//             constraint lists and `obj (entry*)` surface lists; the Corners and Linkages sections
+//             of section 3.1.1 and Definition 21), of `--given` motions and of query facts. Include
 //             only from scene_parser.cpp: X3's compile cost is paid in one TU.
 // Ownership:  rules are constants; per-parse state (positions, diagnostics) is injected with
 //             x3::with<state_tag>.
@@ -33,14 +35,22 @@ namespace qm::alex::parser {
 namespace x3 = boost::spirit::x3;
 using Iterator = std::string::const_iterator;
 
-// The keyword notation's header names the scene before its dimension count (`Gears 2`).
-struct KeywordScenario {
+// A scene with a `Name dims` header (Figures 7.2, 7.8, 7.12, 7.16) names the scene before its
+// dimension count (`Gears 2`); its body is in the keyword notation or, in Figures 7.2 and 7.8,
+// the s-expression notation's sections.
+struct SceneBody {
+    std::vector<ast::Section> sections;
+    std::vector<ast::Situation> situations;
+    boost::optional<ast::Situation> contact_list;
+};
+struct HeaderScenario {
     ast::Name name;
     ast::Dimensions dimensions;
-    std::vector<ast::Section> sections;
+    SceneBody body;
 };
 }  // namespace qm::alex::parser
-BOOST_FUSION_ADAPT_STRUCT(qm::alex::parser::KeywordScenario, name, dimensions, sections)
+BOOST_FUSION_ADAPT_STRUCT(qm::alex::parser::SceneBody, sections, situations, contact_list)
+BOOST_FUSION_ADAPT_STRUCT(qm::alex::parser::HeaderScenario, name, dimensions, body)
 
 namespace qm::alex::parser {
 
@@ -112,11 +122,50 @@ struct report_errors {
 };
 
 // --- lexical pieces --------------------------------------------------------------------------
-inline const auto name_char = x3::alnum | x3::char_('-') | x3::char_('_');
-inline const auto skipper = x3::space | x3::lexeme[';' >> *(x3::char_ - x3::eol) >> (x3::eol | x3::eoi)];
+// Spelled out (ASCII) rather than x3::space/alpha/alnum/digit and x3::no_case: their
+// classification requires a char in 0..UCHAR_MAX (BOOST_ASSERT), which a byte >= 0x80 in a
+// signed char is not, so any non-ASCII byte outside a comment aborted a debug build. The
+// classes below and char_/lit compare bytes and accept any input.
+inline const auto blank = x3::char_(" \t\n\r\v\f");
+inline const auto letter = x3::char_('a', 'z') | x3::char_('A', 'Z');
+inline const auto digit = x3::char_('0', '9');
+inline const auto name_char = letter | digit | x3::char_('-') | x3::char_('_');
+inline const auto skipper = blank | x3::lexeme[';' >> *(x3::char_ - x3::eol) >> (x3::eol | x3::eoi)];
 
-// A case-insensitive keyword, not followed by a name character. Pre: s is lower case.
-inline auto kw(const char* s) { return x3::lexeme[x3::no_case[x3::lit(s)] >> !name_char]; }
+// A case-insensitive keyword, not followed by a name character (ASCII case folding only).
+struct keyword_parser : x3::parser<keyword_parser> {
+    using attribute_type = x3::unused_type;
+    static const bool has_attribute = false;
+    explicit constexpr keyword_parser(const char* w) : word(w) {}
+    template <class It, class Ctx, class RCtx, class Attr>
+    bool parse(It& first, const It& last, const Ctx& ctx, RCtx&, Attr&) const {
+        x3::skip_over(first, last, ctx);
+        It it = first;
+        for (const char* p = word; *p != '\0'; ++p, ++it) {
+            if (it == last) return false;
+            const char c = *it;
+            if ((c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c) != *p) return false;
+        }
+        if (it != last) {
+            const char c = *it;
+            if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_')
+                return false;
+        }
+        first = it;
+        return true;
+    }
+    const char* word;  // lower case
+};
+// Pre: s is lower case and outlives the parser (a literal).
+inline keyword_parser kw(const char* s) { return keyword_parser(s); }
+}  // namespace qm::alex::parser
+// What an expectation failure on a bare keyword names: the keyword in quotes.
+template <>
+struct boost::spirit::x3::get_info<qm::alex::parser::keyword_parser> {
+    using result_type = std::string;
+    std::string operator()(const qm::alex::parser::keyword_parser& p) const { return std::string("'") + p.word + "'"; }
+};
+namespace qm::alex::parser {
 
 // Note: `a >> b > c` is written `(a >> b) > c` (the C++ precedence) so that clang does not warn.
 
@@ -144,6 +193,9 @@ QM_ALEX_RULE_ID(description_sx_class);
 QM_ALEX_RULE_ID(description_kw_class);
 QM_ALEX_RULE_ID(surface_entry_class);
 QM_ALEX_RULE_ID(object_surfaces_sx_class);
+QM_ALEX_RULE_ID(object_surfaces_paren_class);
+QM_ALEX_RULE_ID(object_surfaces_bnf_class);
+QM_ALEX_RULE_ID(bare_surface_entry_class);
 QM_ALEX_RULE_ID(object_surfaces_kw_class);
 QM_ALEX_RULE_ID(corner_entry_class);
 QM_ALEX_RULE_ID(object_corners_sx_class);
@@ -152,6 +204,7 @@ QM_ALEX_RULE_ID(linkage_entry_class);
 QM_ALEX_RULE_ID(constraint_sx_class);
 QM_ALEX_RULE_ID(constraint_kw_class);
 QM_ALEX_RULE_ID(force_body_class);
+QM_ALEX_RULE_ID(force_body_kw_class);
 QM_ALEX_RULE_ID(force_entry_sx_class);
 QM_ALEX_RULE_ID(contact_sx_class);
 QM_ALEX_RULE_ID(force_sx_class);
@@ -164,6 +217,11 @@ QM_ALEX_RULE_ID(descriptor_body_sx_class);
 QM_ALEX_RULE_ID(descriptor_kw_class);
 QM_ALEX_RULE_ID(situation_sx_class);
 QM_ALEX_RULE_ID(situation_kw_class);
+QM_ALEX_RULE_ID(situation_braces_class);
+QM_ALEX_RULE_ID(contact_pair_class);
+QM_ALEX_RULE_ID(contact_list_class);
+QM_ALEX_RULE_ID(situations_kw_class);
+QM_ALEX_RULE_ID(bare_constraints_class);
 QM_ALEX_RULE_ID(individuals_sx_class);
 QM_ALEX_RULE_ID(individuals_kw_class);
 QM_ALEX_RULE_ID(descriptions_sx_class);
@@ -184,7 +242,7 @@ QM_ALEX_RULE_ID(section_sx_class);
 QM_ALEX_RULE_ID(section_kw_class);
 QM_ALEX_RULE_ID(defstates_class);
 QM_ALEX_RULE_ID(scenario_sx_class);
-QM_ALEX_RULE_ID(keyword_scenario_class);
+QM_ALEX_RULE_ID(header_scenario_class);
 QM_ALEX_RULE_ID(scenario_kw_class);
 #undef QM_ALEX_RULE_ID
 struct scene_file_class : annotate, report_errors {};
@@ -200,6 +258,10 @@ const x3::rule<description_sx_class, ast::Description> description_sx = "an obje
 const x3::rule<description_kw_class, ast::Description> description_kw = "an object description like rigid-ob(block)";
 const x3::rule<surface_entry_class, ast::SurfaceEntry> surface_entry = "a surface entry like (top (0 +) (0 -))";
 const x3::rule<object_surfaces_sx_class, ast::ObjectSurfaces> object_surfaces_sx = "an object's surfaces";
+const x3::rule<object_surfaces_paren_class, ast::ObjectSurfaces> object_surfaces_paren = "an object's surfaces";
+const x3::rule<object_surfaces_bnf_class, ast::ObjectSurfaces> object_surfaces_bnf = "an object's surfaces";
+const x3::rule<bare_surface_entry_class, ast::SurfaceEntry> bare_surface_entry =
+    "a surface entry like top (0 +) (0 -)";
 const x3::rule<object_surfaces_kw_class, ast::ObjectSurfaces> object_surfaces_kw = "an object's surfaces";
 const x3::rule<corner_entry_class, ast::CornerEntry> corner_entry =
     "a corner entry like (tip side-1 side-2 (0 +))";
@@ -209,6 +271,7 @@ const x3::rule<linkage_entry_class, ast::LinkageEntry> linkage_entry = "a linkag
 const x3::rule<constraint_sx_class, ast::ConstraintEntry> constraint_sx = "a constraint entry like (table (?x ?y))";
 const x3::rule<constraint_kw_class, ast::ConstraintEntry> constraint_kw = "a constraint entry like table (?x ?y)";
 const x3::rule<force_body_class, ast::ForceEntry> force_body = "a force";
+const x3::rule<force_body_kw_class, ast::ForceEntry> force_body_kw = "a force";
 const x3::rule<force_entry_sx_class, ast::ForceEntry> force_entry_sx = "a force entry like (block (0 -) (0 0))";
 const x3::rule<contact_sx_class, ast::ContactEntry> contact_sx = "a contact";
 const x3::rule<force_sx_class, ast::ForceEntry> force_sx = "a force";
@@ -223,6 +286,11 @@ const x3::rule<descriptor_kw_class, ast::Descriptor> descriptor_kw =
     "a situation descriptor (Contact, Force or Motion)";
 const x3::rule<situation_sx_class, ast::Situation> situation_sx = "a situation";
 const x3::rule<situation_kw_class, ast::Situation> situation_kw = "a situation";
+const x3::rule<situation_braces_class, ast::Situation> situation_braces = "a situation like {Contact(a b)}";
+const x3::rule<contact_pair_class, ast::ContactEntry> contact_pair = "a contact like (l-1 d-1)";
+const x3::rule<contact_list_class, ast::Situation> contact_list = "a CONTACT list";
+const x3::rule<situations_kw_class, ast::SituationList> situations_kw = "Situations";
+const x3::rule<bare_constraints_class, ast::BareConstraints> bare_constraints = "a constraint list";
 const x3::rule<individuals_sx_class, ast::Individuals> individuals_sx = "Individuals";
 const x3::rule<individuals_kw_class, ast::Individuals> individuals_kw = "Individuals";
 const x3::rule<descriptions_sx_class, ast::Descriptions> descriptions_sx = "Descriptions";
@@ -243,7 +311,7 @@ const x3::rule<section_sx_class, ast::Section> section_sx = "a section";
 const x3::rule<section_kw_class, ast::Section> section_kw = "a section";
 const x3::rule<defstates_class, std::vector<ast::Situation>> defstates = "(Defstates ...)";
 const x3::rule<scenario_sx_class, ast::Scenario> scenario_sx = "(Defscenario ...)";
-const x3::rule<keyword_scenario_class, KeywordScenario> keyword_scenario = "a scene";
+const x3::rule<header_scenario_class, HeaderScenario> header_scenario = "a scene";
 const x3::rule<scenario_kw_class, ast::Scenario> scenario_kw = "a scene";
 const x3::rule<scene_file_class, ast::Scenario> scene_file = "a scene";
 const x3::rule<given_class, ast::MotionEntry> given = "a motion like 'pallet (0 0) (+)'";
@@ -258,6 +326,10 @@ const x3::rule<struct direction_inner_class, ast::Direction> direction_inner = "
 const x3::rule<struct dimensions_inner_class, ast::Dimensions> dimensions_inner = "dimensions";
 const x3::rule<struct situation_sx_inner_class, ast::Situation> situation_sx_inner = "situation sx";
 const x3::rule<struct situation_kw_inner_class, ast::Situation> situation_kw_inner = "situation kw";
+const x3::rule<struct situation_braces_inner_class, ast::Situation> situation_braces_inner = "situation braces";
+const x3::rule<struct contact_list_inner_class, ast::Situation> contact_list_inner = "contact list";
+const x3::rule<struct situations_kw_inner_class, ast::SituationList> situations_kw_inner = "situations kw";
+const x3::rule<struct bare_constraints_inner_class, ast::BareConstraints> bare_constraints_inner = "bare constraints";
 const x3::rule<struct individuals_sx_inner_class, ast::Individuals> individuals_sx_inner = "individuals sx";
 const x3::rule<struct individuals_kw_inner_class, ast::Individuals> individuals_kw_inner = "individuals kw";
 const x3::rule<struct descriptions_sx_inner_class, ast::Descriptions> descriptions_sx_inner = "descriptions sx";
@@ -294,6 +366,22 @@ const x3::rule<struct constraint_list_class, std::vector<ast::ConstraintEntry>> 
 const x3::rule<struct direction_list_class, std::vector<ast::Direction>> direction_list = "a direction like (0 +)";
 const x3::rule<struct force_list_class, std::vector<ast::ForceEntry>> force_list_kw =
     "a force like block (0 -) (0 0)";
+const x3::rule<struct brace_items_class, std::vector<ast::Descriptor>> brace_items =
+    "a situation descriptor (Contact, Force or Motion) or '}'";
+const x3::rule<struct brace_close_class> brace_close = "',' or '}'";
+const x3::rule<struct brace_situations_class, std::vector<ast::Situation>> brace_situations =
+    "a situation in braces like {} or {Contact(a b), Contact(c d)}";
+const x3::rule<struct situations_braces_class, std::vector<ast::Situation>> situations_braces = "Situations";
+const x3::rule<struct contact_pairs_class, std::vector<ast::ContactEntry>> contact_pairs = "a contact like (l-1 d-1)";
+const x3::rule<struct contact_list_end_class> contact_list_end =
+    "end of input (a CONTACT list ends the scene; more situations are written 'Situation : ...')";
+const x3::rule<struct sx_states_class, std::vector<ast::Situation>> sx_states = "(Defstates ...)";
+const x3::rule<struct figure_tail_class, std::vector<ast::Situation>> figure_tail =
+    "a section keyword (Individuals, Descriptions, Surfaces, Corners, Translational-Constraints, "
+    "Rotational-Constraints, Forces, Linkages), '(Defstates', 'Situations' or end of input";
+const x3::rule<struct figure_body_class, SceneBody> figure_body = "a section";
+const x3::rule<struct keyword_body_class, SceneBody> keyword_body = "a section";
+const x3::rule<struct scene_body_class, SceneBody> scene_body = "a section";
 const x3::rule<struct linkage_list_class, std::vector<ast::LinkageEntry>> linkage_list_kw =
     "a linkage like (gear-a gear-b)";
 const x3::rule<struct defscenario_kw_class> defscenario_kw = "'Defscenario'";
@@ -308,29 +396,41 @@ const x3::rule<struct colon_class> colon = "':'";
 
 // A name starts with a letter; a word followed by ':' is a section keyword, never a name.
 const auto name_def = name_inner;
-const auto name_inner_def = (x3::raw[x3::lexeme[x3::alpha >> *name_char]] >> !x3::lit(':'))[store_text(&ast::Name::text)];
+const auto name_inner_def = (x3::raw[x3::lexeme[letter >> *name_char]] >> !x3::lit(':'))[store_text(&ast::Name::text)];
 // Any token up to a blank, parenthesis, comma, colon or comment: the checker judges it, so that
 // `--` or `++` get a helpful message instead of a bare syntax error.
 const auto sign_def = sign_inner;
-const auto sign_inner_def = x3::raw[x3::lexeme[+(x3::char_ - x3::space - x3::char_("(),:;"))]][store_text(&ast::SignToken::text)];
+const auto sign_inner_def = x3::raw[x3::lexeme[+(x3::char_ - blank - x3::char_("(),:;"))]][store_text(&ast::SignToken::text)];
 const auto direction_def = direction_inner;
 const auto direction_inner_def = ((x3::lit('(') >> *sign) > ')')[store(&ast::Direction::parts)];
 const auto dimensions_def = dimensions_inner;
-const auto dimensions_inner_def = x3::raw[x3::lexeme[+x3::digit >> !name_char]][store_text(&ast::Dimensions::text)];
+const auto dimensions_inner_def = x3::raw[x3::lexeme[+digit >> !name_char]][store_text(&ast::Dimensions::text)];
 
 const auto description_sx_def = (x3::lit('(') >> name) > name > ')';
 const auto description_kw_def = (name >> '(') > name > ')';
 const auto surface_entry_def = (x3::lit('(') >> name) > direction > direction > ')';
-const auto object_surfaces_sx_def = (x3::lit('(') >> name) > *surface_entry > ')';
-// A group starts with an object name; the situation words are not taken as one, so that the
-// figures' `CONTACT (a b)` is reported as a misplaced keyword rather than a surface group.
-const auto object_surfaces_kw_def = (!(kw("contact") | kw("force") | kw("motion")) >> name) > surface_list_kw;
-const auto surface_list_kw_def = surface_entry % ',';
+// Figure 6.1: `<name> "(" <surface entry>* ")"` with `<surface entry> ::= <name> <dir> <dir>`;
+// the figures (7.2, 7.8) put each object's group and each entry in parentheses instead. A group
+// starting with '(' is the figures' form, one starting with a name the BNF's; inside the BNF's
+// group an entry is parenthesised when it starts with '(' and bare when it starts with a name.
+const auto object_surfaces_sx_def = object_surfaces_paren | object_surfaces_bnf;
+const auto object_surfaces_paren_def = (x3::lit('(') >> name) > *surface_entry > ')';
+const auto object_surfaces_bnf_def = (name >> '(') > *(surface_entry | bare_surface_entry) > ')';
+const auto bare_surface_entry_def = name > direction > direction;
+// Words that end a keyword-notation group list rather than start a group: the situation words
+// (so that a closing `CONTACT (a b)` is a CONTACT list and `Force`/`Motion` a misplaced
+// keyword), and `Situations` (Figure 7.2) unless a group's '(' follows it. A word followed by
+// ':' is never a name anyway.
+const auto list_stop = kw("contact") | kw("force") | kw("motion") | (kw("situations") >> !x3::lit('('));
+const auto object_surfaces_kw_def = (!list_stop >> name) > surface_list_kw;
+// The comma between two entries of one object may be left out (Figure 7.12 breaks a line
+// there without one): an entry starts with '(', the next object's group with its name.
+const auto surface_list_kw_def = surface_entry % -x3::lit(',');
 // Corners (section 3.1.1, Definition 18): grouped by object like Surfaces. Inside either list
 // a '(' can only open a corner entry, so the entry commits at its '('.
 const auto corner_entry_def = x3::lit('(') > name > name > name > direction > ')';
 const auto object_corners_sx_def = (x3::lit('(') >> name) > *corner_entry > ')';
-const auto object_corners_kw_def = (!(kw("contact") | kw("force") | kw("motion")) >> name) > corner_list_kw;
+const auto object_corners_kw_def = (!list_stop >> name) > corner_list_kw;
 const auto corner_list_kw_def = corner_entry % ',';
 // Linkages (Definition 21): a pair of objects.
 const auto linkage_entry_def = x3::lit('(') > name > name > ')';
@@ -339,18 +439,40 @@ const auto constraint_kw_def = name > direction_list;
 const auto direction_list_def = +direction;
 const auto force_body_def = name > direction > direction > -name;
 const auto force_entry_sx_def = (x3::lit('(') >> force_body) > ')';
+// In the keyword notation's Forces list the optional cause is not taken from a closing
+// `CONTACT (` or from `Situations {`, which follow the list.
+const auto force_body_kw_def =
+    name > direction > direction > -(!((kw("contact") >> '(') | (kw("situations") >> -x3::lit(':') >> '{')) >> name);
 
 const auto contact_sx_def = kw("contact") > name > name;
 const auto force_sx_def = kw("force") > force_body;
 const auto motion_sx_def = kw("motion") > name > direction > direction;
 const auto descriptor_body_sx_def = contact_sx | force_sx | motion_sx;
 const auto descriptor_sx_def = x3::lit('(') > descriptor_body_sx > ')';
-const auto situation_sx_def = situation_sx_inner;
+const auto situation_sx_def = situation_sx_inner | situation_braces;
 const auto situation_sx_inner_def = ((x3::lit('(') >> *descriptor_sx) > ')')[store(&ast::Situation::descriptors)];
 const auto contact_kw_def = kw("contact") > '(' > name > name > ')';
 const auto force_kw_def = kw("force") > '(' > force_body > ')';
 const auto motion_kw_def = kw("motion") > '(' > name > direction > direction > ')';
 const auto descriptor_kw_def = contact_kw | force_kw | motion_kw;
+// Figure 7.2: `{}` is a situation without descriptors, `{Contact(tb block-b-l), ...}` one with.
+const auto situation_braces_def = situation_braces_inner;
+const auto situation_braces_inner_def = (x3::lit('{') > brace_items)[store(&ast::Situation::descriptors)];
+const auto brace_items_def =
+    (x3::lit('}') >> x3::attr(std::vector<ast::Descriptor>{})) | (descriptor_kw % ',' > brace_close);
+const auto brace_close_def = x3::lit('}');
+const auto brace_situations_def = +situation_braces;
+const auto situations_braces_def = (kw("situations") >> -colon) > brace_situations;
+const auto situations_kw_def = situations_kw_inner;
+const auto situations_kw_inner_def = situations_braces[store(&ast::SituationList::situations)];
+// Figures 7.12 and 7.16 end with `CONTACT (l-1 d-1)`, `CONTACT (a b), (c d)`: one situation.
+const auto contact_pair_def = x3::lit('(') > name > name > ')';
+const auto contact_pairs_def = contact_pair % ',';
+const auto contact_list_def = contact_list_inner;
+const auto contact_list_inner_def = (kw("contact") > contact_pairs > contact_list_end)[([](auto& ctx) {
+    for (auto& c : x3::_attr(ctx)) x3::_val(ctx).descriptors.emplace_back(std::move(c));
+})];
+const auto contact_list_end_def = x3::eoi;
 const auto situation_kw_def = situation_kw_inner;
 const auto situation_kw_inner_def =
     (kw("situation") > colon > -(descriptor_kw % ','))[([](auto& ctx) {
@@ -369,7 +491,7 @@ const auto description_list_kw_def = description_kw % ',';
 const auto surface_groups_kw_def = object_surfaces_kw % -x3::lit(',');
 const auto corner_groups_kw_def = object_corners_kw % -x3::lit(',');
 const auto constraint_list_kw_def = constraint_kw % ',';
-const auto force_list_kw_def = force_body % ',';
+const auto force_list_kw_def = force_body_kw % ',';
 const auto linkage_list_kw_def = linkage_entry % ',';
 const auto descriptions_sx_def = descriptions_sx_inner;
 const auto descriptions_sx_inner_def = (kw("descriptions") > '(' > *description_sx > ')')[store(&ast::Descriptions::entries)];
@@ -399,11 +521,20 @@ const auto linkages_sx_def = linkages_sx_inner;
 const auto linkages_sx_inner_def = (kw("linkages") > '(' > *linkage_entry > ')')[store(&ast::Linkages::entries)];
 const auto linkages_kw_def = linkages_kw_inner;
 const auto linkages_kw_inner_def = (kw("linkages") > colon > linkage_list_kw)[store(&ast::Linkages::entries)];
+// Figure 6.1 gives the constraint sections without keywords: a list of constraint entries
+// (`((table (?x ?y)))`, or `()`) after Surfaces. `(` followed by `(` or `)` can be nothing else.
+const auto bare_constraints_def = bare_constraints_inner;
+const auto bare_constraints_inner_def =
+    (((x3::lit('(') >> &(x3::lit('(') | x3::lit(')'))) > *constraint_sx) > ')')[store(&ast::BareConstraints::entries)];
 
-const auto section_sx_def =
-    individuals_sx | descriptions_sx | surfaces_sx | corners_sx | trans_sx | rot_sx | forces_sx | linkages_sx;
+const auto section_sx_def = individuals_sx | descriptions_sx | surfaces_sx | corners_sx | trans_sx | rot_sx |
+                            forces_sx | linkages_sx | bare_constraints;
 const auto section_kw_def = individuals_kw | descriptions_kw | surfaces_kw | corners_kw | trans_kw | rot_kw | forces_kw |
-                            linkages_kw | situation_kw;
+                            linkages_kw | situation_kw | situations_kw;
+// A section keyword directly followed by '(' starts the s-expression notation's sections.
+const auto sx_section_start = (kw("individuals") | kw("descriptions") | kw("surfaces") | kw("corners") |
+                               kw("translational-constraints") | kw("rotational-constraints") | kw("forces") |
+                               kw("linkages")) >> '(';
 
 const auto defscenario_kw_def = kw("defscenario");
 const auto sx_section_end_def = x3::lit(')');
@@ -411,16 +542,29 @@ const auto kw_section_end_def = x3::eoi;
 const auto end_of_input_def = x3::eoi;
 const auto colon_def = x3::lit(':');
 
-const auto defstates_def = (x3::lit('(') >> kw("defstates")) > *situation_sx > ')';
+// Figure 7.8 writes `(defState (...))`: Defstate is the same keyword as Defstates.
+const auto defstates_def = (x3::lit('(') >> (kw("defstates") | kw("defstate"))) > *situation_sx > ')';
+// The situations after the scenario: `(Defstates ...)`, `Situations {...} ...` (Figure 7.2), or none.
+const auto sx_states_def = defstates | situations_braces | x3::attr(std::vector<ast::Situation>{});
 const auto scenario_sx_def = x3::lit('(') > defscenario_kw > dimensions > name > *section_sx > sx_section_end >
-                             (defstates | x3::attr(std::vector<ast::Situation>{})) > end_of_input;
-const auto keyword_scenario_def = name > dimensions > *section_kw > kw_section_end;
-const auto scenario_kw_def = keyword_scenario[([](auto& ctx) {
-    KeywordScenario& k = x3::_attr(ctx);
+                             sx_states > end_of_input;
+// After a `Name dims` header: the s-expression notation's sections when the first section
+// keyword is followed by '(' (Figures 7.2, 7.8), else the keyword notation.
+const auto figure_body_def = (&sx_section_start >> *section_sx) > figure_tail >
+                             x3::attr(boost::optional<ast::Situation>{});
+const auto figure_tail_def = ((defstates | situations_braces) > end_of_input) |
+                             (x3::eoi >> x3::attr(std::vector<ast::Situation>{}));
+const auto keyword_body_def = *section_kw > x3::attr(std::vector<ast::Situation>{}) > -contact_list > kw_section_end;
+const auto scene_body_def = figure_body | keyword_body;
+const auto header_scenario_def = name > dimensions > scene_body;
+const auto scenario_kw_def = header_scenario[([](auto& ctx) {
+    HeaderScenario& k = x3::_attr(ctx);
     ast::Scenario& s = x3::_val(ctx);
     s.name = std::move(k.name);
     s.dimensions = std::move(k.dimensions);
-    s.sections = std::move(k.sections);
+    s.sections = std::move(k.body.sections);
+    s.situations = std::move(k.body.situations);
+    s.contact_list = std::move(k.body.contact_list);
 })];
 const auto scene_file_def = (&x3::lit('(') >> scenario_sx) | scenario_kw;
 
@@ -428,17 +572,23 @@ const auto given_def = name > direction > direction > end_of_input;
 // The parentheses around the arguments are optional; balance is checked before parsing.
 const auto query_def = name > -x3::lit('(') > name > -name > -direction > -x3::lit(')') > end_of_input;
 
-BOOST_SPIRIT_DEFINE(name_inner, sign_inner, direction_inner, dimensions_inner, situation_sx_inner, situation_kw_inner, individuals_sx_inner, individuals_kw_inner, descriptions_sx_inner, descriptions_kw_inner, surfaces_sx_inner, surfaces_kw_inner, trans_sx_inner, trans_kw_inner, rot_sx_inner, rot_kw_inner, forces_sx_inner, forces_kw_inner, corners_sx_inner, corners_kw_inner, linkages_sx_inner, linkages_kw_inner)
+BOOST_SPIRIT_DEFINE(name_inner, sign_inner, direction_inner, dimensions_inner, situation_sx_inner, situation_kw_inner,
+                    situation_braces_inner, contact_list_inner, situations_kw_inner, bare_constraints_inner,
+                    individuals_sx_inner, individuals_kw_inner, descriptions_sx_inner, descriptions_kw_inner, surfaces_sx_inner, surfaces_kw_inner, trans_sx_inner, trans_kw_inner, rot_sx_inner, rot_kw_inner, forces_sx_inner, forces_kw_inner, corners_sx_inner, corners_kw_inner, linkages_sx_inner, linkages_kw_inner)
 BOOST_SPIRIT_DEFINE(name, sign, direction, dimensions, description_sx, description_kw, surface_entry,
-                    object_surfaces_sx, object_surfaces_kw, constraint_sx, constraint_kw, force_body,
+                    object_surfaces_sx, object_surfaces_paren, object_surfaces_bnf, bare_surface_entry,
+                    object_surfaces_kw, constraint_sx, constraint_kw, force_body, force_body_kw,
                     force_entry_sx, contact_sx, force_sx, motion_sx, contact_kw, force_kw, motion_kw,
                     descriptor_sx, descriptor_body_sx, descriptor_kw, situation_sx, situation_kw, corner_entry,
-                    object_corners_sx, object_corners_kw, linkage_entry)
+                    object_corners_sx, object_corners_kw, linkage_entry, situation_braces, contact_pair,
+                    contact_list, situations_kw, bare_constraints)
 BOOST_SPIRIT_DEFINE(individuals_sx, individuals_kw, descriptions_sx, descriptions_kw, surfaces_sx, surfaces_kw,
                     trans_sx, trans_kw, rot_sx, rot_kw, forces_sx, forces_kw, corners_sx, corners_kw, linkages_sx,
                     linkages_kw, section_sx, section_kw,
                     name_list, name_items, description_list_kw, surface_groups_kw, surface_list_kw, corner_groups_kw,
                     corner_list_kw, constraint_list_kw, direction_list, force_list_kw, linkage_list_kw, defscenario_kw, sx_section_end, kw_section_end, end_of_input, colon, defstates,
-                    scenario_sx, keyword_scenario, scenario_kw, scene_file, given, query)
+                    scenario_sx, header_scenario, scenario_kw, scene_file, given, query, brace_items, brace_close,
+                    brace_situations, situations_braces, contact_pairs, contact_list_end, sx_states, figure_tail,
+                    figure_body, keyword_body, scene_body)
 
 }  // namespace qm::alex::parser

@@ -4,6 +4,13 @@
 // error was reported; a syntax error's "expected X" names X in words (no mangled X3 type name);
 // a checked scene (with its corners and linkages) re-read from either printed notation is equal
 // to itself.
+// Assertions on, whatever the build type (RelWithDebInfo defines NDEBUG): BOOST_ASSERT guards
+// Spirit's preconditions (a 2026-11-23 replay of the corpus in a debug build found any byte >= 0x80
+// aborting the parser), and QM_ASSERT the scene model's. Before any include, so that all see it.
+#undef NDEBUG
+#ifndef QM_ENABLE_ASSERTS
+#define QM_ENABLE_ASSERTS 1
+#endif
 #include "alex/scene_parser.hpp"
 #include "alex/scene_printer.hpp"
 
@@ -12,6 +19,10 @@
 // instruments them; the linker then takes no object from libqm_alex.a for these symbols.
 #include "alex/scene.cpp"
 #include "alex/scene_checker.cpp"
+#include "alex/scene_checker_constraints.cpp"
+#include "alex/scene_checker_directions.cpp"
+#include "alex/scene_checker_situations.cpp"
+#include "alex/scene_checker_surfaces.cpp"
 #include "alex/scene_parser.cpp"
 #include "alex/scene_printer.cpp"
 
