@@ -12,6 +12,7 @@
 // Knows nothing of the checked model (alex/scene.hpp) or of mechanics.
 #pragma once
 #include "qm/diagnostics.hpp"
+#include "qm/source_text.hpp"
 #include <boost/optional.hpp>
 #include <boost/spirit/home/x3/support/ast/position_tagged.hpp>
 #include <boost/spirit/home/x3/support/ast/variant.hpp>
@@ -22,40 +23,8 @@
 
 namespace qm::alex {
 
-// The text of one input (a file, or a command-line argument), with 1-based line/column lookup.
-class SourceText {
-public:
-    SourceText(std::string file, std::string text) : file_(std::move(file)), text_(std::move(text)) {
-        line_starts_.push_back(0);
-        for (std::size_t i = 0; i < text_.size(); ++i)
-            if (text_[i] == '\n') line_starts_.push_back(i + 1);
-    }
-    [[nodiscard]] const std::string& file() const noexcept { return file_; }
-    [[nodiscard]] const std::string& text() const noexcept { return text_; }
-    [[nodiscard]] SourceLocation locate(std::size_t offset) const {
-        const std::size_t line = line_index(offset);
-        return {file_, static_cast<std::uint32_t>(line + 1),
-                static_cast<std::uint32_t>(std::min(offset, text_.size()) - line_starts_[line] + 1)};
-    }
-    // The whole line holding `offset`, without its newline (for the caret display).
-    [[nodiscard]] std::string line_at(std::size_t offset) const {
-        const std::size_t line = line_index(offset);
-        const std::size_t b = line_starts_[line];
-        std::size_t e = text_.find('\n', b);
-        if (e == std::string::npos) e = text_.size();
-        if (e > b && text_[e - 1] == '\r') --e;
-        return text_.substr(b, e - b);
-    }
-
-private:
-    [[nodiscard]] std::size_t line_index(std::size_t offset) const {
-        auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), std::min(offset, text_.size()));
-        return static_cast<std::size_t>(it - line_starts_.begin()) - 1;
-    }
-    std::string file_;
-    std::string text_;
-    std::vector<std::size_t> line_starts_;
-};
+// The text of one input with line/column lookup (shared by every reader of the project).
+using SourceText = qm::SourceText;
 
 namespace ast {
 namespace x3 = boost::spirit::x3;

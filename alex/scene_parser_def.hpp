@@ -12,6 +12,7 @@
 //             diagnostic (report_errors) and fail, so no exception escapes a parse.
 #pragma once
 #include "alex/scene_ast.hpp"
+#include "qm/x3_ascii.hpp"
 #include "qm/diagnostics.hpp"
 #include <boost/fusion/include/adapt_struct.hpp>
 #include <boost/spirit/home/x3.hpp>
@@ -122,50 +123,14 @@ struct report_errors {
 };
 
 // --- lexical pieces --------------------------------------------------------------------------
-// Spelled out (ASCII) rather than x3::space/alpha/alnum/digit and x3::no_case: their
-// classification requires a char in 0..UCHAR_MAX (BOOST_ASSERT), which a byte >= 0x80 in a
-// signed char is not, so any non-ASCII byte outside a comment aborted a debug build. The
-// classes below and char_/lit compare bytes and accept any input.
-inline const auto blank = x3::char_(" \t\n\r\v\f");
-inline const auto letter = x3::char_('a', 'z') | x3::char_('A', 'Z');
-inline const auto digit = x3::char_('0', '9');
-inline const auto name_char = letter | digit | x3::char_('-') | x3::char_('_');
+// ASCII classes and case-insensitive keywords (qm/x3_ascii.hpp: x3's own classes abort on bytes
+// >= 0x80 in a debug build). The skipper also skips `;` comments.
+using x3_ascii::blank;
+using x3_ascii::digit;
+using x3_ascii::kw;
+using x3_ascii::letter;
+using x3_ascii::name_char;
 inline const auto skipper = blank | x3::lexeme[';' >> *(x3::char_ - x3::eol) >> (x3::eol | x3::eoi)];
-
-// A case-insensitive keyword, not followed by a name character (ASCII case folding only).
-struct keyword_parser : x3::parser<keyword_parser> {
-    using attribute_type = x3::unused_type;
-    static const bool has_attribute = false;
-    explicit constexpr keyword_parser(const char* w) : word(w) {}
-    template <class It, class Ctx, class RCtx, class Attr>
-    bool parse(It& first, const It& last, const Ctx& ctx, RCtx&, Attr&) const {
-        x3::skip_over(first, last, ctx);
-        It it = first;
-        for (const char* p = word; *p != '\0'; ++p, ++it) {
-            if (it == last) return false;
-            const char c = *it;
-            if ((c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c) != *p) return false;
-        }
-        if (it != last) {
-            const char c = *it;
-            if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_')
-                return false;
-        }
-        first = it;
-        return true;
-    }
-    const char* word;  // lower case
-};
-// Pre: s is lower case and outlives the parser (a literal).
-inline keyword_parser kw(const char* s) { return keyword_parser(s); }
-}  // namespace qm::alex::parser
-// What an expectation failure on a bare keyword names: the keyword in quotes.
-template <>
-struct boost::spirit::x3::get_info<qm::alex::parser::keyword_parser> {
-    using result_type = std::string;
-    std::string operator()(const qm::alex::parser::keyword_parser& p) const { return std::string("'") + p.word + "'"; }
-};
-namespace qm::alex::parser {
 
 // Note: `a >> b > c` is written `(a >> b) > c` (the C++ precedence) so that clang does not warn.
 

@@ -1,6 +1,7 @@
 // cli/query_text.cpp: the JSON spelling of a query, read with Boost.Spirit X3.
 #include "query_text.hpp"
 #include <boost/fusion/include/adapt_struct.hpp>
+#include "qm/x3_ascii.hpp"
 #include <boost/spirit/home/x3.hpp>
 #include <algorithm>
 
@@ -26,7 +27,7 @@ std::optional<Entry> parse_json(std::string_view text, std::size_t& error_at, st
         x3::lit('{') >> x3::lit("\"freedom\"")[flag] > ':' > x3::lit('{') > json_string[set(e.object)] > ':' > inner > '}' > '}';
     auto first = text.begin();
     try {
-        if (x3::phrase_parse(first, text.end(), (freedom | motion) > x3::eoi, x3::space)) return e;
+        if (x3::phrase_parse(first, text.end(), (freedom | motion) > x3::eoi, qm::x3_ascii::blank)) return e;
         error_at = static_cast<std::size_t>(first - text.begin());
         expected = "a JSON entry like {\"follower\": {\"rotation\": \"(-)\"}}";
     } catch (const x3::expectation_failure<std::string_view::const_iterator>& f) {

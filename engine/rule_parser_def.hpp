@@ -12,6 +12,7 @@
 //             column 1 (bol), and such a keyword ends whatever is open before it (term lists,
 //             consequent lists), so an unclosed parenthesis is reported at the next item at the latest.
 #pragma once
+#include "qm/x3_ascii.hpp"
 #include "engine/rule_parser.hpp"
 #include "engine/rule_parser_ast.hpp"
 #include "engine/rule_parser_error_handler.hpp"
@@ -109,12 +110,13 @@ inline const deeper_parser deeper{};
 inline const shallower_parser shallower{};
 
 // --- lexical pieces ----------------------------------------------------------------------------
-// Spelled out rather than x3::space/x3::alpha, which follow the C locale's classification.
-inline const auto blank = x3::char_(" \t\n\r\v\f");
+// ASCII classes (qm/x3_ascii.hpp) rather than x3::space/x3::alpha, which follow the C library's
+// classification and abort on bytes >= 0x80 in a debug build.
+using x3_ascii::blank;
+using x3_ascii::digit;
+using x3_ascii::letter;
 inline const auto skipper = blank | (x3::lit('#') >> *(x3::char_ - x3::lit('\n')));
 inline const auto word_char = ~x3::char_("()[]{}:#\" \t\n\r\v\f");
-inline const auto digit = x3::char_('0', '9');
-inline const auto letter = x3::char_('a', 'z') | x3::char_('A', 'Z');
 inline const auto sign_char = x3::char_('+') | x3::char_('0') | x3::char_('-') | x3::char_('?');
 inline const auto integer_ahead = x3::lexeme[-x3::lit('-') >> +digit >> !word_char];
 

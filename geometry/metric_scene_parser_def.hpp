@@ -8,6 +8,7 @@
 //             offset; the top-level rules turn the first expectation failure into one located
 //             diagnostic (`expected ... but found ...`) and fail, so no exception escapes.
 #pragma once
+#include "qm/x3_ascii.hpp"
 #include "geometry/metric_scene_ast.hpp"
 #include "geometry/metric_source.hpp"
 #include "qm/diagnostics.hpp"
@@ -121,11 +122,13 @@ struct report_errors {
 };
 
 // --- lexical pieces --------------------------------------------------------------------------
-inline const auto name_char = x3::alnum | x3::char_('-') | x3::char_('_');
-inline const auto skipper = x3::space | x3::lexeme[';' >> *(x3::char_ - x3::eol) >> (x3::eol | x3::eoi)];
+// ASCII classes (qm/x3_ascii.hpp): x3::space/alpha/alnum/no_case abort on bytes >= 0x80 in a
+// debug build; these compare bytes, so a non-ASCII byte is a located syntax error.
+using x3_ascii::name_char;
+inline const auto skipper = x3_ascii::blank | x3::lexeme[';' >> *(x3::char_ - x3::eol) >> (x3::eol | x3::eoi)];
 
 // A case-insensitive keyword, not followed by a name character. Pre: s is lower case.
-inline auto kw(const char* s) { return x3::lexeme[x3::no_case[x3::lit(s)] >> !name_char]; }
+using x3_ascii::kw;
 
 template <class Node>
 inline auto store_text(std::string Node::*member) {
@@ -244,11 +247,11 @@ const x3::rule<struct eoi_class> end_of_input = "end of input";
 const x3::rule<struct sense_class, ast::Name> sense = "ccw or cw";
 
 const auto name_def = name_inner;
-const auto name_inner_def = x3::raw[x3::lexeme[x3::alpha >> *name_char]][store_text(&ast::Name::text)];
+const auto name_inner_def = x3::raw[x3::lexeme[x3_ascii::letter >> *name_char]][store_text(&ast::Name::text)];
 const auto number_def = number_inner;
 const auto number_inner_def = x3::double_[([](auto& ctx) { x3::_val(ctx).value = x3::_attr(ctx); })];
 const auto sign_def = sign_inner;
-const auto sign_inner_def = x3::raw[x3::lexeme[+(x3::char_ - x3::space - x3::char_("();"))]][store_text(&ast::SignToken::text)];
+const auto sign_inner_def = x3::raw[x3::lexeme[+(x3::char_ - x3_ascii::blank - x3::char_("();"))]][store_text(&ast::SignToken::text)];
 const auto point_def = (x3::lit('(') >> number) > number > close;
 
 const auto sense_def = kwname("ccw") | kwname("cw");

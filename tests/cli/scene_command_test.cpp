@@ -213,4 +213,9 @@ TEST_CASE("cli/scene_command: bad input is located and exits with 2") {
     CHECK(qm_atms(scene("block.def") + " --without 'Translational-Motion (block (0 -))'").status == 2);
     CHECK(qm_atms(scene("block.def") + " --given 'block (0 -)'").status == 2);
     CHECK(qm_atms(scene("block.def") + " --why").status == 2);
+    // Non-ASCII bytes in a query, in either spelling, are bad input, not a crash.
+    Result minus = qm_atms(scene("block.def") + " --why 'Translational-Motion (block (0 \xe2\x88\x92))'");
+    CHECK(minus.status == 2);
+    CHECK(minus.err.find("--why:1:") != std::string::npos);
+    CHECK(qm_atms(scene("block.def") + " --why '{\"block\": {\"translation\": \"(0 \xff)\"}}'").status == 2);
 }

@@ -155,3 +155,25 @@ TEST_CASE("geometry/metric_scene_parser: a fixed part has no coordinate") {
     d.print(os);
     CHECK(os.str() == "CONFIG:1:1: error: part 'table' is fixed: it has no coordinate\n  table=1\n  ^\n");
 }
+
+TEST_CASE("geometry/metric_scene_parser: non-ASCII bytes are located errors, never an abort") {
+    // Boost.Spirit's own character classes assert on bytes >= 0x80 in a debug build; the reader
+    // classifies ASCII itself (qm/x3_ascii.hpp). Every such byte, in several places of a valid scene
+    // and of a CONFIG, must give a located error (or be inside a comment), never crash.
+    const std::string scene = slurp(source_dir / "scenarios/metric/cam.def");
+    const Mechanism m = read_ok("cam.def");
+    for (int b = 0x80; b <= 0xff; ++b) {
+        const char c = static_cast<char>(b);
+        for (std::size_t at : {std::size_t{0}, scene.find("Parts"), scene.find("(cam") + 1, scene.size() / 2, scene.size()}) {
+            std::string text = scene;
+            text.insert(std::min(at, text.size()), 1, c);
+            qm::Diagnostics d;
+            auto r = read_mechanism("bytes.def", text, d);
+            CHECK(r.has_value() != d.has_errors());
+        }
+        qm::Diagnostics d;
+        auto q = parse_configuration(m, std::string("cam=") + c + "3", d);
+        CHECK_FALSE(q.has_value());
+        CHECK(d.has_errors());
+    }
+}
