@@ -24,7 +24,7 @@ std::optional<Entry> parse_json(std::string_view text, std::size_t& error_at, st
     const auto inner = x3::lit('{') > json_string[set(e.kind)] > ':' > json_string[set(e.direction)] > '}';
     const auto motion = x3::lit('{') > json_string[set(e.object)] > ':' > inner > '}';
     const auto freedom =
-        x3::lit('{') >> x3::lit("\"freedom\"")[flag] > ':' > x3::lit('{') > json_string[set(e.object)] > ':' > inner > '}' > '}';
+        (x3::lit('{') >> x3::lit("\"freedom\"")[flag]) > ':' > x3::lit('{') > json_string[set(e.object)] > ':' > inner > '}' > '}';
     auto first = text.begin();
     try {
         if (x3::phrase_parse(first, text.end(), (freedom | motion) > x3::eoi, qm::x3_ascii::blank)) return e;
