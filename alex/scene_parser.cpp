@@ -5,42 +5,12 @@
 #include "alex/scene_checker.hpp"
 #include "alex/scene_parser_def.hpp"
 
+#include "qm/sexpr_text.hpp"
 #include <fstream>
 #include <sstream>
 
 namespace qm::alex {
 namespace {
-
-// Parentheses are checked before X3 runs, so that an unbalanced file gets a message about the
-// parenthesis itself (at the ')' without partner, or at the innermost '(' left open) rather
-// than a confusing "expected ..." further on. `;` comments are skipped.
-bool balanced(const SourceText& src, Diagnostics& diags) {
-    const std::string& t = src.text();
-    std::vector<std::size_t> open;
-    bool ok = true;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-        if (t[i] == ';') {
-            while (i < t.size() && t[i] != '\n') ++i;
-        } else if (t[i] == '(') {
-            open.push_back(i);
-        } else if (t[i] == ')') {
-            if (open.empty()) {
-                diags.error(src.locate(i), "unbalanced parentheses: this ')' closes nothing", src.line_at(i));
-                ok = false;
-            } else {
-                open.pop_back();
-            }
-        }
-    }
-    if (!open.empty()) {
-        const std::size_t i = open.back();
-        diags.error(src.locate(i), "unbalanced parentheses: this '(' is never closed (" +
-                                       std::to_string(open.size()) + " unclosed in all)",
-                    src.line_at(i));
-        ok = false;
-    }
-    return ok;
-}
 
 // Runs one top-level rule over the whole text. False (after reporting) on any syntax error.
 template <class Rule, class Attr>
@@ -51,7 +21,7 @@ bool run(const Rule& rule, const std::string& what, const SourceText& src, Posit
         diags.error(src.locate(0), "empty input: expected " + what);
         return false;
     }
-    if (!balanced(src, diags)) return false;
+    if (!qm::sexpr::check_parentheses(src, diags)) return false;
     parser::ParseState st{t.begin(), &positions, &diags, &src, false};
     auto first = t.begin();
     bool ok = false;

@@ -12,6 +12,7 @@
 //             diagnostic (report_errors) and fail, so no exception escapes a parse.
 #pragma once
 #include "alex/scene_ast.hpp"
+#include "qm/sexpr_text.hpp"
 #include "qm/x3_ascii.hpp"
 #include "qm/diagnostics.hpp"
 #include <boost/fusion/include/adapt_struct.hpp>
@@ -64,33 +65,10 @@ struct ParseState {
 };
 struct state_tag;
 
-// Skips blanks and `;` comments (to end of line) from offset i.
-inline std::size_t skip_blanks(const std::string& t, std::size_t i) {
-    while (i < t.size()) {
-        if (std::isspace(static_cast<unsigned char>(t[i]))) {
-            ++i;
-        } else if (t[i] == ';') {
-            while (i < t.size() && t[i] != '\n') ++i;
-        } else {
-            break;
-        }
-    }
-    return i;
-}
+using sexpr::skip_blanks;
+inline std::string token_at(const std::string& t, std::size_t i) { return sexpr::token_at(t, i, "(),:"); }
 
-// The token starting at offset i, quoted, for "but found ..." (or "end of input").
-inline std::string token_at(const std::string& t, std::size_t i) {
-    if (i >= t.size()) return "end of input";
-    if (std::string_view("(),:").find(t[i]) != std::string_view::npos) return std::string("'") + t[i] + "'";
-    std::size_t e = i;
-    while (e < t.size() && e - i < 40 && !std::isspace(static_cast<unsigned char>(t[e])) &&
-           std::string_view("(),:;").find(t[e]) == std::string_view::npos)
-        ++e;
-    std::string tok = t.substr(i, e - i);
-    for (char& c : tok)
-        if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
-    return "'" + tok + "'";
-}
+
 
 inline void report_expected(ParseState& st, Iterator where, const std::string& what) {
     const std::string& t = st.src->text();

@@ -5,38 +5,12 @@
 #include "geometry/metric_scene_checker.hpp"
 #include "geometry/metric_scene_parser_def.hpp"
 
+#include "qm/sexpr_text.hpp"
 #include <fstream>
 #include <sstream>
 
 namespace qm::geometry {
 namespace {
-
-// Parentheses are checked before X3 runs, so an unbalanced file gets a message about the
-// parenthesis itself (at the ')' without partner, or the innermost '(' left open).
-bool balanced(const MetricSource& src, Diagnostics& diags) {
-    const std::string& t = src.text();
-    std::vector<std::size_t> open;
-    bool ok = true;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-        if (t[i] == ';') {
-            while (i < t.size() && t[i] != '\n') ++i;
-        } else if (t[i] == '(') {
-            open.push_back(i);
-        } else if (t[i] == ')') {
-            if (open.empty()) {
-                src.error(diags, i, "unbalanced parentheses: this ')' closes nothing");
-                ok = false;
-            } else {
-                open.pop_back();
-            }
-        }
-    }
-    if (!open.empty()) {
-        src.error(diags, open.back(), "unbalanced parentheses: this '(' is never closed (" + std::to_string(open.size()) + " unclosed in all)");
-        ok = false;
-    }
-    return ok;
-}
 
 template <class Rule, class Attr>
 bool run(const Rule& rule, const std::string& what, const MetricSource& src, MetricPositions& positions, Diagnostics& diags, Attr& out,
@@ -46,7 +20,7 @@ bool run(const Rule& rule, const std::string& what, const MetricSource& src, Met
         src.error(diags, 0, "empty input: expected " + what);
         return false;
     }
-    if (!balanced(src, diags)) return false;
+    if (!qm::sexpr::check_parentheses(src, diags)) return false;
     mparser::ParseState st{t.begin(), &positions, &diags, &src, false};
     auto first = t.begin();
     bool ok = false;

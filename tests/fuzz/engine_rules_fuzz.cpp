@@ -11,6 +11,13 @@
 // Includes are resolved in a sandbox directory made at start-up (a.rules, b.rules including a.rules,
 // c.rules including itself); inputs naming an absolute path or `..` are skipped, so the fuzzer never
 // opens files outside it.
+// Assertions on, whatever the build type (the fuzz build may define NDEBUG): BOOST_ASSERT guards
+// Spirit's preconditions (x3's character classes abort on bytes >= 0x80, which the readers avoid
+// through qm/x3_ascii.hpp), and QM_ASSERT the model's. Before any include, so that all see it.
+#undef NDEBUG
+#ifndef QM_ENABLE_ASSERTS
+#define QM_ENABLE_ASSERTS 1
+#endif
 #include "engine/builtin_registry.hpp"
 #include "engine/ground_atom_text.hpp"
 #include "engine/rule_checker.hpp"

@@ -4,6 +4,13 @@
 // Properties checked (abort on violation): no exception escapes; a result exists exactly when no
 // error was reported; every diagnostic points inside the input; every part of a checked scene
 // has closed counter-clockwise profiles and a positive size.
+// Assertions on, whatever the build type (the fuzz build may define NDEBUG): BOOST_ASSERT guards
+// Spirit's preconditions (x3's character classes abort on bytes >= 0x80, which the readers avoid
+// through qm/x3_ascii.hpp), and QM_ASSERT the model's. Before any include, so that all see it.
+#undef NDEBUG
+#ifndef QM_ENABLE_ASSERTS
+#define QM_ENABLE_ASSERTS 1
+#endif
 #include "geometry/kinematic_pairs.hpp"
 #include "geometry/metric_scene_parser.hpp"
 
