@@ -99,8 +99,10 @@ void print_situation(std::ostream& os, const Scene& scene, const SituationResult
 }
 
 void print_analysis(std::ostream& os, const Scene& scene, const std::vector<SituationResult>& results) {
+    // The header describes the scene; `--situation N` shows fewer results than it has situations.
     os << "Scene " << scene.name << " (" << scene.dimensions << "-D, " << plural(scene.objects.size(), "object") << ", "
-       << plural(results.size(), "situation") << ")\n";
+       << plural(scene.situations.size(), "situation") << ")\n";
+    if (scene.situations.empty()) os << "\nNo situations: the scene states no contacts or forces to analyse (Defstates)\n";
     for (const SituationResult& r : results) {
         os << '\n';
         print_situation(os, scene, r);

@@ -17,14 +17,23 @@ struct Entry {
 // One JSON string without escapes (names and directions never need them).
 const auto json_string = x3::lexeme['"' > *(x3::char_ - '"' - '\\') > '"'];
 
+// A parser named in words: an expectation failure on it names what was expected. (A parser with a
+// semantic action has no name of its own: x3 would print its mangled C++ type.)
+template <class Tag, class Parser>
+auto named(const char* name, Parser p) {
+    return x3::rule<Tag>{name} = p;
+}
+
 std::optional<Entry> parse_json(std::string_view text, std::size_t& error_at, std::string& expected) {
     Entry e;
     auto set = [](std::string& out) { return [&out](auto& ctx) { out = x3::_attr(ctx); }; };
     auto flag = [&e](auto&) { e.freedom = true; };
-    const auto inner = x3::lit('{') > json_string[set(e.kind)] > ':' > json_string[set(e.direction)] > '}';
-    const auto motion = x3::lit('{') > json_string[set(e.object)] > ':' > inner > '}';
-    const auto freedom =
-        (x3::lit('{') >> x3::lit("\"freedom\"")[flag]) > ':' > x3::lit('{') > json_string[set(e.object)] > ':' > inner > '}' > '}';
+    const auto object = named<class object_tag>("an object name in a JSON string", json_string[set(e.object)]);
+    const auto kind = named<class kind_tag>("\"translation\" or \"rotation\"", json_string[set(e.kind)]);
+    const auto direction = named<class direction_tag>("a direction in a JSON string, like \"(0 +)\"", json_string[set(e.direction)]);
+    const auto inner = x3::lit('{') > kind > ':' > direction > '}';
+    const auto motion = x3::lit('{') > object > ':' > inner > '}';
+    const auto freedom = (x3::lit('{') >> x3::lit("\"freedom\"")[flag]) > ':' > x3::lit('{') > object > ':' > inner > '}' > '}';
     auto first = text.begin();
     try {
         if (x3::phrase_parse(first, text.end(), (freedom | motion) > x3::eoi, qm::x3_ascii::blank)) return e;
@@ -32,9 +41,18 @@ std::optional<Entry> parse_json(std::string_view text, std::size_t& error_at, st
         expected = "a JSON entry like {\"follower\": {\"rotation\": \"(-)\"}}";
     } catch (const x3::expectation_failure<std::string_view::const_iterator>& f) {
         error_at = static_cast<std::size_t>(f.where() - text.begin());
-        expected = f.which() == "'\"'" || f.which().empty() ? "a JSON string" : f.which();
+        expected = f.which() == "'\"'" || f.which().empty() ? "a closing '\"'" : f.which() == "eoi" ? "the end of the query" : f.which();
     }
     return std::nullopt;
+}
+
+// What was found at `at`: the token there (up to a blank or JSON punctuation), or the end.
+std::string found_at(std::string_view text, std::size_t at) {
+    if (at >= text.size()) return "the end of the query";
+    std::size_t end = at + 1;
+    if (text[at] != '{' && text[at] != '}' && text[at] != ':' && text[at] != ',')
+        while (end < text.size() && std::string_view(" \t{}:,").find(text[end]) == std::string_view::npos) ++end;
+    return "'" + std::string(text.substr(at, end - at)) + "'";
 }
 
 }  // namespace
@@ -54,8 +72,7 @@ std::optional<std::string> query_text(std::string_view text, const std::string& 
             expected = "\"translation\" or \"rotation\"";
             at = text.find("\"" + e->kind + "\"");
         }
-        const std::string found = at < text.size() ? std::string(1, text[at]) : std::string("the end");
-        diagnostics.error({origin, 1, static_cast<std::uint32_t>(at + 1)}, "expected " + expected + " but found '" + found + "'",
+        diagnostics.error({origin, 1, static_cast<std::uint32_t>(at + 1)}, "expected " + expected + " but found " + found_at(text, at),
                           std::string(text));
         return std::nullopt;
     }

@@ -33,6 +33,10 @@ std::optional<RunOptions> parse(std::span<const std::string> args, std::ostream&
                 err << "qm-atms: error: --why needs a fact, e.g. --why '(queen 1 2)'\n";
                 return std::nullopt;
             }
+            if (o.why) {  // one explanation per run: a second --why would silently replace the first
+                err << "qm-atms: error: --why is given twice ('" << *o.why << "', '" << args[i + 1] << "')\n";
+                return std::nullopt;
+            }
             o.why = args[++i];
         } else if (!a.empty() && a[0] == '-') {
             err << "qm-atms: error: unknown option '" << a << "'\n";
@@ -46,10 +50,6 @@ std::optional<RunOptions> parse(std::span<const std::string> args, std::ostream&
     }
     if (o.program.empty()) {
         err << "qm-atms: error: no program given\n";
-        return std::nullopt;
-    }
-    if (o.why && o.json) {
-        err << "qm-atms: error: --why prints an explanation, not JSON: give one of --why and --json\n";
         return std::nullopt;
     }
     return o;
@@ -78,7 +78,8 @@ const char* run_usage() noexcept {
            "  runs a rule program; prints each fact with its label, the minimal nogoods and the\n"
            "  interpretations of the declared choice sets\n"
            "  --why 'FACT'  explain FACT, e.g. '(queen 1 2)': its justifications, or the nogoods ruling it out\n"
-           "  --json        print {\"facts\": [...], \"nogoods\": [...], \"interpretations\": [...]}\n";
+           "  --json        print {\"facts\": [...], \"nogoods\": [...], \"interpretations\": [...]};\n"
+           "                with --why, the explanation as JSON (docs/RULES.md)\n";
 }
 
 int run_command(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
@@ -109,10 +110,20 @@ int run_command(std::span<const std::string> args, std::ostream& out, std::ostre
         }
         auto f = e.find(parsed.atom->predicate, parsed.atom->args);
         if (!f) {
-            out << *options->why << " is not a fact of this program (no rule concludes it)\n";
+            if (options->json) {
+                engine::Why none;  // unsupported: nothing concludes it; the fact in canonical notation
+                none.fact = "(" + e.values().print(parsed.atom->predicate);
+                for (engine::ValueId a : parsed.atom->args) none.fact += " " + e.values().print(a);
+                none.fact += ")";
+                out << engine::to_json(none) << '\n';
+            } else {
+                out << *options->why << " is not a fact of this program (no rule concludes it)\n";
+            }
             return 0;
         }
-        out << engine::print_why(engine::why(e, *f));
+        const engine::Why answer = engine::why(e, *f);
+        if (options->json) out << engine::to_json(answer) << '\n';
+        else out << engine::print_why(answer);
         return 0;
     }
     engine::RunReport report = engine::make_report(e);

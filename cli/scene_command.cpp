@@ -6,6 +6,7 @@
 #include "metric_command.hpp"
 #include "query_text.hpp"
 #include "rules_location.hpp"
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <fstream>
@@ -57,6 +58,30 @@ std::optional<std::size_t> positive(const std::string& s) {
     return v;
 }
 
+// Whether situation s (from 1) has the contact or force q, the things `--without` and `whatif` take
+// away. `Force OBJ` names every force on OBJ, scene-level ones included (they act in every situation).
+bool has_item(const alex::Scene& scene, std::size_t s, const alex::QueryFact& q) {
+    const alex::Situation& situation = scene.situations[s - 1];
+    if (q.kind == alex::QueryFact::Kind::contact)
+        return std::any_of(situation.contacts.begin(), situation.contacts.end(), [&](const alex::Contact& c) {
+            return (c.first == *q.first && c.second == *q.second) || (c.first == *q.second && c.second == *q.first);
+        });
+    auto on = [&](const alex::Force& f) { return f.object == *q.object; };
+    return std::any_of(scene.forces.begin(), scene.forces.end(), on) ||
+           std::any_of(situation.forces.begin(), situation.forces.end(), on);
+}
+
+// The contact or force in the scene's notation, for messages.
+std::string item_text(const alex::Scene& scene, const alex::QueryFact& q) {
+    if (q.kind == alex::QueryFact::Kind::contact)
+        return "Contact (" + scene.surfaces[*q.first].name + " " + scene.surfaces[*q.second].name + ")";
+    return "force on '" + scene.objects[*q.object].name + "'";
+}
+
+bool is_contact_or_force(const alex::QueryFact& q) {
+    return q.kind == alex::QueryFact::Kind::contact || q.kind == alex::QueryFact::Kind::force;
+}
+
 std::optional<SceneOptions> parse(std::span<const std::string> args, std::ostream& err) {
     SceneOptions o;
     for (std::size_t i = 0; i < args.size(); ++i) {
@@ -73,10 +98,18 @@ std::optional<SceneOptions> parse(std::span<const std::string> args, std::ostrea
         else if (a == "--why") {
             auto v = value("a fact, e.g. --why 'Rotational-Motion (follower (-))'");
             if (!v) return std::nullopt;
+            if (o.why) {  // one explanation per run: a second --why would silently replace the first
+                err << "qm-atms: error: --why is given twice ('" << *o.why << "', '" << *v << "'); ask one at a time, or use -i\n";
+                return std::nullopt;
+            }
             o.why = *v;
         } else if (a == "--situation") {
             auto v = value("a situation number (1 is the first)");
             if (!v) return std::nullopt;
+            if (o.situation) {
+                err << "qm-atms: error: --situation is given twice\n";
+                return std::nullopt;
+            }
             o.situation = positive(*v);
             if (!o.situation) {
                 err << "qm-atms: error: --situation expects a number from 1, not '" << *v << "'\n";
@@ -182,6 +215,12 @@ private:
         } else if (verb == "why") {
             auto text = query_text(rest, "why", d);
             auto q = text ? alex::parse_query_fact(scene, *text, d, "why") : std::nullopt;
+            if (q && is_contact_or_force(*q)) {
+                d.error({"why", 1, 1}, "expected a motion or a freedom to explain (Translational-Motion, Rotational-Motion, "
+                                       "Translational-Freedom, Rotational-Freedom), not a contact or force; "
+                                       "`whatif` takes contacts and forces away");
+                q.reset();
+            }
             if (q)
                 if (auto w = analysis_.why(*q, situation_, d)) json_ ? alex::write_why_json(out_, *w) : alex::print_why(out_, *w);
         } else if (verb == "given") {
@@ -194,7 +233,14 @@ private:
             while (from <= text.size()) {
                 const auto semi = text.find(';', from);
                 const std::string part = trim(text.substr(from, semi == std::string::npos ? std::string::npos : semi - from));
-                if (auto q = alex::parse_query_fact(scene, part, d, "whatif")) without.push_back(*q);
+                if (auto q = alex::parse_query_fact(scene, part, d, "whatif")) {
+                    if (!is_contact_or_force(*q))
+                        d.error({"whatif", 1, 1}, "expected 'Contact A B' or 'Force OBJ' to take away, but found '" + part + "'");
+                    else if (!has_item(scene, situation_, *q))
+                        d.error({"whatif", 1, 1}, "expected a contact or force of situation " + std::to_string(situation_) +
+                                                      " to take away, but it has no " + item_text(scene, *q));
+                    else without.push_back(*q);
+                }
                 if (semi == std::string::npos) break;
                 from = semi + 1;
             }
@@ -282,18 +328,31 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     ao.combination_limit = options->limit;
     for (const auto& g : options->given)
         if (auto m = alex::parse_given(*scene, g, d, "--given")) ao.given.push_back(*m);
+    const std::size_t situations = scene->situations.size();
+    const std::size_t situation = options->situation.value_or(1);
+    const bool situation_ok = situation <= situations;
     for (const auto& w : options->without)
         if (auto q = alex::parse_query_fact(*scene, w, d, "--without")) {
-            if (q->kind != alex::QueryFact::Kind::contact && q->kind != alex::QueryFact::Kind::force)
+            // Taking away what is not there changes nothing: most likely a misspelt or misplaced item.
+            bool present = false;
+            for (std::size_t s = 1; s <= situations; ++s)
+                if ((!options->situation || s == situation) && has_item(*scene, s, *q)) present = true;
+            if (!is_contact_or_force(*q))
                 d.error({"--without", 1, 1}, "expected 'Contact A B' or 'Force OBJ' to take away, but found '" + w + "'");
+            else if (!present && situation_ok)
+                d.error({"--without", 1, 1}, "expected a contact or force of the scene to take away, but " +
+                                                 (options->situation ? "situation " + std::to_string(situation) : std::string("no situation")) +
+                                                 (options->situation ? " has no " : " has a ") + item_text(*scene, *q));
             else ao.without.push_back(*q);
         }
     std::optional<alex::QueryFact> why;
     if (options->why)
         if (auto text = query_text(*options->why, "--why", d)) why = alex::parse_query_fact(*scene, *text, d, "--why");
-    const std::size_t situations = scene->situations.size();
-    const std::size_t situation = options->situation.value_or(1);
-    if ((options->why || options->situation) && situation > situations)
+    if (situations == 0 && (options->why || options->situation || options->interactive))
+        d.error({options->interactive ? "-i" : options->why ? "--why" : "--situation", 1, 1},
+                "expected a scene with situations to ask about, but " + options->scene +
+                                           " states none (no Defstates, Situation or CONTACT list)");
+    else if ((options->why || options->situation) && !situation_ok)
         d.error({"--situation", 1, 1}, "expected a situation from 1 to " + std::to_string(situations) + ", but found " +
                                            std::to_string(situation));
     if (options->rules) ao.rules_directory = *options->rules;
@@ -302,6 +361,18 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     if (d.has_errors()) {
         d.print(err);
         return 2;
+    }
+    if (situations == 0) {
+        // Nothing to analyse, but the laws are still read and checked against the scene: the
+        // analysis of one empty situation (the objects unsupported) is that check, and is not shown.
+        alex::Scene probe = *scene;
+        probe.situations.push_back(alex::Situation{{}, {}, {}, scene->where});
+        if (!alex::analyse(probe, ao, d)) {
+            d.print(err);
+            return 2;
+        }
+        options->json ? alex::write_analysis_json(out, *scene, {}) : alex::print_analysis(out, *scene, {});
+        return 0;
     }
     auto analysis = alex::analyse(*scene, ao, d);
     if (!analysis) {

@@ -2,15 +2,22 @@
 // Provides:   to_json(RunReport), exactly
 //             {"facts": [{"fact": F, "label": [[A, ...], ...]}, ...], "nogoods": [[A, ...], ...],
 //              "interpretations": [[A, ...], ...]}
-//             with facts and assumptions as strings in the rule language's notation, in report order.
+//             with facts and assumptions as strings in the rule language's notation, in report order;
+//             and to_json(Why), the explanation of `qm-atms run --why FACT --json` (docs/RULES.md):
+//             {"fact": F, "status": "holds" | "ruled-out" | "unsupported",
+//              "derivations": [DERIVATION, ...], "nogoods": [DERIVATION, ...]}, DERIVATION being
+//             {"environment": [A, ...], "steps": [{"fact": F, "informant": TEXT, "binding": [TEXT, ...],
+//              "antecedents": [F, ...]}, ...]} with the steps leaves first, as the text form prints them.
 // Knows nothing of the ATMS.
 #pragma once
 #include "engine/run_report.hpp"
+#include "engine/why.hpp"
 #include <string>
 #include <string_view>
 
 namespace qm::engine {
 [[nodiscard]] std::string to_json(const RunReport& report);
+[[nodiscard]] std::string to_json(const Why& why);
 // A JSON string literal for text (quotes, backslashes and control characters escaped).
 [[nodiscard]] std::string json_string(std::string_view text);
 }  // namespace qm::engine

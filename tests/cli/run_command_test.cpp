@@ -293,7 +293,7 @@ TEST_CASE("cli/run_command: bad input exits 2 with located diagnostics and a car
     CHECK(missing.err == "/no/such/file.rules:1:1: error: cannot open rule file '/no/such/file.rules'\n");
     CHECK(qm_atms("run " + scenario("queens4.rules") + " --bogus").status == 2);
     CHECK(qm_atms("run " + scenario("queens4.rules") + " --why").status == 2);
-    CHECK(qm_atms("run " + scenario("queens4.rules") + " --why '(queen 1 1)' --json").status == 2);
+    CHECK(qm_atms("run " + scenario("queens4.rules") + " --why '(queen 1 1)' --why '(queen 1 2)'").status == 2);
     CHECK(qm_atms("run a.rules b.rules").status == 2);
     CHECK(qm_atms("run").status == 2);
 }
@@ -306,4 +306,61 @@ TEST_CASE("cli/run_command: --help, no arguments and scene files") {
     Result scene = qm_atms("scene.def");
     CHECK(scene.status == 2);
     CHECK(scene.err.find("scene.def") != std::string::npos);  // a missing scene file is bad input
+}
+
+namespace {
+std::string joined(const Json& list, const char* sep) {
+    std::string out;
+    for (std::size_t i = 0; i < list.items.size(); ++i) out += (i > 0 ? sep : "") + list.items[i].text;
+    return out;
+}
+}  // namespace
+
+// Regression (audit against issue 4): `run --why FACT --json` was refused although the usage line
+// offers both options. The JSON must say exactly what the text form says.
+TEST_CASE("cli/run_command: --why with --json gives the explanation as JSON, step for step the text form") {
+    std::string held = write_temp("cli_why_json.rules",
+                                  "fact (edge a b)\nfact (edge b c)\nassume (open b)\nassume (shut b)\n\n"
+                                  "rule path-1\n  when (edge ?x ?y)\n  then (path ?x ?y)\n\n"
+                                  "rule path-2\n  when (path ?x ?y) (edge ?y ?z) (open ?y)\n  then (path ?x ?z)\n\n"
+                                  "rule path-3\n  when (path ?x ?y) (edge ?y ?z) (shut ?y)\n  then (path ?x ?z)\n\n"
+                                  "rule door\n  when (open ?d) (shut ?d)\n  then (ajar ?d)\n\n"
+                                  "rule exclusive\n  when (open ?d) (shut ?d)\n  then false\n");
+    for (const char* fact : {"(path a c)", "(ajar b)", "(path a b)"}) {
+        CAPTURE(fact);
+        Result text = qm_atms("run " + held + " --why '" + fact + "'");
+        Result json = qm_atms("run " + held + " --why '" + fact + "' --json");
+        REQUIRE(json.status == 0);
+        CHECK(json.err.empty());
+        Json doc;
+        REQUIRE(JsonReader(json.out).read(doc));
+        REQUIRE(doc.kind == Json::Kind::object);
+        REQUIRE(doc.keys == std::vector<std::string>{"fact", "status", "derivations", "nogoods"});
+        CHECK(doc.items[0].text == fact);
+        const std::string status = doc.items[1].text;
+        // Rebuild the text form from the JSON and compare with what --why prints.
+        std::string rebuilt = std::string(fact) + (status == "holds" ? " holds\n" : " is ruled out: every environment supporting it is nogood\n");
+        const Json& derivations = doc.items[status == "holds" ? 2 : 3];
+        CHECK(doc.items[status == "holds" ? 3 : 2].items.empty());
+        for (const Json& d : derivations.items) {
+            REQUIRE(d.keys == std::vector<std::string>{"environment", "steps"});
+            rebuilt += std::string(status == "holds" ? "  in {" : "  nogood {") + joined(d.items[0], ", ") + "}:\n";
+            for (const Json& step : d.items[1].items) {
+                REQUIRE(step.keys == std::vector<std::string>{"fact", "informant", "binding", "antecedents"});
+                rebuilt += "    " + step.items[0].text + " <= " + step.items[1].text;
+                if (!step.items[2].items.empty()) rebuilt += " {" + joined(step.items[2], ", ") + "}";
+                if (!step.items[3].items.empty()) rebuilt += ": " + joined(step.items[3], ", ");
+                rebuilt += "\n";
+            }
+        }
+        CHECK(rebuilt == text.out);
+    }
+    Result held_json = qm_atms("run " + held + " --why '(path a c)' --json");
+    CHECK(held_json.out.find("\"status\": \"holds\"") != std::string::npos);
+    CHECK(held_json.out.find("\"environment\": [\"(open b)\"]") != std::string::npos);
+    CHECK(held_json.out.find("\"environment\": [\"(shut b)\"]") != std::string::npos);
+    CHECK(qm_atms("run " + held + " --why '(ajar b)' --json").out.find("\"status\": \"ruled-out\"") != std::string::npos);
+    // A fact nothing concludes: status unsupported, written in canonical notation.
+    CHECK(qm_atms("run " + held + " --why '( path  c   a)' --json").out ==
+          "{\"fact\": \"(path c a)\", \"status\": \"unsupported\", \"derivations\": [], \"nogoods\": []}\n");
 }

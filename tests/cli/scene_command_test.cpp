@@ -4,6 +4,7 @@
 #include "../support/json_value.hpp"
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <doctest/doctest.h>
 #include <fstream>
 #include <regex>
@@ -218,4 +219,89 @@ TEST_CASE("cli/scene_command: bad input is located and exits with 2") {
     CHECK(minus.status == 2);
     CHECK(minus.err.find("--why:1:") != std::string::npos);
     CHECK(qm_atms(scene("block.def") + " --why '{\"block\": {\"translation\": \"(0 \xff)\"}}'").status == 2);
+}
+
+// Regressions found by an audit against issues 4 and 5 (a new user's inputs).
+TEST_CASE("cli/scene_command: a malformed JSON query names what was expected in words") {
+    for (const char* q : {R"q({"block": {}})q", "{", R"q({block: {"rotation": "(0)"}})q", R"q({"block": {"rotation": "(0)}})q"}) {
+        CAPTURE(q);
+        Result r = qm_atms(scene("block.def") + " --why '" + q + "'");
+        CHECK(r.status == 2);
+        CHECK(r.err.find("--why:1:") == 0);
+        CHECK(r.err.find("expected ") != std::string::npos);
+        CHECK(r.err.find("boost") == std::string::npos);  // no mangled parser type
+        CHECK(r.err.find("N5") == std::string::npos);
+    }
+    Result empty = qm_atms(scene("block.def") + R"q( --why '{"block": {}}')q");
+    CHECK(empty.err.find(R"q(error: expected "translation" or "rotation" but found '}')q") != std::string::npos);
+    Result cut = qm_atms(scene("block.def") + R"q( --why '{"freedom": {"block": {"rotation": "(-)"}}')q");
+    CHECK(cut.err.find("expected '}' but found the end of the query") != std::string::npos);
+}
+
+TEST_CASE("cli/scene_command: a scene without situations is reported, not an error") {
+    const std::string none = std::string(QM_BINARY_DIR) + "/scene_cli_no_situations.def";
+    std::ofstream(none) << "(Defscenario 2 lone\n  Individuals (a)\n  Descriptions ((rigid-ob a)))\n";
+    Result text = qm_atms(none);
+    CHECK(text.status == 0);
+    CHECK(text.err.empty());
+    CHECK(text.out.find("Scene lone (2-D, 1 object, 0 situations)") == 0);
+    CHECK(text.out.find("No situations") != std::string::npos);
+    Result json = qm_atms(none + " --json");
+    CHECK(json.status == 0);
+    CHECK(json.out == "{\"scene\": \"lone\", \"dimensions\": 2, \"situations\": []}\n");
+    // Queries need a situation: located errors, not an out-of-range access.
+    Result i = qm_atms(none + " -i", "freedom\n");
+    CHECK(i.status == 2);
+    CHECK(i.err.find("-i:1:1: error: expected a scene with situations") == 0);
+    CHECK(qm_atms(none + " --why 'Rotational-Motion (a (+))'").status == 2);
+    CHECK(qm_atms(none + " --situation 1").status == 2);
+    // The laws are still read: a broken rule folder is reported.
+    const std::string rules = std::string(QM_BINARY_DIR) + "/scene_cli_broken_rules";
+    std::filesystem::create_directories(rules);
+    std::ofstream(rules + "/bad.rules") << "rule r when (p ?x) then (q ?y)\n";
+    Result broken = qm_atms(none + " --rules " + rules);
+    CHECK(broken.status == 2);
+    CHECK(broken.err.find("bad.rules:1:") != std::string::npos);
+}
+
+TEST_CASE("cli/scene_command: --without something no situation has is an error, not a silent no-op") {
+    Result absent = qm_atms(scene("block.def") + " --without 'Contact tb block-t-m'");
+    CHECK(absent.status == 2);
+    CHECK(absent.err.find("--without:1:1: error: expected a contact or force of the scene to take away, but no "
+                          "situation has a Contact (tb block-t-m)") == 0);
+    // Situation 1 has no contact; situation 2 has it.
+    CHECK(qm_atms(scene("block.def") + " --situation 1 --without 'Contact tb block-b-m'").status == 2);
+    CHECK(qm_atms(scene("block.def") + " --situation 2 --without 'Contact tb block-b-m'").status == 0);
+    CHECK(qm_atms(scene("block.def") + " --without 'Contact tb block-b-m'").status == 0);  // some situation has it
+    Result force = qm_atms(scene("gears.def") + " --without 'Force driver'");               // the gears have no force
+    CHECK(force.status == 2);
+    CHECK(force.err.find("no situation has a force on 'driver'") != std::string::npos);
+}
+
+TEST_CASE("cli/scene_command: an option given twice that would silently replace the first is an error") {
+    CHECK(qm_atms(scene("block.def") + " --why 'Rotational-Motion (block (+))' --why 'Rotational-Motion (block (-))'")
+              .status == 2);
+    CHECK(qm_atms(scene("block.def") + " --situation 1 --situation 2").status == 2);
+}
+
+TEST_CASE("cli/scene_command: --situation N shows one situation under a header counting the scene's") {
+    Result r = qm_atms(scene("block.def") + " --situation 2");
+    CHECK(r.status == 0);
+    CHECK(r.out.find("Scene block (2-D, 2 objects, 2 situations)\n\nSituation 2\n") == 0);
+    CHECK(r.out.find("Situation 1") == std::string::npos);
+}
+
+TEST_CASE("cli/scene_command: interactive errors name the command, and whatif checks the situation has the item") {
+    Result r = qm_atms(scene("gears.def") + " -i",
+                       "why Contact l-1 d-1\nwhatif Force driver\nwhatif Rotational-Motion (driver (+))\n{\n"
+                       "why {\"follower\": {}}\nwhatif Contact l-1 d-1\n");
+    CHECK(r.status == 0);
+    CHECK(r.err.find("why:1:1: error: expected a motion or a freedom to explain") == 0);
+    CHECK(r.err.find("--why") == std::string::npos);
+    CHECK(r.err.find("whatif:1:1: error: expected a contact or force of situation 1 to take away, but it has no "
+                     "force on 'driver'") != std::string::npos);
+    CHECK(r.err.find("whatif:1:1: error: expected 'Contact A B' or 'Force OBJ' to take away, but found "
+                     "'Rotational-Motion (driver (+))'") != std::string::npos);
+    CHECK(r.err.find("boost") == std::string::npos);
+    CHECK(r.out.find("9 consistent combinations") != std::string::npos);  // the last whatif still answers
 }
