@@ -192,6 +192,18 @@ std::unique_ptr<Analysis::State> build_state(const Scene& scene, const AnalysisO
 std::optional<Analysis> analyse(const Scene& scene, const AnalysisOptions& options, Diagnostics& diagnostics) {
     auto program = load_rules(options.rules_directory, diagnostics);
     if (!program) return std::nullopt;
+    if (scene.situations.empty()) {
+        // Nothing to analyse, but the laws are still read and checked against the scene (Law 1's
+        // choice sets must exist for every object): one empty situation is that check.
+        Scene probe = scene;
+        probe.situations.push_back(Situation{{}, {}, {}, scene.where});
+        auto state = build_state(probe, options, *program, diagnostics);
+        if (!state) return std::nullopt;
+        state->scene.situations.clear();
+        state->runs.clear();
+        state->results.clear();
+        return Analysis(std::move(state));
+    }
     auto state = build_state(scene, options, *program, diagnostics);
     if (!state) return std::nullopt;
     return Analysis(std::move(state));

@@ -85,6 +85,10 @@ struct Object {
     std::vector<DirectionPattern> trans_constraints;   // Translational-Constraints entries
     std::vector<DirectionPattern> rot_constraints;     // Rotational-Constraints entries
     SourceLocation where;
+    // Where the description and each constraint entry are written, for --why's citations; a
+    // scene built in code may leave them out (then `where` stands for them).
+    std::optional<SourceLocation> described_at;
+    std::vector<SourceLocation> trans_constraints_at, rot_constraints_at;
     friend bool operator==(const Object& a, const Object& b) {
         return a.name == b.name && a.description == b.description && a.surfaces == b.surfaces &&
                a.trans_constraints == b.trans_constraints && a.rot_constraints == b.rot_constraints;

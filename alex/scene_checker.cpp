@@ -164,6 +164,7 @@ void SceneChecker::descriptions(const ast::Descriptions& d) {
         }
         seen.emplace(name, &e);
         scene_.objects[*id].description = kind;
+        scene_.objects[*id].described_at = cx_.where(e);
     }
 }
 

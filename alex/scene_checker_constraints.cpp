@@ -19,8 +19,9 @@ void SceneChecker::constraints(const std::vector<ast::ConstraintEntry>& entries,
             auto p = translational ? cx_.pattern(d, scene_.translation_arity(), "a translational constraint", true)
                                    : cx_.pattern(d, scene_.rotation_arity(), "a rotational constraint", true);
             if (!p || !id) continue;
-            auto& list = translational ? scene_.objects[*id].trans_constraints : scene_.objects[*id].rot_constraints;
-            list.push_back(std::move(*p));
+            Object& o = scene_.objects[*id];
+            (translational ? o.trans_constraints : o.rot_constraints).push_back(std::move(*p));
+            (translational ? o.trans_constraints_at : o.rot_constraints_at).push_back(cx_.where(d));
         }
     }
 }

@@ -62,15 +62,20 @@ void SceneFacts::assert_premises() {
     for (std::uint32_t i = 0; i < scene_.objects.size(); ++i) {
         const Object& o = scene_.objects[ObjectId{i}];
         const ValueId obj = object_symbols_[i];
-        premise(v::rigid_body, {obj}, o.where);
-        // A pattern entry stands for every direction it matches (`?x` matches any sign).
-        auto frame = [&](std::string_view pred, const std::vector<DirectionPattern>& patterns, std::size_t arity) {
-            for (const Direction& d : all_directions(arity))
-                if (std::any_of(patterns.begin(), patterns.end(), [&](const DirectionPattern& p) { return alex::matches(p, d); }))
-                    premise(pred, {obj, direction(d)}, o.where);
+        premise(v::rigid_body, {obj}, o.described_at.value_or(o.where));
+        // A pattern entry stands for every direction it matches (`?x` matches any sign); the premise
+        // cites the first entry that matches.
+        auto frame = [&](std::string_view pred, const std::vector<DirectionPattern>& patterns,
+                         const std::vector<SourceLocation>& at, std::size_t arity) {
+            for (const Direction& d : all_directions(arity)) {
+                auto p = std::find_if(patterns.begin(), patterns.end(), [&](const DirectionPattern& x) { return alex::matches(x, d); });
+                if (p == patterns.end()) continue;
+                const auto k = static_cast<std::size_t>(p - patterns.begin());
+                premise(pred, {obj, direction(d)}, k < at.size() ? at[k] : o.where);
+            }
         };
-        frame(v::frame_trans_constraint, o.trans_constraints, scene_.translation_arity());
-        frame(v::frame_rot_constraint, o.rot_constraints, scene_.rotation_arity());
+        frame(v::frame_trans_constraint, o.trans_constraints, o.trans_constraints_at, scene_.translation_arity());
+        frame(v::frame_rot_constraint, o.rot_constraints, o.rot_constraints_at, scene_.rotation_arity());
     }
     for (std::uint32_t i = 0; i < scene_.surfaces.size(); ++i) {
         const Surface& s = scene_.surfaces[SurfaceId{i}];

@@ -362,18 +362,6 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
         d.print(err);
         return 2;
     }
-    if (situations == 0) {
-        // Nothing to analyse, but the laws are still read and checked against the scene: the
-        // analysis of one empty situation (the objects unsupported) is that check, and is not shown.
-        alex::Scene probe = *scene;
-        probe.situations.push_back(alex::Situation{{}, {}, {}, scene->where});
-        if (!alex::analyse(probe, ao, d)) {
-            d.print(err);
-            return 2;
-        }
-        options->json ? alex::write_analysis_json(out, *scene, {}) : alex::print_analysis(out, *scene, {});
-        return 0;
-    }
     auto analysis = alex::analyse(*scene, ao, d);
     if (!analysis) {
         d.print(err);

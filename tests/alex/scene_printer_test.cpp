@@ -30,7 +30,7 @@ Scene random_scene(std::mt19937& rng) {
     s.name = "random-" + std::to_string(pick(1000));
     s.dimensions = 2 + pick(2);
     const int n_obj = 1 + pick(4);
-    for (int i = 0; i < n_obj; ++i) s.objects.push_back({"o" + std::to_string(i), "rigid-ob", {}, {}, {}, {}});
+    for (int i = 0; i < n_obj; ++i) s.objects.push_back({"o" + std::to_string(i), "rigid-ob", {}, {}, {}, {}, {}, {}, {}});
     const int n_surf = pick(8);
     for (int i = 0; i < n_surf; ++i) {
         // Surfaces are grouped by owner in increasing id order, as the reader assigns them.

@@ -30,8 +30,8 @@ TEST_CASE("alex/scene: a pattern's variables match any sign, its signs only them
 
 TEST_CASE("alex/scene: lookups and ownership") {
     Scene s;
-    const ObjectId a = s.objects.push_back({"a", "rigid-ob", {}, {}, {}, {}});
-    const ObjectId b = s.objects.push_back({"b", "rigid-ob", {}, {}, {}, {}});
+    const ObjectId a = s.objects.push_back({"a", "rigid-ob", {}, {}, {}, {}, {}, {}, {}});
+    const ObjectId b = s.objects.push_back({"b", "rigid-ob", {}, {}, {}, {}, {}, {}, {}});
     const SurfaceId p = s.surfaces.push_back({"p", a, {Sign::zero, Sign::plus}, {Sign::zero, Sign::minus}, std::nullopt, {}});
     const SurfaceId q = s.surfaces.push_back({"q", b, {Sign::zero, Sign::minus}, {Sign::zero, Sign::plus}, std::nullopt, {}});
     s.objects[a].surfaces.push_back(p);
@@ -51,7 +51,7 @@ TEST_CASE("alex/scene: lookups and ownership") {
 TEST_CASE("alex/scene: equality compares content, never source locations") {
     Scene x;
     x.name = "s";
-    x.objects.push_back({"a", "rigid-ob", {}, {}, {}, {"f.def", 3, 4}});
+    x.objects.push_back({"a", "rigid-ob", {}, {}, {}, {"f.def", 3, 4}, {}, {}, {}});
     Scene y = x;
     y.objects[ObjectId{0}].where = {"g.def", 9, 9};
     y.where = {"g.def", 1, 1};
@@ -63,7 +63,7 @@ TEST_CASE("alex/scene: equality compares content, never source locations") {
     CHECK_FALSE(x == z);
     // Linkages (Def 21) and corner sides (Def 18) are content; a linkage's location is not.
     Scene l = x;
-    l.objects.push_back({"b", "rigid-ob", {}, {}, {}, {}});
+    l.objects.push_back({"b", "rigid-ob", {}, {}, {}, {}, {}, {}, {}});
     Scene l2 = l;
     l.linkages.push_back({ObjectId{0}, ObjectId{1}, {"f.def", 1, 1}});
     CHECK_FALSE(l == l2);
