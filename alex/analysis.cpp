@@ -147,6 +147,7 @@ SituationResult Analysis::State::read(std::size_t s, atms::EnvId env) {
             ranks.push_back(nearness(o, env));
         }
         ChainOutcome outcome = solve_chain(engine->atms(), members, ranks, env, options.combination_limit);
+        if (outcome.truncated) r.complete = false;
         if (outcome.truncated)
             r.notes.push_back("chain of " + scene.objects[chain.front()].name + ": enumeration stopped after " +
                               std::to_string(options.combination_limit) + " consistent combinations (--limit)");

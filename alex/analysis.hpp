@@ -67,6 +67,7 @@ struct SituationResult {
     IdVector<ObjectId, Freedom> freedom;
     std::vector<ChainMotions> chains;      // partition of all objects
     bool stable = false;                   // every consistent combination is all-zero (and one exists)
+    bool complete = true;                  // false: some chain's enumeration stopped at the limit
     std::vector<std::string> notes;        // e.g. which part of a what-if answer was recomputed
 
     // Combinations of the whole scene: the product over chains (saturating at UINT64_MAX).

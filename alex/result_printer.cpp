@@ -68,7 +68,9 @@ void print_freedom(std::ostream& os, const Scene& scene, const SituationResult& 
 
 void print_motions(std::ostream& os, const Scene& scene, const SituationResult& r) {
     const std::uint64_t total = r.combination_count();
-    os << "  Motions: " << (total == UINT64_MAX ? std::string("more than 2^64 combinations") : plural(total, "consistent combination"));
+    os << "  Motions: " << (r.complete ? "" : "at least ")
+       << (total == UINT64_MAX ? std::string("more than 2^64 combinations") : plural(total, "consistent combination"));
+    if (!r.complete) os << ", the first shown (enumeration stopped at --limit)";
     if (r.chains.size() > 1) {
         os << " (" << r.chains.size() << " kinematic chains, solved separately:";
         for (std::size_t c = 0; c < r.chains.size(); ++c) os << (c ? " x " : " ") << r.chains[c].combinations.size();

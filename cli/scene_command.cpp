@@ -382,6 +382,11 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     }
     std::vector<alex::SituationResult> shown = analysis->situations();
     if (options->situation) shown = {shown[situation - 1]};
+    // The JSON schema has no place for notes (docs/OUTPUT.md): a truncated enumeration is said on
+    // standard error, so a program reading the JSON is not silently given a partial list.
+    if (options->json)
+        for (const alex::SituationResult& r : shown)
+            for (const std::string& n : r.notes) err << "qm-atms: note: situation " << r.index << ": " << n << '\n';
     options->json ? alex::write_analysis_json(out, analysis->scene(), shown)
                   : alex::print_analysis(out, analysis->scene(), shown);
     return 0;

@@ -123,6 +123,25 @@ TEST_CASE("cli/scene_command: --json follows the documented schema") {
     CHECK(only[0]["motions"].array().size() == 1);
 }
 
+TEST_CASE("cli/scene_command: --limit stops an enumeration and says so, in text and beside JSON") {
+    // The gear pair has six combinations (Figure 7.14): a limit of 4 shows four and says more exist.
+    Result text = qm_atms(scene("gears.def") + " --limit 4");
+    REQUIRE(text.status == 0);
+    CHECK(text.out.find("Motions: at least 4 consistent combinations") != std::string::npos);
+    CHECK(text.out.find("Combination 5") == std::string::npos);
+    CHECK(text.out.find("--limit") != std::string::npos);
+    Result json = qm_atms(scene("gears.def") + " --limit 4 --json");
+    REQUIRE(json.status == 0);
+    auto doc = Json::parse(json.out);
+    REQUIRE(doc.has_value());
+    CHECK((*doc)["situations"].array()[0]["motions"].array().size() == 4);
+    CHECK(json.err.find("enumeration stopped") != std::string::npos);
+    // At or above the count nothing is cut and nothing is said.
+    Result all = qm_atms(scene("gears.def") + " --limit 6 --json");
+    CHECK(all.err.empty());
+    CHECK(qm_atms(scene("gears.def") + " --limit 6").out.find("at least") == std::string::npos);
+}
+
 TEST_CASE("cli/scene_command: --why explains in either spelling, as text or JSON") {
     Result text = qm_atms(scene("block.def") + " --situation 2 --why 'Translational-Motion (block (0 -))'");
     CHECK(text.status == 0);
