@@ -10,7 +10,8 @@
 namespace qm::geometry {
 namespace {
 
-constexpr const char* magic = "qm-place-cache/1";
+// /2: divisions on a periodic axis carry intermediate points (their direction).
+constexpr const char* magic = "qm-place-cache/2";
 
 void write_text(std::ostream& os, const std::string& s) { os << s.size() << ' ' << s; }
 
