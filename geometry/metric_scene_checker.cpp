@@ -33,6 +33,7 @@ void Checker::settings(const mast::SettingsSection& s, MechanismSettings& out) {
         else if (key == "boundary-tolerance") one(out.boundary_tolerance, false, 0.1);
         else if (key == "normal-zero-tolerance") one(out.normal_zero_tolerance, false, 1.0);
         else if (key == "merge-epsilon") one(out.merge_epsilon, true, std::numeric_limits<double>::infinity());
+        else if (key == "gap-epsilon") one(out.gap_epsilon, true, std::numeric_limits<double>::infinity());
         else if (key == "grid") {
             if (e.values.empty() || e.values.size() > 2) {
                 error(e, "setting 'grid' takes one or two whole numbers (samples per axis)");
@@ -44,7 +45,7 @@ void Checker::settings(const mast::SettingsSection& s, MechanismSettings& out) {
         } else {
             error(e.key, "unknown setting '" + e.key.text +
                              "'; the settings are chordal-tolerance, contact-tolerance, boundary-tolerance, normal-zero-tolerance, "
-                             "merge-epsilon, grid");
+                             "merge-epsilon, gap-epsilon, grid");
         }
     }
 }

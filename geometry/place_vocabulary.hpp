@@ -42,6 +42,8 @@ struct Place {
                                          // periodic axis: points at most a quarter period apart, so
                                          // the way round is told); join: one point; face: one sample
     double extent = 0.0;                 // face: number of grid samples it covers
+    bool gap = false;                    // face: 8.1.6, a gap narrower than the gap epsilon, collapsed
+                                         // with the CSEGs bounding it (normals: theirs)
 };
 
 struct Adjacency {

@@ -222,9 +222,9 @@ PlaceResult build_place_vocabulary(const PairOracle& oracle, const PlaceRequest&
             out.message = "external division '" + x.label + "' names no configuration coordinate";
             return out;
         }
-    if (!(request.merge_epsilon >= 0)) {
+    if (!(request.merge_epsilon >= 0) || !(request.gap_epsilon >= 0)) {
         out.status = PlaceStatus::bad_request;
-        out.message = "merge epsilon must not be negative";
+        out.message = "merge and gap epsilons must not be negative";
         return out;
     }
     detail::Builder b{oracle, request, request.cspace, out.space, out.vocabulary, {}, {}, {}, {}};
@@ -266,6 +266,7 @@ PlaceResult build_place_vocabulary(const PairOracle& oracle, const PlaceRequest&
         face_places.push_back(b.add(std::move(p)));
     }
     detail::add_adjacency(oracle, r, b.lines, faces, face_places, out.vocabulary);
+    detail::collapse_gaps(oracle, out.space, faces, face_places, request.gap_epsilon, out.vocabulary);
     return out;
 }
 
