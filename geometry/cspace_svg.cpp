@@ -20,16 +20,17 @@ void write_cspace_svg(std::ostream& os, const CSpaceResult& space, const PlaceVo
     if (!o.title.empty()) os << "<text x=\"" << margin << "\" y=\"20\" font-size=\"14\">" << o.title << "</text>\n";
     // Blocked space: one shaded cell per blocked sample, centred on it.
     const double cw = w * r.axes[0].step() / r.axes[0].span(), ch = h * r.axes[1].step() / r.axes[1].span();
-    os << "<g fill=\"#bbbbbb\" stroke=\"none\">\n";
+    // Everything drawn in the configuration space is clipped to its frame: a blocked cell at the
+    // edge is centred on it, and a line crossing a periodic seam is drawn on past it.
+    os << "<clipPath id=\"frame\"><rect x=\"" << margin << "\" y=\"" << margin << "\" width=\"" << w << "\" height=\"" << h
+       << "\"/></clipPath>\n<g fill=\"#bbbbbb\" stroke=\"none\" clip-path=\"url(#frame)\">\n";
     for (int j = 0; j < r.axes[1].samples; ++j)
         for (int i = 0; i < r.axes[0].samples; ++i)
             if (space.is_blocked(i, j))
                 os << "<rect x=\"" << X(r.axes[0].sample(i)) - cw / 2 << "\" y=\"" << Y(r.axes[1].sample(j)) - ch / 2 << "\" width=\""
                    << cw << "\" height=\"" << ch << "\"/>\n";
     os << "</g>\n<rect x=\"" << margin << "\" y=\"" << margin << "\" width=\"" << w << "\" height=\"" << h
-       << "\" fill=\"none\" stroke=\"black\"/>\n"
-       << "<clipPath id=\"frame\"><rect x=\"" << margin << "\" y=\"" << margin << "\" width=\"" << w << "\" height=\"" << h
-       << "\"/></clipPath>\n<g clip-path=\"url(#frame)\">\n";
+       << "\" fill=\"none\" stroke=\"black\"/>\n<g clip-path=\"url(#frame)\">\n";
     // Polylines, broken where they wrap around a periodic axis.
     auto polyline = [&](const std::vector<Eigen::Vector2d>& pts, const char* style) {
         std::vector<Eigen::Vector2d> run;
@@ -41,10 +42,19 @@ void write_cspace_svg(std::ostream& os, const CSpaceResult& space, const PlaceVo
             }
             run.clear();
         };
+        // Consecutive points are less than half a period apart (CSEG points are a cell apart,
+        // divisions carry points a quarter period apart), so the short way between them is the
+        // way the line goes; where it crosses a seam the line is drawn on past the frame (the
+        // clip path cuts it) and starts again from the other side.
         for (std::size_t k = 0; k < pts.size(); ++k) {
             if (!run.empty()) {
-                const Eigen::Vector2d d = pts[k] - run.back();
-                if (std::abs(d.x()) > 0.5 * r.axes[0].span() || std::abs(d.y()) > 0.5 * r.axes[1].span()) flush();
+                const Eigen::Vector2d d = difference(r, run.back(), pts[k]);
+                const Eigen::Vector2d raw = pts[k] - run.back();
+                if ((d - raw).norm() > 0.25 * std::min(r.axes[0].span(), r.axes[1].span())) {
+                    run.push_back(run.back() + d);
+                    flush();
+                    run.push_back(pts[k] - d);
+                }
             }
             run.push_back(pts[k]);
         }
@@ -52,15 +62,9 @@ void write_cspace_svg(std::ostream& os, const CSpaceResult& space, const PlaceVo
     };
     for (const Place& p : v.places) {
         if (p.kind == PlaceKind::cseg) polyline(p.points, "stroke=\"black\" stroke-width=\"2\"");
-        if (p.kind == PlaceKind::fsd) {
-            auto pts = p.points;
-            // A division is a straight segment; unwrap its end so it is drawn the short way round.
-            if (pts.size() == 2) {
-                pts[1] = pts[0] + difference(r, pts[0], pts[1]);
-                if (difference(r, pts[0], pts[1]).norm() == 0) pts[1][p.axis] += r.axes[static_cast<std::size_t>(p.axis)].span();
-            }
-            polyline(pts, "stroke=\"#3050c0\" stroke-dasharray=\"5,3\"");
-        }
+        // A division on a periodic axis carries points a quarter period apart at most
+        // (place_vocabulary.hpp), so the seam test above breaks it where it wraps.
+        if (p.kind == PlaceKind::fsd) polyline(p.points, "stroke=\"#3050c0\" stroke-dasharray=\"5,3\"");
         if (p.kind == PlaceKind::external_division) polyline(p.points, "stroke=\"#c03030\" stroke-dasharray=\"2,2\"");
         if (p.kind == PlaceKind::join)
             os << "<circle cx=\"" << X(p.points.front().x()) << "\" cy=\"" << Y(p.points.front().y())
@@ -72,7 +76,7 @@ void write_cspace_svg(std::ostream& os, const CSpaceResult& space, const PlaceVo
         for (const Place& p : v.places) {
             Eigen::Vector2d at = p.points.empty() ? Eigen::Vector2d::Zero() : p.points[p.points.size() / 2];
             if ((p.kind == PlaceKind::fsd || p.kind == PlaceKind::external_division) && p.points.size() == 2)
-                at = wrap(r, p.points[0] + 0.5 * difference(r, p.points[0], p.points[1]));
+                at = 0.5 * (p.points[0] + p.points[1]);  // not periodic along it: a straight piece
             const char* colour = p.kind == PlaceKind::face ? "#006000" : p.kind == PlaceKind::join ? "#800000" : "black";
             os << "<text x=\"" << X(at.x()) + 3 << "\" y=\"" << Y(at.y()) - 3 << "\" fill=\"" << colour << "\">" << p.id.value
                << "</text>\n";

@@ -86,6 +86,7 @@ PlaceRequest place_request(const Mechanism& m, const PairSpec& pair) {
     r.cspace.boundary_tolerance = m.settings.boundary_tolerance * unit;
     r.cspace.normal_zero_tolerance = m.settings.normal_zero_tolerance;
     r.merge_epsilon = m.settings.merge_epsilon;
+    r.gap_epsilon = m.settings.gap_epsilon;
     for (int k = 0; k < 2; ++k) {
         const PartId id = k == 0 ? pair.a : pair.b;
         const auto& axis = r.cspace.axes[static_cast<std::size_t>(k)];

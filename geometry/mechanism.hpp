@@ -32,6 +32,7 @@ struct MechanismSettings {
     double boundary_tolerance = 1e-8;     // bisection bracket: radians, or times the size for lengths
     double normal_zero_tolerance = 1e-6;  // unit-normal component taken as 0 (no flicker near an axis)
     double merge_epsilon = 0.0;           // 8.1.6 small irregularities, configuration units (0 = keep all)
+    double gap_epsilon = 0.0;             // 8.1.6 gaps (play) narrower than this collapse, config. units
     std::array<int, 2> grid{64, 64};      // samples per configuration-space axis
 };
 

@@ -33,6 +33,7 @@ void Checker::settings(const mast::SettingsSection& s, MechanismSettings& out) {
         else if (key == "boundary-tolerance") one(out.boundary_tolerance, false, 0.1);
         else if (key == "normal-zero-tolerance") one(out.normal_zero_tolerance, false, 1.0);
         else if (key == "merge-epsilon") one(out.merge_epsilon, true, std::numeric_limits<double>::infinity());
+        else if (key == "gap-epsilon") one(out.gap_epsilon, true, std::numeric_limits<double>::infinity());
         else if (key == "grid") {
             if (e.values.empty() || e.values.size() > 2) {
                 error(e, "setting 'grid' takes one or two whole numbers (samples per axis)");
@@ -44,7 +45,7 @@ void Checker::settings(const mast::SettingsSection& s, MechanismSettings& out) {
         } else {
             error(e.key, "unknown setting '" + e.key.text +
                              "'; the settings are chordal-tolerance, contact-tolerance, boundary-tolerance, normal-zero-tolerance, "
-                             "merge-epsilon, grid");
+                             "merge-epsilon, gap-epsilon, grid");
         }
     }
 }
@@ -79,7 +80,9 @@ void Checker::linkages(const mast::LinkagesSection& s, Mechanism& m) {
             if (good) error(e, "a linkage needs at least two parts");
             continue;
         }
-        // Parts on one shaft move as one body: the same degree of freedom.
+        // Parts on one shaft move as one body: the same degree of freedom. A part that failed
+        // its own checks is a placeholder whose degree of freedom is not known.
+        if (std::any_of(l.parts.begin(), l.parts.end(), [&](PartId id) { return m.parts[id].profiles.empty(); })) continue;
         const Part& first = m.parts[l.parts[0]];
         for (std::size_t i = 1; i < l.parts.size(); ++i) {
             const Part& p = m.parts[l.parts[i]];
@@ -114,6 +117,8 @@ void Checker::pairs(const mast::PairsSection& s, Mechanism& m) {
             error(e.b, "a part cannot form a kinematic pair with itself ('" + pa.name + "')");
             continue;
         }
+        // A part that failed its own checks (a placeholder) has no known degree of freedom.
+        if (pa.profiles.empty() || pb.profiles.empty()) continue;
         if (m.same_shaft(*a, *b)) {
             error(e.b, "'" + pa.name + "' and '" + pb.name + "' share a shaft (Linkages), so they move as one body and cannot collide: they cannot form a kinematic pair");
             continue;
@@ -258,12 +263,11 @@ std::optional<Mechanism> check_mechanism(const mast::MechanismFile& file, const 
         for (const auto& e : parts->entries) c.part(e, m);
     }
     // Parts that failed their checks are placeholders without profiles: the references below
-    // still resolve, but nothing is built on them.
-    if (c.ok) {
-        if (linkages) c.linkages(*linkages, m);
-        if (pairs) c.pairs(*pairs, m);
-        if (forces) c.forces(*forces, m);
-    }
+    // still resolve, so the other sections are checked too (every error in one run, in source
+    // order), but nothing that needs a part's shape or motion is checked on a placeholder.
+    if (linkages) c.linkages(*linkages, m);
+    if (pairs) c.pairs(*pairs, m);
+    if (forces) c.forces(*forces, m);
     if (!c.ok) return std::nullopt;
     m.source = src;
     return m;

@@ -10,7 +10,8 @@
 namespace qm::geometry {
 namespace {
 
-constexpr const char* magic = "qm-place-cache/1";
+// /2: divisions on a periodic axis carry intermediate points (their direction); faces a gap flag.
+constexpr const char* magic = "qm-place-cache/2";
 
 void write_text(std::ostream& os, const std::string& s) { os << s.size() << ' ' << s; }
 
@@ -42,7 +43,7 @@ std::string place_cache_material(const PairOracle& oracle, const PlaceRequest& r
     std::ostringstream os;
     os << std::hexfloat << magic << '\n' << oracle.fingerprint() << '\n';
     for (const auto& a : r.cspace.axes) os << "axis " << a.lo << ' ' << a.hi << ' ' << a.periodic << ' ' << a.samples << '\n';
-    os << "tol " << r.cspace.boundary_tolerance << ' ' << r.cspace.normal_zero_tolerance << " merge " << r.merge_epsilon << '\n';
+    os << "tol " << r.cspace.boundary_tolerance << ' ' << r.cspace.normal_zero_tolerance << " merge " << r.merge_epsilon << " gap " << r.gap_epsilon << '\n';
     for (const auto& x : r.external) {
         os << "external " << x.coordinate << ' ' << x.value << ' ';
         write_text(os, x.label);
@@ -79,7 +80,7 @@ bool PlaceCache::store(const std::string& material, const PlaceVocabulary& v) co
         os << '\n' << v.places.size() << ' ' << v.adjacency.size() << '\n';
         for (const Place& p : v.places) {
             os << static_cast<int>(p.kind) << ' ' << static_cast<int>(p.join_kind) << ' ' << p.axis << ' '
-               << (p.concave ? (*p.concave ? 1 : 0) : -1) << ' ' << p.extent << ' ' << p.normals.size();
+               << (p.concave ? (*p.concave ? 1 : 0) : -1) << ' ' << p.extent << ' ' << p.gap << ' ' << p.normals.size();
             for (auto n : p.normals) os << ' ' << int{n.s[0]} << ' ' << int{n.s[1]};
             os << ' ' << p.points.size();
             for (const auto& x : p.points) os << ' ' << x.x() << ' ' << x.y();
@@ -116,7 +117,7 @@ CacheLoad PlaceCache::load(const std::string& material) const {
         int kind = 0, jk = 0, concave = 0;
         std::size_t nn = 0, npts = 0;
         if (!(is >> kind >> jk >> p.axis >> concave) || kind < 0 || kind > 4 || jk < 0 || jk > 3) return out;
-        if (!read_double(is, p.extent) || !(is >> nn) || nn > 16) return out;
+        if (!read_double(is, p.extent) || !(is >> p.gap >> nn) || nn > 16) return out;
         p.kind = static_cast<PlaceKind>(kind);
         p.join_kind = static_cast<JoinKind>(jk);
         if (concave >= 0) p.concave = concave == 1;

@@ -47,6 +47,7 @@ void write_place_json(std::ostream& os, const CSpaceRequest& space, const PlaceV
             string(os, p.label);
         }
         if (p.kind == PlaceKind::face) os << ",\"samples\":" << p.extent;
+        if (p.gap) os << ",\"gap\":true";
         os << ",\"points\":[";
         for (std::size_t k = 0; k < p.points.size(); ++k) {
             if (k) os << ',';

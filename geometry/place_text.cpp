@@ -10,6 +10,7 @@ void write_place_text(std::ostream& os, const PlaceVocabulary& v) {
     for (const Place& p : v.places) {
         os << "place " << p.id.value << ' ' << to_string(p.kind);
         if (p.kind == PlaceKind::join) os << ' ' << to_string(p.join_kind);
+        if (p.gap) os << " gap";  // 8.1.6: the play collapsed with its CSEGs; normals: theirs
         if (!p.normals.empty()) {
             os << " normal";
             for (auto n : p.normals) os << ' ' << to_string(n);

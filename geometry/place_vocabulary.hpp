@@ -38,8 +38,12 @@ struct Place {
     JoinKind join_kind = JoinKind::normal_change;
     int axis = -1;                       // FSD / external division: the axis it runs along
     std::string label;                   // external division: the force change it marks
-    std::vector<Eigen::Vector2d> points; // CSEG/FSD: polyline; join: one point; face: one sample
+    std::vector<Eigen::Vector2d> points; // CSEG/division: polyline in its direction (a division on a
+                                         // periodic axis: points at most a quarter period apart, so
+                                         // the way round is told); join: one point; face: one sample
     double extent = 0.0;                 // face: number of grid samples it covers
+    bool gap = false;                    // face: 8.1.6, a gap narrower than the gap epsilon, collapsed
+                                         // with the CSEGs bounding it (normals: theirs)
 };
 
 struct Adjacency {

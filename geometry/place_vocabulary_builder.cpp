@@ -188,7 +188,12 @@ void Builder::emit_divisions() {
             p.kind = d.kind;
             p.axis = d.axis;
             p.label = d.label;
-            p.points = {wrap(r, d.at(t0)), wrap(r, d.at(t1))};
+            // On a periodic axis the two ends alone do not say which way round the division
+            // runs (a piece can be half the period or longer), so it carries points at most a
+            // quarter period apart, in its own direction.
+            const auto& ax = r.axes[static_cast<std::size_t>(d.axis)];
+            const int steps = ax.periodic ? std::max(2, static_cast<int>(std::ceil(4 * (t1 - t0) / ax.span()))) : 1;
+            for (int k = 0; k <= steps; ++k) p.points.push_back(wrap(r, d.at(t0 + (t1 - t0) * k / steps)));
             const PlaceId id = add(std::move(p));
             Eigen::Vector2d tangent = Eigen::Vector2d::Zero();
             tangent[d.axis] = d.dir;
@@ -217,9 +222,9 @@ PlaceResult build_place_vocabulary(const PairOracle& oracle, const PlaceRequest&
             out.message = "external division '" + x.label + "' names no configuration coordinate";
             return out;
         }
-    if (!(request.merge_epsilon >= 0)) {
+    if (!(request.merge_epsilon >= 0) || !(request.gap_epsilon >= 0)) {
         out.status = PlaceStatus::bad_request;
-        out.message = "merge epsilon must not be negative";
+        out.message = "merge and gap epsilons must not be negative";
         return out;
     }
     detail::Builder b{oracle, request, request.cspace, out.space, out.vocabulary, {}, {}, {}, {}};
@@ -261,6 +266,7 @@ PlaceResult build_place_vocabulary(const PairOracle& oracle, const PlaceRequest&
         face_places.push_back(b.add(std::move(p)));
     }
     detail::add_adjacency(oracle, r, b.lines, faces, face_places, out.vocabulary);
+    detail::collapse_gaps(oracle, out.space, faces, face_places, request.gap_epsilon, out.vocabulary);
     return out;
 }
 

@@ -31,6 +31,8 @@ struct PlaceRequest {
     CSpaceRequest cspace;
     double merge_epsilon = 0.0;  // 8.1.6: a CSEG run shorter than this between two runs of one
                                  // normal takes their normal (0 = keep every run)
+    double gap_epsilon = 0.0;    // 8.1.6: a full face narrower than this (configuration units)
+                                 // is collapsed with its CSEGs into one place (0 = keep gaps)
     std::vector<ExternalDivision> external;
 };
 

@@ -59,4 +59,11 @@ private:
 void add_adjacency(const PairOracle& oracle, const CSpaceRequest& request, const std::vector<LineInfo>& lines,
                    const FaceLocator& faces, const std::vector<PlaceId>& face_places, PlaceVocabulary& vocabulary);
 
+// 8.1.6: every full face narrower than epsilon (the free run through each of its samples along
+// one axis or the other, i.e. the play of one part with the other held still) becomes, with the
+// CSEGs bounding it and the joins and divisions that lead only to them, one face marked `gap`;
+// transitions are renamed. Blocked space is never collapsed. No effect when epsilon is 0.
+void collapse_gaps(const PairOracle& oracle, const CSpaceResult& space, const FaceLocator& faces,
+                   const std::vector<PlaceId>& face_places, double epsilon, PlaceVocabulary& vocabulary);
+
 }  // namespace qm::geometry::detail
