@@ -31,7 +31,8 @@ std::optional<Entry> parse_json(std::string_view text, std::size_t& error_at, st
     const auto object = named<class object_tag>("an object name in a JSON string", json_string[set(e.object)]);
     const auto kind = named<class kind_tag>("\"translation\" or \"rotation\"", json_string[set(e.kind)]);
     const auto direction = named<class direction_tag>("a direction in a JSON string, like \"(0 +)\"", json_string[set(e.direction)]);
-    const auto inner = x3::lit('{') > kind > ':' > direction > '}';
+    const auto inner = named<class inner_tag>("a JSON object like {\"rotation\": \"(-)\"}",
+                                              x3::lit('{') > kind > ':' > direction > '}');
     const auto motion = x3::lit('{') > object > ':' > inner > '}';
     const auto freedom = (x3::lit('{') >> x3::lit("\"freedom\"")[flag]) > ':' > x3::lit('{') > object > ':' > inner > '}' > '}';
     auto first = text.begin();
@@ -41,7 +42,12 @@ std::optional<Entry> parse_json(std::string_view text, std::size_t& error_at, st
         expected = "a JSON entry like {\"follower\": {\"rotation\": \"(-)\"}}";
     } catch (const x3::expectation_failure<std::string_view::const_iterator>& f) {
         error_at = static_cast<std::size_t>(f.where() - text.begin());
-        expected = f.which() == "'\"'" || f.which().empty() ? "a closing '\"'" : f.which() == "eoi" ? "the end of the query" : f.which();
+        const std::string& which = f.which();
+        expected = which == "'\"'" || which.empty() ? "a closing '\"'"
+                   : which == "eoi"                   ? "the end of the query"
+                   // Any parser left unnamed would print its mangled C++ type: say it in words.
+                   : which.find("boost") != std::string::npos ? "a JSON entry like {\"follower\": {\"rotation\": \"(-)\"}}"
+                                                              : which;
     }
     return std::nullopt;
 }

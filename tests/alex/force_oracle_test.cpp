@@ -21,8 +21,9 @@
 // - a pushed force (a torque passed on one contact) makes its object driven, like any force;
 // - Def 38 lists v and -v apart from the half planes that also hold them: v is nearest, -v furthest;
 // - what is pushed along (Table 3.2) by something a given motion pushes is exempt from its forces'
-//   threshold too, and linked objects share every force, pushed ones included. The product reads
-//   both more narrowly: two disagreements, each with a skipped case below and a scene in repros/.
+//   threshold too, and linked objects share every force, pushed ones included. (The product first
+//   read both more narrowly; this oracle found it, and the rules were changed: the two cases
+//   below keep the scenes.)
 // Found: everything else agrees exactly (see the MESSAGEs; soak runs with QM_FORCE_ORACLE_PACKS).
 #include "alex/analysis.hpp"
 #include "alex/scene_parser.hpp"
@@ -1284,27 +1285,22 @@ TEST_CASE("alex/force_oracle: transmission and several driven objects") {
     CHECK(st.differing == 0);
 }
 
-// The product exempts from the nearness threshold only what a given motion pushes directly, not
-// what is pushed along through another object (repros/given_push_through_intermediary.def and the
-// skipped case below). Situations where that alone explains the difference are counted apart.
 TEST_CASE("alex/force_oracle: forces with given current motions") {
     const std::size_t packs = packs_for(150, 10);
-    Readings one_hop;
-    one_hop.given_push_transitive = false;
-    const RunStats st = run_family(Family::given, 2, packs, 0x9173u, &one_hop);
+    const RunStats st = run_family(Family::given, 2, packs, 0x9173u);
     report(Family::given, 2, packs, st);
     CHECK(st.differing == 0);
 }
 
-// Disagreement found by the oracle (skipped until the rules change; repros/given_push_through_
-// intermediary.def has the same scene and the argument). A given motion pushes B (no force), B
+// A disagreement this oracle found (rules/given_motion.rules then exempted only what a given motion
+// pushes directly; fixed by pushed-on-by-translation/rotation). A given motion pushes B (no force), B
 // pushes C, which rests on the table under gravity (net force zero: its weight is blocked).
 // Table 3.2: the pushed object must move away if it can, and "if none of these motions are possible
 // the body cannot move"; C can slide right. docs/LAWS.md ("Given current motion") exempts what a
 // given motion pushes from its own forces' threshold "since being pushed, not a force, is what
-// moves it", and C is moved by being pushed, through B. The product lists no combination at all,
-// though with A touching C directly (scenarios/alex/block_boulder.def) C moves.
-TEST_CASE("alex/force_oracle: a given motion pushes through an object with no force" * doctest::skip()) {
+// moves it", and C is moved by being pushed, through B. The product listed no combination at all,
+// though with A touching C directly (scenarios/alex/block_boulder.def) C moved.
+TEST_CASE("alex/force_oracle: a given motion pushes through an object with no force") {
     const Scene s = read_ok(R"((Defscenario 2 given-push-through-intermediary
   Individuals (a b c table)
   Surfaces ((a (a-r (+ 0) (- 0))) (b (b-l (- 0) (+ 0)) (b-r (+ 0) (- 0)))
@@ -1323,26 +1319,21 @@ TEST_CASE("alex/force_oracle: a given motion pushes through an object with no fo
     CHECK(a.situations()[0].combination_count() == 2);
 }
 
-// The product shares external and transmitted forces over a linkage but not pushed ones
-// (repros/linked_pushed_force.def and the skipped case below); situations that this alone explains
-// are counted apart.
 TEST_CASE("alex/force_oracle: linked objects share their forces") {
     const std::size_t packs = packs_for(150, 10);
-    Readings unshared_push;
-    unshared_push.linked_share = 1;
-    const RunStats st = run_family(Family::linked, 2, packs, 0x1127u, &unshared_push);
+    const RunStats st = run_family(Family::linked, 2, packs, 0x1127u);
     report(Family::linked, 2, packs, st);
     CHECK(st.differing == 0);
 }
 
-// Disagreement found by the oracle (skipped until the rules change; repros/linked_pushed_force.def
-// has the scene and the argument). d, pinned and pushed down right of its pivot, turns clockwise
+// A disagreement this oracle found (rules/linkage.rules then shared external and transmitted forces
+// but not pushed ones; fixed by linked-pushed-force). d, pinned and pushed down right of its pivot, turns clockwise
 // into a's top, so a receives a pushed force (0 -); a is linked to b (Def 21), which a spring lifts.
 // docs/LAWS.md: linked objects "share their forces (equal net force)", and a pushed force "counts in
 // its net force"; section 8.3.1: forces propagate "either by linkage or by contact". So a and b both
 // have net force (0 ?), and d turning clockwise with a and b going down is as near as going up.
-// The product gives b only the spring, (0 +), and so rules out every downward motion.
-TEST_CASE("alex/force_oracle: a pushed force is shared over a linkage" * doctest::skip()) {
+// The product gave b only the spring, (0 +), and so ruled out every downward motion.
+TEST_CASE("alex/force_oracle: a pushed force is shared over a linkage") {
     const Scene s = read_ok(R"((Defscenario 2 linked-pushed-force
   Individuals (d a b)
   Surfaces ((d (d-r (0 -) (- +))) (a (a-top (0 +) (0 -))) (b (b-side (+ 0) (- 0))))
