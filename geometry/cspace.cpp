@@ -49,6 +49,7 @@ Eigen::Vector2d bisect_contact(const PairOracle& oracle, Eigen::Vector2d a, bool
     // Invariant: blocked(a) == blocked_a and blocked(b) != blocked_a; the contact lies between.
     while ((b - a).norm() > tolerance) {
         const Eigen::Vector2d m = 0.5 * (a + b);
+        if (m == a || m == b) break;  // the bracket is one ulp wide: no finer answer exists
         ++calls;
         if (oracle.blocked(m) == blocked_a)
             a = m;

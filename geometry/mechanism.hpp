@@ -36,6 +36,13 @@ struct MechanismSettings {
     std::array<int, 2> grid{64, 64};      // samples per configuration-space axis
 };
 
+// The finest settings accepted: a few hundred ulps above what double arithmetic resolves on a part of
+// size 1 (bisection beyond them makes no progress; arcs would need millions of chords).
+inline constexpr double min_chordal_tolerance = 1e-9;
+inline constexpr double min_contact_tolerance = 1e-12;
+inline constexpr double min_boundary_tolerance = 1e-13;
+inline constexpr double min_normal_zero_tolerance = 1e-15;
+
 // A window restricts a rotating part's configuration-space axis to [lo, hi] radians (not
 // periodic): the region of interest, e.g. the anchor's swing. Its ends are `limit` joins.
 struct AxisWindow {

@@ -21,19 +21,23 @@ void Checker::settings(const mast::SettingsSection& s, MechanismSettings& out) {
             continue;
         }
         seen[key] = &e;
-        auto one = [&](double& target, bool zero_allowed, double below) {
+        // `least` keeps a positive tolerance above what double arithmetic can resolve: below it
+        // bisection stops making progress and arcs would need more chords than memory holds.
+        auto one = [&](double& target, bool zero_allowed, double least, double below) {
             if (e.values.size() != 1) return error(e, "setting '" + key + "' takes one number");
             const double x = value(e.values[0]);
             if (zero_allowed ? !(x >= 0) : !(x > 0)) return error(e.values[0], key + " must be " + (zero_allowed ? "at least 0" : "positive") + ", not " + num(x));
+            if (!zero_allowed && x < least) return error(e.values[0], key + " must be at least " + num(least) + " (finer than double precision can resolve), not " + num(x));
             if (!(x < below)) return error(e.values[0], key + " must be below " + num(below) + ", not " + num(x));
             target = x;
         };
-        if (key == "chordal-tolerance") one(out.chordal_tolerance, false, 0.5);
-        else if (key == "contact-tolerance") one(out.contact_tolerance, false, 0.5);
-        else if (key == "boundary-tolerance") one(out.boundary_tolerance, false, 0.1);
-        else if (key == "normal-zero-tolerance") one(out.normal_zero_tolerance, false, 1.0);
-        else if (key == "merge-epsilon") one(out.merge_epsilon, true, std::numeric_limits<double>::infinity());
-        else if (key == "gap-epsilon") one(out.gap_epsilon, true, std::numeric_limits<double>::infinity());
+        constexpr double unbounded = std::numeric_limits<double>::infinity();
+        if (key == "chordal-tolerance") one(out.chordal_tolerance, false, min_chordal_tolerance, 0.5);
+        else if (key == "contact-tolerance") one(out.contact_tolerance, false, min_contact_tolerance, 0.5);
+        else if (key == "boundary-tolerance") one(out.boundary_tolerance, false, min_boundary_tolerance, 0.1);
+        else if (key == "normal-zero-tolerance") one(out.normal_zero_tolerance, false, min_normal_zero_tolerance, 1.0);
+        else if (key == "merge-epsilon") one(out.merge_epsilon, true, 0.0, unbounded);
+        else if (key == "gap-epsilon") one(out.gap_epsilon, true, 0.0, unbounded);
         else if (key == "grid") {
             if (e.values.empty() || e.values.size() > 2) {
                 error(e, "setting 'grid' takes one or two whole numbers (samples per axis)");

@@ -72,7 +72,9 @@ void extend_bounds(const Profile& p, Eigen::Vector2d& lo, Eigen::Vector2d& hi) n
 [[nodiscard]] Profile polygon_profile(const std::vector<Eigen::Vector2d>& vertices);
 
 // Number of chords an arc of radius r and sweep |s| needs so that no chord is farther than
-// `chordal_tolerance` from the arc (sagitta r (1 - cos(s / 2n))). Pre: chordal_tolerance > 0.
+// `chordal_tolerance` from the arc (sagitta r (1 - cos(s / 2n))). Pre: chordal_tolerance > 0 and
+// the answer is at most max_chords_per_arc (the scene checker's least tolerance keeps it so).
+inline constexpr double max_chords_per_arc = 1e6;
 [[nodiscard]] int chords_for(double radius, double sweep, double chordal_tolerance);
 // Vertices of the profile with every arc replaced by chords within `chordal_tolerance` of it.
 // Every vertex lies on the exact boundary; segment i begins at index first_vertex[i].

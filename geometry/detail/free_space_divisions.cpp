@@ -162,19 +162,10 @@ void Builder::add_external_divisions() {
             divisions.push_back(d);
             continue;
         }
-        // Each maximal free run of samples, extended to the contacts on both sides.
-        const int stop = ax.periodic ? n : n - 1;
-        for (int m = 0; m < stop; ++m) {
-            const int m1 = (m + 1) % n;
-            if (!(b[static_cast<std::size_t>(m)] && !b[static_cast<std::size_t>(m1)])) continue;
-            Eigen::Vector2d lo = at(m), hi = lo;
-            hi[axis] += ax.step();
-            const Eigen::Vector2d s = bisect_contact(oracle, lo, true, hi, r.boundary_tolerance, space.oracle_calls);
-            Division d{PlaceKind::external_division, axis, 1, s, 0.0, x.label, {}};
-            d.joins.push_back({0.0, PlaceId{0}});
-            end_on_boundary(d, 0.0, JoinKind::fsd_end);
-            d.joins.erase(d.joins.begin());
-            int k = m1;
+        // Each maximal free run of samples, extended to the contacts on both sides, or to the axis'
+        // limits on a non-periodic axis (a run may be free at either end).
+        auto finish = [&](Division& d, const Eigen::Vector2d& s, int first_free) {
+            int k = first_free;
             while (!b[static_cast<std::size_t>(k)] && (ax.periodic || k + 1 < n)) k = (k + 1) % n;
             if (b[static_cast<std::size_t>(k)]) {
                 Eigen::Vector2d a2 = at((k + n - 1) % n), b2 = at(k);
@@ -189,6 +180,24 @@ void Builder::add_external_divisions() {
                 d.joins.push_back({d.length, add_join(JoinKind::limit, at(n - 1), {})});
             }
             divisions.push_back(d);
+        };
+        if (!ax.periodic && !b[0]) {
+            Division d{PlaceKind::external_division, axis, 1, at(0), 0.0, x.label, {}};
+            d.joins.push_back({0.0, add_join(JoinKind::limit, at(0), {})});
+            finish(d, at(0), 0);
+        }
+        const int stop = ax.periodic ? n : n - 1;
+        for (int m = 0; m < stop; ++m) {
+            const int m1 = (m + 1) % n;
+            if (!(b[static_cast<std::size_t>(m)] && !b[static_cast<std::size_t>(m1)])) continue;
+            Eigen::Vector2d lo = at(m), hi = lo;
+            hi[axis] += ax.step();
+            const Eigen::Vector2d s = bisect_contact(oracle, lo, true, hi, r.boundary_tolerance, space.oracle_calls);
+            Division d{PlaceKind::external_division, axis, 1, s, 0.0, x.label, {}};
+            d.joins.push_back({0.0, PlaceId{0}});
+            end_on_boundary(d, 0.0, JoinKind::fsd_end);
+            d.joins.erase(d.joins.begin());
+            finish(d, s, m1);
         }
     }
 }

@@ -52,10 +52,16 @@ struct Checker {  // the checking of one metric scene
         ok = false;
     }
     [[nodiscard]] SourceLocation where(const Node& n) const { return src.locate(pos.offset_of(n)); }
-    // The number's value, or an error if it is not finite (X3 reads "inf" and "nan").
+    // The number's value, or an error if it is not finite (X3 reads "inf" and "nan") or so large
+    // that FCL's double arithmetic loses the scene's detail (its eigen-solvers stop converging).
+    static constexpr double largest_magnitude = 1e9;
     double value(const mast::Number& n) {
         if (!std::isfinite(n.value)) {
             error(n, "expected a finite number");
+            return 0.0;
+        }
+        if (std::abs(n.value) > largest_magnitude) {
+            error(n, "expected a number of magnitude at most " + num(largest_magnitude) + ", not " + num(n.value));
             return 0.0;
         }
         return n.value;

@@ -137,3 +137,13 @@ TEST_CASE("geometry/cspace: bad requests are reported in the result, not thrown"
     CHECK(!classify_cspace(none, bad).message.empty());
     CHECK(classify_cspace(none, req).status == CSpaceStatus::ok);
 }
+
+TEST_CASE("geometry/cspace: bisection ends at a bracket one ulp wide, whatever the tolerance") {
+    // A tolerance finer than a double can resolve used to loop for ever once the midpoint equalled
+    // an end; the scene checker refuses such settings, but the algorithm must not rely on it.
+    const Band band(0.3, 0.6);
+    std::uint64_t calls = 0;
+    const Eigen::Vector2d q = bisect_contact(band, {0.5, 0.25}, false, {0.5, 0.35}, 1e-300, calls);
+    CHECK(q[1] == doctest::Approx(0.3).epsilon(1e-15));
+    CHECK(calls < 200);  // about 53 halvings to exhaust a double's mantissa
+}

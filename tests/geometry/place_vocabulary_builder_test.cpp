@@ -252,6 +252,34 @@ TEST_CASE("geometry/place_vocabulary_builder: external divisions are ignored in 
     CHECK(build_place_vocabulary(band, req).status == PlaceStatus::bad_request);
 }
 
+TEST_CASE("geometry/place_vocabulary_builder: an external division free at an axis limit runs from that limit") {
+    // On a non-periodic q1 axis [0, 1] with a band blocked at (y0, y1), the division line q0 = 0.5
+    // has two free runs, one from each limit to the band; the run from the low limit used to be lost
+    // (a run was only started at a blocked-to-free change). Mirrored bands must give the same.
+    for (const auto& [y0, y1] : {std::pair{0.3, 0.6}, std::pair{0.4, 0.7}}) {
+        CAPTURE(y0);
+        Band band(y0, y1);
+        auto req = square(0, 1, true);
+        req.cspace.axes[1].periodic = false;
+        req.external.push_back({0, 0.5, "torque changes sign"});
+        const auto v = build_place_vocabulary(band, req).vocabulary;
+        std::vector<double> lows, highs;
+        for (const auto& p : v.places)
+            if (p.kind == PlaceKind::external_division) {
+                REQUIRE(p.points.size() >= 2);
+                lows.push_back(std::min(p.points.front()[1], p.points.back()[1]));
+                highs.push_back(std::max(p.points.front()[1], p.points.back()[1]));
+            }
+        REQUIRE(lows.size() == 2);
+        std::sort(lows.begin(), lows.end());
+        std::sort(highs.begin(), highs.end());
+        CHECK(lows[0] == doctest::Approx(0.0));
+        CHECK(highs[0] == doctest::Approx(y0).epsilon(1e-6));
+        CHECK(lows[1] == doctest::Approx(y1).epsilon(1e-6));
+        CHECK(highs[1] == doctest::Approx(1.0));
+    }
+}
+
 TEST_CASE("geometry/place_vocabulary_builder: 8.1.6 merge epsilon absorbs a short run of another normal") {
     // A flat boundary with a tiny notch: blocked iff q1 < 0.5, or q1 < 0.52 for q0 in (0.5, 0.52).
     class Notch final : public PairOracle {

@@ -5,6 +5,7 @@
 #include "geometry/segment_queries.hpp"
 
 #include <doctest/doctest.h>
+#include <cmath>
 #include <numbers>
 #include <random>
 
@@ -107,4 +108,17 @@ TEST_CASE("geometry/profile_check: the exact inside test agrees with the tessell
         ++checked;
     }
     CHECK(checked > 1900);
+}
+
+TEST_CASE("geometry/profile_check: chord counts stay exact for tolerances far below the radius") {
+    // acos(1 - t/r) rounds to 0 once t/r is below a double's epsilon; the sine form does not.
+    for (const double t : {1e-2, 1e-6, 1e-9}) {
+        CAPTURE(t);
+        const int n = chords_for(1.0, 2 * std::numbers::pi, t);
+        const double sagitta = 1.0 - std::cos(std::numbers::pi / n);
+        CHECK(sagitta <= t * (1 + 1e-6));
+        CHECK(n >= 2);
+        if (n > 2) CHECK(1.0 - std::cos(std::numbers::pi / (n - 1)) > t * (1 - 1e-6));  // the fewest that do
+    }
+    CHECK_THROWS(static_cast<void>(chords_for(1.0, 2 * std::numbers::pi, 1e-17)));  // beyond max_chords_per_arc: refused
 }
