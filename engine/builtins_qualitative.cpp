@@ -1,4 +1,5 @@
-// engine/builtins_qualitative.cpp: thesis section 2.3 (Tables 2.2-2.3, Defs 1, 4, 12-14, 38).
+// engine/builtins_qualitative.cpp: thesis section 2.3 (Tables 2.2-2.3, Defs 1, 4, 12-14, 38), and
+// Table 2.2 with a known comparison of magnitudes (qsum-compared).
 #include "engine/builtins_qualitative.hpp"
 
 namespace qm::engine {
@@ -41,6 +42,15 @@ int nearness(const std::string& v, const std::string& x) {
     if (open_half_plane(v, x)) return 1;
     if (open_half_plane(neg(v), x)) return 4;
     return 3;
+}
+
+// Table 2.2 when the magnitudes are compared: a + b where w is the sign of |a| - |b|. Where a and
+// b have opposite signs the larger one's sign is the sum's ((0): they cancel; (?): not known, as
+// Table 2.2); elsewhere the comparison does not matter and the sum is Table 2.2's.
+char sign_sum_compared(char a, char b, char w) {
+    const bool opposite = (a == '+' && b == '-') || (a == '-' && b == '+');
+    if (!opposite) return sign_sum(a, b);
+    return w == '+' ? a : w == '-' ? b : w == '0' ? '0' : '?';
 }
 
 using Args = std::span<const ValueId>;
@@ -167,6 +177,16 @@ BuiltinFn on_directions(const char* name, F f) {
     };
 }
 
+// A 1-based component index of a direction of `size` components, or an error text.
+std::string component_index(const ValueTable& v, ValueId x, std::size_t size, const char* name, std::size_t& out) {
+    const Value& val = v.value(x);
+    if (val.kind != ValueKind::integer || val.integer < 1 || static_cast<std::uint64_t>(val.integer) > size)
+        return std::string("'") + name + "' expects a component number from 1 to " + std::to_string(size) + ", not " +
+               v.print(x);
+    out = static_cast<std::size_t>(val.integer - 1);
+    return {};
+}
+
 std::vector<std::string> all_directions(std::size_t n) {
     std::vector<std::string> out{""};
     for (std::size_t i = 0; i < n; ++i) {
@@ -256,6 +276,43 @@ void register_qualitative_builtins(BuiltinRegistry& r) {
               for (char& c : out) c = c == '?' ? '0' : c;
               return BuiltinResult::of(v.direction(out));
           }));
+    r.add("qsum-compared", K::function, 3, 3, [](ValueTable& v, Args a) {
+        std::vector<std::string> d;
+        if (auto e = directions(v, a.first(2), "qsum-compared", d); !e.empty()) return BuiltinResult::fail(e);
+        const Value& w = v.value(a[2]);
+        if (w.kind != ValueKind::direction || w.text.size() != 1)
+            return BuiltinResult::fail("'qsum-compared' expects a single sign like (+) as its third argument, not " +
+                                       v.print(a[2]));
+        std::string out = d[0];
+        for (std::size_t i = 0; i < out.size(); ++i) out[i] = sign_sum_compared(d[0][i], d[1][i], w.text[0]);
+        return BuiltinResult::of(v.direction(out));
+    });
+    r.add("components", K::function, 1, 1, [](ValueTable& v, Args a) {
+        const Value& d = v.value(a[0]);
+        if (d.kind != ValueKind::direction) return BuiltinResult::fail("'components' expects a direction, not " + v.print(a[0]));
+        return BuiltinResult::of(v.integer(static_cast<std::int64_t>(d.text.size())));
+    });
+    r.add("component", K::function, 2, 2, [](ValueTable& v, Args a) {
+        const Value& d = v.value(a[0]);
+        if (d.kind != ValueKind::direction) return BuiltinResult::fail("'component' expects a direction, not " + v.print(a[0]));
+        std::size_t i = 0;
+        if (auto e = component_index(v, a[1], d.text.size(), "component", i); !e.empty()) return BuiltinResult::fail(e);
+        return BuiltinResult::of(v.direction(std::string(1, d.text[i])));
+    });
+    r.add("with-component", K::function, 3, 3, [](ValueTable& v, Args a) {
+        const Value& d = v.value(a[0]);
+        const Value& s = v.value(a[2]);
+        if (d.kind != ValueKind::direction)
+            return BuiltinResult::fail("'with-component' expects a direction, not " + v.print(a[0]));
+        if (s.kind != ValueKind::direction || s.text.size() != 1)
+            return BuiltinResult::fail("'with-component' expects a single sign like (+) as its third argument, not " +
+                                       v.print(a[2]));
+        std::size_t i = 0;
+        if (auto e = component_index(v, a[1], d.text.size(), "with-component", i); !e.empty()) return BuiltinResult::fail(e);
+        std::string out = d.text;
+        out[i] = s.text[0];
+        return BuiltinResult::of(v.direction(out));
+    });
     r.add("qsum-of", K::function, 1, 1, [](ValueTable& v, Args a) {
         std::vector<std::string> xs;
         if (auto e = vectors(v, a[0], "qsum-of", xs); !e.empty()) return BuiltinResult::fail(e);

@@ -12,7 +12,11 @@
 //              rotations have 1 component in 2-D and 3 in 3-D), zero-translation n, zero-rotation n,
 //              nearness v x (Def 38 rank 0..5; an ambiguous v takes the nearest of its resolutions),
 //              qsum-of s (the qualitative sum of a set's directions; a direction is its own sum),
-//              set-add s x (s with x added; to collect values in an aggregate).
+//              set-add s x (s with x added; to collect values in an aggregate), qsum-compared a b w
+//              (qsum when the magnitudes are known to compare as w, the sign of |a| - |b|: where a and b
+//              have opposite signs the larger one's sign, 0 for (0), ? for (?); elsewhere as qsum),
+//              components v (the number of signs of v), component v i (the i-th sign, 1-based, as a
+//              1-tuple), with-component v i s (v with its i-th sign replaced by the 1-tuple s).
 //   tests      half-plane a b (dot sign + or 0), open-half-plane a b (dot sign +; an ambiguous dot
 //              product counts as false: the liberal bias of section 7.3), outside-open-half-plane a b
 //              (the negation of open-half-plane), zero? v, nonzero? v.
@@ -20,7 +24,8 @@
 //              direction or a set of directions in either place and hold iff they hold for every
 //              pair (outside-: for no pair), i.e. a set stands for the intersection of its elements'
 //              half planes (the potential contacts of two corners, Def 26).
-// Errors:     wrong value kinds, mismatched dimensions, a rotation of the wrong arity, dimensions other than 2 and 3.
+// Errors:     wrong value kinds, mismatched dimensions, a rotation of the wrong arity, dimensions other than 2 and 3,
+//             a component number outside 1..the direction's size.
 // Knows nothing of the ATMS and of laws: this is mathematics, not mechanics.
 #pragma once
 #include "engine/builtin_registry.hpp"

@@ -168,3 +168,56 @@ TEST_CASE("engine/builtins_qualitative: vector sums, negation, direction sets, n
     CHECK(!apply("qsum", {dir("+"), dir("++")}).error.empty());
     CHECK(!apply("neg", {values.symbol("up")}).error.empty());
 }
+
+TEST_CASE("engine/builtins_qualitative: qsum-compared is the sign of a real sum whose magnitudes compare as w") {
+    // Every sign pair and comparison against sampled reals x, y with those signs and sign(|x| - |y|) = w:
+    // a definite answer must be the sign of every such x + y; ? must be justified by samples of both signs.
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> magnitude(0.1, 10.0);
+    for (char a : {'+', '0', '-'})
+        for (char b : {'+', '0', '-'})
+            for (char w : {'+', '0', '-', '?'}) {
+                const std::string got = values.value(*apply("qsum-compared", {dir({a}), dir({b}), dir({w})}).value).text;
+                std::set<char> sums;
+                for (int i = 0; i < 400; ++i) {
+                    double m = magnitude(rng), n = magnitude(rng);
+                    if (a == '0') m = 0;
+                    if (b == '0') n = 0;
+                    // Only samples whose magnitudes compare as w (any comparison for ?).
+                    const char cmp = sign_of(m - n);
+                    if (w != '?' && cmp != w) continue;
+                    sums.insert(sign_of((a == '-' ? -m : m) + (b == '-' ? -n : n)));
+                }
+                CAPTURE(a);
+                CAPTURE(b);
+                CAPTURE(w);
+                if (sums.empty()) continue;  // e.g. a zero and a non-zero magnitude cannot be equal
+                if (got == "?") CHECK(sums.size() > 1);
+                else CHECK(sums == std::set<char>{got[0]});
+            }
+    // Component by component; where the terms do not oppose the comparison does not matter.
+    CHECK(text(apply("qsum-compared", {dir("+-0+"), dir("-++0"), dir("+")})) == "(+ - + +)");
+    CHECK(text(apply("qsum-compared", {dir("+-0+"), dir("-++0"), dir("-")})) == "(- + + +)");
+    CHECK(text(apply("qsum-compared", {dir("+-0+"), dir("-++0"), dir("0")})) == "(0 0 + +)");
+    CHECK(text(apply("qsum-compared", {dir("+-0+"), dir("-++0"), dir("?")})) == text(apply("qsum", {dir("+-0+"), dir("-++0")})));
+    CHECK(text(apply("qsum-compared", {dir("?0"), dir("-0"), dir("+")})) == "(? 0)");
+    CHECK(!apply("qsum-compared", {dir("+0"), dir("-0"), dir("++")}).error.empty());
+    CHECK(!apply("qsum-compared", {dir("+0"), dir("-"), dir("+")}).error.empty());
+}
+
+TEST_CASE("engine/builtins_qualitative: components of a direction") {
+    CHECK(text(apply("components", {dir("+0-")})) == "3");
+    CHECK(text(apply("components", {dir("-")})) == "1");
+    CHECK(text(apply("component", {dir("+0-"), values.integer(1)})) == "(+)");
+    CHECK(text(apply("component", {dir("+0-"), values.integer(3)})) == "(-)");
+    CHECK(text(apply("component", {dir("?0"), values.integer(1)})) == "(?)");
+    CHECK(text(apply("with-component", {dir("+0-"), values.integer(2), dir("?")})) == "(+ ? -)");
+    CHECK(text(apply("with-component", {dir("?"), values.integer(1), dir("0")})) == "(0)");
+    // Out of range, wrong kinds: errors, never a crash.
+    CHECK(!apply("component", {dir("+0"), values.integer(0)}).error.empty());
+    CHECK(!apply("component", {dir("+0"), values.integer(3)}).error.empty());
+    CHECK(!apply("component", {dir("+0"), values.symbol("x")}).error.empty());
+    CHECK(!apply("with-component", {dir("+0"), values.integer(1), dir("+-")}).error.empty());
+    CHECK(!apply("with-component", {dir("+0"), values.integer(-1), dir("+")}).error.empty());
+    CHECK(!apply("components", {values.integer(2)}).error.empty());
+}
