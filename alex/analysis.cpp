@@ -1,6 +1,7 @@
 // alex/analysis.cpp: the Alex driver (thesis chapter 6): scene -> facts -> laws -> freedom,
 // motions and stability per situation. Laws come only from the rule files.
 #include "alex/analysis.hpp"
+#include "alex/branches.hpp"
 #include "alex/detail/analysis_state.hpp"
 #include "alex/direction_text.hpp"
 #include "alex/kinematic_chains.hpp"
@@ -96,6 +97,16 @@ Nearness Analysis::State::nearness(ObjectId o, atms::EnvId env) {
     return out;
 }
 
+std::vector<atms::NodeId> Analysis::State::nearness_nodes(ObjectId o) {
+    std::vector<atms::NodeId> out;
+    for (std::string_view pred : {v::trans_nearness, v::rot_nearness})
+        for (engine::FactId f : engine->facts_of(facts->predicate(pred))) {
+            const engine::Fact& fact = engine->facts().fact(f);
+            if (!fact.args.empty() && fact.args[0] == facts->symbol(o)) out.push_back(engine->node(f));
+        }
+    return out;
+}
+
 std::vector<std::pair<ObjectId, ObjectId>> Analysis::State::pairs(std::size_t s, atms::EnvId env) const {
     std::vector<std::pair<ObjectId, ObjectId>> out;
     const atms::Environment& members = engine->atms().env(env);
@@ -119,10 +130,21 @@ std::optional<SituationResult> Analysis::State::solve(std::size_t s, std::span<c
                                                       Diagnostics& diagnostics) {
     auto r = run(s, without, diagnostics);
     if (!r) return std::nullopt;
+    refresh_branches();  // a smaller situation may branch where the whole did not
     return read(s, r->environment);
 }
 
-SituationResult Analysis::State::read(std::size_t s, atms::EnvId env) {
+void Analysis::State::refresh_branches() {
+    std::vector<atms::AssumptionId> motions;
+    for (const ObjectChoices& c : choices) {
+        motions.insert(motions.end(), c.trans.begin(), c.trans.end());
+        motions.insert(motions.end(), c.rot.begin(), c.rot.end());
+    }
+    branches = branch_sets(engine->choice_sets(), motions);
+}
+
+SituationResult Analysis::State::read(std::size_t s, atms::EnvId env,
+                                      std::vector<std::vector<std::uint32_t>>* branches_of) {
 
     SituationResult r;
     r.index = s;
@@ -139,23 +161,36 @@ SituationResult Analysis::State::read(std::size_t s, atms::EnvId env) {
     }
 
     bool stable = true;
-    for (const auto& chain : kinematic_chains(scene.objects.size(), pairs(s, env))) {
+    // Kinematic chains (Def 22), grouped where a branching choice set reaches several (docs/ANALYSIS.md).
+    const auto chains = kinematic_chains(scene.objects.size(), pairs(s, env));
+    std::vector<std::vector<atms::NodeId>> read_nodes(chains.size());
+    if (!branches.empty())
+        for (std::size_t c = 0; c < chains.size(); ++c)
+            for (ObjectId o : chains[c]) {
+                auto nodes = nearness_nodes(o);
+                read_nodes[c].insert(read_nodes[c].end(), nodes.begin(), nodes.end());
+            }
+    for (const ChainGroup& group : group_chains(engine->atms(), branches, env, read_nodes)) {
         std::vector<ObjectChoices> members;
-        std::vector<Nearness> ranks;
-        for (ObjectId o : chain) {
-            members.push_back(choices[o]);
-            ranks.push_back(nearness(o, env));
-        }
-        ChainOutcome outcome = solve_chain(engine->atms(), members, ranks, env, options.combination_limit);
+        for (std::size_t c : group.chains)
+            for (ObjectId o : chains[c]) members.push_back(choices[o]);
+        std::sort(members.begin(), members.end(),
+                  [](const ObjectChoices& a, const ObjectChoices& b) { return a.object < b.object; });
+        std::vector<std::vector<atms::AssumptionId>> sets;
+        for (std::uint32_t i : group.sets) sets.push_back(branches.sets[i]);
+        ChainOutcome outcome = solve_group(
+            engine->atms(), members, sets, env,
+            [&](std::size_t i, atms::EnvId where) { return nearness(members[i].object, where); }, options.combination_limit);
         if (outcome.truncated) r.complete = false;
         if (outcome.truncated)
-            r.notes.push_back("chain of " + scene.objects[chain.front()].name + ": enumeration stopped after " +
+            r.notes.push_back("chain of " + scene.objects[members.front().object].name + ": enumeration stopped after " +
                               std::to_string(options.combination_limit) + " consistent combinations (--limit)");
         if (outcome.motions.combinations.empty()) stable = false;
         for (const auto& combination : outcome.motions.combinations)
             for (const ObjectMotion& m : combination)
                 if (!is_zero(m.translation) || !is_zero(m.rotation)) stable = false;
         r.chains.push_back(std::move(outcome.motions));
+        if (branches_of) branches_of->push_back(group.sets);
     }
     r.stable = stable;
     return r;
@@ -185,8 +220,11 @@ std::unique_ptr<Analysis::State> build_state(const Scene& scene, const AnalysisO
     auto choices = read_choices(state->scene, *state->engine, *state->facts, diagnostics);
     if (!choices) return nullptr;
     state->choices = std::move(*choices);
-    for (std::size_t s = 1; s <= state->scene.situations.size(); ++s)
-        state->results.push_back(state->read(s, state->runs[s - 1].environment));
+    state->refresh_branches();
+    for (std::size_t s = 1; s <= state->scene.situations.size(); ++s) {
+        state->chain_branches.emplace_back();
+        state->results.push_back(state->read(s, state->runs[s - 1].environment, &state->chain_branches.back()));
+    }
     return state;
 }
 
@@ -203,6 +241,7 @@ std::optional<Analysis> analyse(const Scene& scene, const AnalysisOptions& optio
         state->scene.situations.clear();
         state->runs.clear();
         state->results.clear();
+        state->chain_branches.clear();
         return Analysis(std::move(state));
     }
     auto state = build_state(scene, options, *program, diagnostics);

@@ -104,15 +104,16 @@ ChainOutcome solve_chain(atms::Atms& atms, std::span<const ObjectChoices> chain,
         });
     }
     out.consistent = feasible.size();
-    std::sort(out.motions.combinations.begin(), out.motions.combinations.end(),
-              [](const std::vector<ObjectMotion>& a, const std::vector<ObjectMotion>& b) {
-                  for (std::size_t i = 0; i < a.size(); ++i) {
-                      if (a[i].translation != b[i].translation) return canonical_less(a[i].translation, b[i].translation);
-                      if (a[i].rotation != b[i].rotation) return canonical_less(a[i].rotation, b[i].rotation);
-                  }
-                  return false;
-              });
+    std::sort(out.motions.combinations.begin(), out.motions.combinations.end(), combination_less);
     return out;
+}
+
+bool combination_less(const std::vector<ObjectMotion>& a, const std::vector<ObjectMotion>& b) {
+    for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) {
+        if (a[i].translation != b[i].translation) return canonical_less(a[i].translation, b[i].translation);
+        if (a[i].rotation != b[i].rotation) return canonical_less(a[i].rotation, b[i].rotation);
+    }
+    return a.size() < b.size();
 }
 
 }  // namespace qm::alex

@@ -37,6 +37,9 @@ struct ChainOutcome {
     bool truncated = false;       // enumeration stopped at the limit
 };
 
+// Canonical order of combinations: object by object, translation then rotation, + before 0 before -.
+[[nodiscard]] bool combination_less(const std::vector<ObjectMotion>& a, const std::vector<ObjectMotion>& b);
+
 // Pre: chain and nearness are aligned; every assumption was issued by atms. Interns environments.
 [[nodiscard]] ChainOutcome solve_chain(atms::Atms& atms, std::span<const ObjectChoices> chain,
                                        std::span<const Nearness> nearness, atms::EnvId base, std::size_t limit);

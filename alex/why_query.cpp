@@ -254,17 +254,25 @@ std::optional<WhyAnswer> Analysis::why(const QueryFact& query, std::size_t situa
     const atms::Environment& base = atms.env(env);
     const atms::Environment with_a = base.with(a);
 
-    // The chain's other choices: the assumptions a nogood may mention besides the situation's.
+    // The chain's other choices: the assumptions a nogood may mention besides the situation's. The
+    // branches enumerated with the chain (docs/ANALYSIS.md "Branches") are choices too.
     std::vector<std::vector<atms::AssumptionId>> sets;
     atms::Environment chain_choices;
-    for (const ChainMotions& chain : result.chains)
-        if (std::find(chain.objects.begin(), chain.objects.end(), o) != chain.objects.end())
-            for (ObjectId x : chain.objects) {
-                for (const auto* s : {&st.choices[x].trans, &st.choices[x].rot}) {
-                    for (atms::AssumptionId c : *s) chain_choices = chain_choices.with(c);
-                    if (std::find(s->begin(), s->end(), a) == s->end()) sets.push_back(*s);
-                }
+    for (std::size_t c = 0; c < result.chains.size(); ++c) {
+        const ChainMotions& chain = result.chains[c];
+        if (std::find(chain.objects.begin(), chain.objects.end(), o) == chain.objects.end()) continue;
+        for (ObjectId x : chain.objects) {
+            for (const auto* s : {&st.choices[x].trans, &st.choices[x].rot}) {
+                for (atms::AssumptionId c2 : *s) chain_choices = chain_choices.with(c2);
+                if (std::find(s->begin(), s->end(), a) == s->end()) sets.push_back(*s);
             }
+        }
+        if (situation - 1 < st.chain_branches.size() && c < st.chain_branches[situation - 1].size())
+            for (std::uint32_t b : st.chain_branches[situation - 1][c]) {
+                for (atms::AssumptionId c2 : st.branches.sets[b]) chain_choices = chain_choices.with(c2);
+                sets.push_back(st.branches.sets[b]);
+            }
+    }
     const atms::Environment scope = join(base, chain_choices);
     std::vector<atms::EnvId> relevant;
     for (atms::EnvId ng : atms.minimal_nogoods())
@@ -313,15 +321,15 @@ std::optional<WhyAnswer> Analysis::why(const QueryFact& query, std::size_t situa
         return w;
     }
 
-    // 3. Consistent, but not what the forces produce (section 6.2, Definition 38).
+    // 3. Consistent, but not what the forces produce (section 6.2, Definition 38): its rank, in the
+    // situation or, where the forces branch, in each branch.
     const std::string_view rank_pred = translational ? v::trans_nearness : v::rot_nearness;
     for (engine::FactId f : e.facts_of(st.facts->predicate(rank_pred))) {
         const engine::Fact& fact = e.facts().fact(f);
         if (fact.args.size() != 3 || fact.args[0] != args[0] || fact.args[1] != args[1]) continue;
         const atms::NodeId n = e.node(f);
-        if (!atms.holds_in(n, env)) continue;
         for (atms::EnvId label_env : atms.label(n)) {
-            if (!atms.env(label_env).subset_of(base)) continue;
+            if (!atms.env(label_env).subset_of(scope)) continue;
             TreeBuilder b(st, atms.explain(n, label_env));
             Derivation d = b.build(n);
             w.exclusions.push_back({item_texts(st, atms.env(label_env), &b), std::move(d)});

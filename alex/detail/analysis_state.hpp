@@ -6,6 +6,7 @@
 //             which therefore never move while the State lives.
 #pragma once
 #include "alex/analysis.hpp"
+#include "alex/branches.hpp"
 #include "alex/motion_selection.hpp"
 #include "alex/scene_facts.hpp"
 #include "engine/engine.hpp"
@@ -23,19 +24,28 @@ struct Analysis::State {
     std::unique_ptr<engine::Engine> engine;
     std::unique_ptr<SceneFacts> facts;
     IdVector<ObjectId, ObjectChoices> choices;
+    BranchSets branches;                      // the laws' choice sets other than Law 1's
+    // By situation (0-based), by chain of its result: the branching sets enumerated with that chain.
+    std::vector<std::vector<std::vector<std::uint32_t>>> chain_branches;
     std::vector<engine::ContextRun> runs;     // by situation, 0-based
     std::vector<SituationResult> results;     // by situation, 0-based
 
     // Runs the laws in situation s (1-based) less `without`; nullopt if they report errors.
     [[nodiscard]] std::optional<engine::ContextRun> run(std::size_t s, std::span<const QueryFact> without,
                                                         Diagnostics& diagnostics);
-    // Reads freedom, motions and stability of situation s in its context environment env.
-    [[nodiscard]] SituationResult read(std::size_t s, atms::EnvId env);
+    // Reads freedom, motions and stability of situation s in its context environment env; if
+    // branches_of is given, the branching sets enumerated with each chain of the result.
+    [[nodiscard]] SituationResult read(std::size_t s, atms::EnvId env,
+                                       std::vector<std::vector<std::uint32_t>>* branches_of = nullptr);
     // run, then read.
     [[nodiscard]] std::optional<SituationResult> solve(std::size_t s, std::span<const QueryFact> without,
                                                        Diagnostics& diagnostics);
     [[nodiscard]] bool holds(std::string_view predicate, std::span<const engine::ValueId> args, atms::EnvId env);
     [[nodiscard]] Nearness nearness(ObjectId o, atms::EnvId env);
+    // branches from the engine's choice sets (after a run, which may declare new ones).
+    void refresh_branches();
+    // The nodes of o's nearness facts (whatever environment they hold in).
+    [[nodiscard]] std::vector<atms::NodeId> nearness_nodes(ObjectId o);
     // The objects in contact in env (through the situation's contact items) and the linkages.
     [[nodiscard]] std::vector<std::pair<ObjectId, ObjectId>> pairs(std::size_t s, atms::EnvId env) const;
     // A new State for situation s alone, with `without` taken away and `given` motions added.
