@@ -1,6 +1,7 @@
 // engine/engine.cpp: building the engine's facts and nodes; queries.
 #include "engine/engine.hpp"
 #include "qm/assert.hpp"
+#include <algorithm>
 
 namespace qm::engine {
 
@@ -10,6 +11,16 @@ Engine::Engine(CompiledProgram program, ValueTable values, const BuiltinRegistry
     for (std::size_t i = 0; i < program_.rules.size(); ++i) {
         rule_cursor_.push_back(0);
         rule_matched_.push_back(0);
+        // The predicates whose new facts can extend a match of the rule (drain() skips the others).
+        std::vector<ValueId> triggers;
+        for (const auto& c : program_.rules[RuleId{static_cast<std::uint32_t>(i)}].conditions) {
+            if (c.kind == CompiledCondition::Kind::match) triggers.push_back(c.atom.predicate);
+            if (c.kind == CompiledCondition::Kind::for_all || c.kind == CompiledCondition::Kind::exists)
+                for (const auto& a : c.atoms) triggers.push_back(a.predicate);
+        }
+        std::sort(triggers.begin(), triggers.end());
+        triggers.erase(std::unique(triggers.begin(), triggers.end()), triggers.end());
+        rule_triggers_.push_back(std::move(triggers));
     }
     for (const auto& p : program_.premises) {
         FactId f = intern_fact(p.predicate, p.args);

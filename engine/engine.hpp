@@ -147,6 +147,7 @@ private:
     std::vector<FactId> pending_activation_;             // label became non-empty, not yet logged
     IdVector<RuleId, std::size_t> rule_cursor_;          // activation_log_ prefix each rule has seen
     IdVector<RuleId, std::uint8_t> rule_matched_;               // a full match has been done
+    IdVector<RuleId, std::vector<ValueId>> rule_triggers_;     // predicates it matches (sorted)
     std::vector<std::vector<atms::AssumptionId>> choice_sets_;
     std::set<std::vector<atms::AssumptionId>> choice_set_keys_;
     std::vector<bool> is_choice_assumption_;             // indexed by AssumptionId

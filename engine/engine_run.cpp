@@ -64,6 +64,13 @@ bool Engine::drain(std::uint32_t s, std::optional<std::uint32_t> context, Diagno
             std::size_t end = activation_log_.size();
             if (begin == end) continue;
             rule_cursor_[r] = end;
+            // Only facts of a predicate the rule matches can extend its matches.
+            const auto& triggers = rule_triggers_[r];
+            if (std::none_of(activation_log_.begin() + static_cast<std::ptrdiff_t>(begin),
+                             activation_log_.begin() + static_cast<std::ptrdiff_t>(end), [&](FactId f) {
+                                 return std::binary_search(triggers.begin(), triggers.end(), facts_.fact(f).predicate);
+                             }))
+                continue;
             // A new fact of a predicate used inside a quantifier can complete a `for all` or an
             // `exists` only for the bindings of the rule's other variables it unifies with: match
             // the rule again from those (the agenda drops repeated bindings). If it cannot be
