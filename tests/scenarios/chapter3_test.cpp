@@ -135,7 +135,8 @@ TEST_CASE("scenarios/chapter3: corner contacts (section 3.1.1, Figure 3.3)") {
 TEST_CASE("scenarios/chapter3: every bundled scene loads and is analysed") {
     for (const char* name : {"arch.def", "block.def", "block_3d.def", "block_boulder.def", "block_stack.def",
                              "corner_contacts.def", "force_feedback.def", "gears.def", "lever.def",
-                             "recoil_escapement.def", "wedge_ramp.def", "wedge_ramp_catch.def", "linked_gears.def"}) {
+                             "recoil_escapement.def", "wedge_ramp.def", "wedge_ramp_catch.def", "linked_gears.def",
+                             "squeeze.def", "wedge_push.def"}) {
         CAPTURE(name);
         const alex::Scene scene = load_scene(name);
         alex::Analysis a = analyse(scene);
