@@ -258,6 +258,7 @@ std::optional<WhyAnswer> Analysis::why(const QueryFact& query, std::size_t situa
     // branches enumerated with the chain (docs/ANALYSIS.md "Branches") are choices too.
     std::vector<std::vector<atms::AssumptionId>> sets;
     atms::Environment chain_choices;
+    bool branched = false;
     for (std::size_t c = 0; c < result.chains.size(); ++c) {
         const ChainMotions& chain = result.chains[c];
         if (std::find(chain.objects.begin(), chain.objects.end(), o) == chain.objects.end()) continue;
@@ -271,6 +272,7 @@ std::optional<WhyAnswer> Analysis::why(const QueryFact& query, std::size_t situa
             for (std::uint32_t b : st.chain_branches[situation - 1][c]) {
                 for (atms::AssumptionId c2 : st.branches.sets[b]) chain_choices = chain_choices.with(c2);
                 sets.push_back(st.branches.sets[b]);
+                branched = true;
             }
     }
     const atms::Environment scope = join(base, chain_choices);
@@ -315,8 +317,10 @@ std::optional<WhyAnswer> Analysis::why(const QueryFact& query, std::size_t situa
             for (auto& t : w.exclusions.back().responsible) responsible.insert(t);
         }
         w.responsible_sets.push_back({responsible.begin(), responsible.end()});
-        w.notes.push_back("excluded by case analysis: every choice of the other objects' motions in its kinematic "
-                          "chain meets one of these nogoods");
+        w.notes.push_back(std::string("excluded by case analysis: every choice of the other objects' motions in its "
+                                      "kinematic chain") +
+                          (branched ? ", in every branch of the laws (docs/ANALYSIS.md, Branches)," : "") +
+                          " meets one of these nogoods");
         coarse_note(st, w);
         return w;
     }

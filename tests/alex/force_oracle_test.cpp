@@ -24,6 +24,15 @@
 //   threshold too, and linked objects share every force, pushed ones included. (The product first
 //   read both more narrowly; this oracle found it, and the rules were changed: the two cases
 //   below keep the scenes.)
+// - section 8.3.4's threshold ends the order: every motion past zero ranks alike (so a pushed
+//   object's force does not choose among the ways it is pushed);
+// - section 2.3's branching: along an axis where exactly two causes act, oppositely, the answer to
+//   "which is larger?" (+, 0, -) decides the sign; one answer per pair of causes for every object
+//   of the situation; answers must be realisable by magnitudes (no cycle); three or more causes
+//   along an axis in both directions keep `amb`. The selection is made per answer and united;
+//   chains sharing a compared cause are taken together. (Written from docs/LAWS.md "Opposing
+//   causes", not from rules/cause_comparison.rules: cycles are found by a closure matrix here, by
+//   rules there.)
 // Found: everything else agrees exactly (see the MESSAGEs; soak runs with QM_FORCE_ORACLE_PACKS).
 #include "alex/analysis.hpp"
 #include "alex/scene_parser.hpp"
@@ -36,6 +45,7 @@
 #include <cstdlib>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <random>
 #include <set>
 #include <sstream>
@@ -150,6 +160,8 @@ struct Readings {
     bool given_push_transitive = true;   // what a body pushed by a given motion pushes is exempt too
     bool into_by_body_normal = false;    // "into the object" by the body's normal (else Table 3.2's)
     int linked_share = 2;                // a linked pair shares 0: external, 1: also transmitted, 2: every force
+    bool compare_causes = true;          // two opposing causes branch on which prevails (else the sum stays `amb`)
+    bool ranks_stop_at_zero = true;      // past the zero threshold every motion ranks alike (else Def 38 on to -v)
 };
 
 // One force on one object (Def 8): an external one (the scene's), one transmitted through a contact
@@ -170,6 +182,8 @@ struct ChainResult {
     std::vector<std::size_t> objects;                // ascending object indices
     std::vector<std::vector<Motion2>> consistent;    // kinematically consistent (sorted)
     std::vector<std::vector<Motion2>> selected;      // what the forces leave (sorted)
+    std::size_t branches = 0;                        // realisable answers to the comparisons here
+    std::size_t kinematic_chains = 1;                // kinematic chains (Def 22) taken together here
     bool over_limit = false;
 };
 
@@ -177,7 +191,14 @@ struct ChainResult {
 struct Drive {
     bool driven = false;
     QVec net_trans, net_rot;  // may hold `amb`
+    // Each cause's own sums after Law 5 (never `amb`): what a comparison of causes compares.
+    std::map<std::uint32_t, QVec> cause_trans, cause_rot;
 };
+
+// Two causes (smaller id first) and how their magnitudes compare: +1 the first is larger, 0 equal,
+// -1 the second is larger (section 2.3).
+using CausePair = std::pair<std::uint32_t, std::uint32_t>;
+using Comparison = std::map<CausePair, int>;
 
 struct SituationResult {
     std::vector<std::vector<bool>> trans_constrained, rot_constrained;  // [object][direction id]
@@ -202,8 +223,12 @@ public:
         SituationResult res;
         freedom(sit, res);
         forces(sit, res);
-        for (const auto& chain : chains(sit)) {
+        std::vector<std::size_t> kinematic;
+        const auto groups = chains(sit, res, &kinematic);
+        for (std::size_t g = 0; g < groups.size(); ++g) {
+            const auto& chain = groups[g];
             res.chains.push_back(motions(sit, res, chain, limit));
+            res.chains.back().kinematic_chains = kinematic[g];
             res.over_limit = res.over_limit || res.chains.back().over_limit;
         }
         return res;
@@ -243,7 +268,62 @@ public:
             else if (x == negated(w)) best = std::min(best, 5);
             else if (ohp(negated(w), x)) best = std::min(best, 4);
         }
-        return best;
+        // Section 8.3.4: directions are selected "until ... we exceed some threshold", zero: past it
+        // the force prefers none of them.
+        return readings_.ranks_stop_at_zero ? std::min(best, 3) : best;
+    }
+
+    // Section 2.3 as docs/LAWS.md ("Opposing causes") reads it: along an axis where exactly two
+    // causes act, in opposite directions, their comparison decides the sign. The pair, if any.
+    std::optional<CausePair> deciding(const std::map<std::uint32_t, QVec>& by_cause, std::size_t axis) const {
+        if (!readings_.compare_causes) return std::nullopt;
+        std::vector<std::pair<std::uint32_t, int>> acting;
+        for (const auto& [cause, sum] : by_cause)
+            if (sum[axis] != 0) acting.push_back({cause, sum[axis]});
+        if (acting.size() != 2 || acting[0].second != -acting[1].second) return std::nullopt;
+        return CausePair{std::min(acting[0].first, acting[1].first), std::max(acting[0].first, acting[1].first)};
+    }
+
+    // The net force (or torque) with the comparisons applied: each decided axis takes the larger
+    // cause's sign (0 when equal); the other axes keep the sum (`amb` where three or more causes
+    // act in both directions).
+    QVec resolved(const QVec& net, const std::map<std::uint32_t, QVec>& by_cause, const Comparison& w) const {
+        QVec out = net;
+        for (std::size_t i = 0; i < net.size(); ++i)
+            if (const auto pair = deciding(by_cause, i)) {
+                const int cmp = w.at(*pair);
+                out[i] = cmp == 0 ? 0 : by_cause.at(cmp > 0 ? pair->first : pair->second)[i];
+            }
+        return out;
+    }
+
+    // Comparisons of magnitudes must be realisable by magnitudes: no cycle of "at least" through a
+    // "larger". Closure of "at least" (reflexive, transitive), then each "larger" edge checked.
+    static bool realisable(const Comparison& w) {
+        std::vector<std::uint32_t> causes;
+        for (const auto& [pair, cmp] : w) {
+            causes.push_back(pair.first);
+            causes.push_back(pair.second);
+        }
+        std::sort(causes.begin(), causes.end());
+        causes.erase(std::unique(causes.begin(), causes.end()), causes.end());
+        const std::size_t n = causes.size();
+        auto at = [&](std::uint32_t c) { return static_cast<std::size_t>(std::lower_bound(causes.begin(), causes.end(), c) - causes.begin()); };
+        std::vector<std::vector<bool>> ge(n, std::vector<bool>(n, false));
+        std::vector<std::pair<std::size_t, std::size_t>> larger;
+        for (std::size_t i = 0; i < n; ++i) ge[i][i] = true;
+        for (const auto& [pair, cmp] : w) {
+            const std::size_t a = at(pair.first), b = at(pair.second);
+            if (cmp >= 0) ge[a][b] = true;
+            if (cmp <= 0) ge[b][a] = true;
+            if (cmp > 0) larger.push_back({a, b});
+            if (cmp < 0) larger.push_back({b, a});
+        }
+        for (std::size_t k = 0; k < n; ++k)
+            for (std::size_t i = 0; i < n; ++i)
+                for (std::size_t j = 0; j < n; ++j)
+                    if (ge[i][k] && ge[k][j]) ge[i][j] = true;
+        return std::none_of(larger.begin(), larger.end(), [&](const auto& e) { return ge[e.second][e.first]; });
     }
 
 private:
@@ -427,13 +507,31 @@ private:
         for (std::size_t o = 0; o < n; ++o) {
             res.drive[o].net_trans = net(trans_.front().size(), trans_terms[o]);
             res.drive[o].net_rot = net(rot_.front().size(), rot_terms[o]);
+            for (const auto& [cause, terms] : trans_terms[o])
+                res.drive[o].cause_trans[cause] = net(trans_.front().size(), {{cause, terms}});
+            for (const auto& [cause, terms] : rot_terms[o])
+                res.drive[o].cause_rot[cause] = net(rot_.front().size(), {{cause, terms}});
         }
     }
 
-    // Kinematic chains (Def 22): connected components of the contact graph (and linkages).
-    std::vector<std::vector<std::size_t>> chains(const Situation& sit) const {
+    // Kinematic chains (Def 22): connected components of the contact graph (and linkages). Chains
+    // whose objects have axes decided by comparisons of causes connected through shared causes are
+    // taken together: a comparison has one answer for every object (docs/LAWS.md, "Opposing causes").
+    // kinematic_chains: how many kinematic chains each group holds.
+    std::vector<std::vector<std::size_t>> chains(const Situation& sit, const SituationResult& res,
+                                                 std::vector<std::size_t>* kinematic_chains = nullptr) const {
         const std::size_t n = scene_.objects.size();
-        std::vector<std::size_t> parent(n);
+        std::map<std::uint32_t, std::size_t> cause_node;  // a node per cause, after the objects
+        std::vector<std::pair<std::size_t, std::uint32_t>> decided;  // (object, cause)
+        for (std::size_t o = 0; o < n; ++o)
+            for (const auto* by_cause : {&res.drive[o].cause_trans, &res.drive[o].cause_rot})
+                for (std::size_t i = 0; !by_cause->empty() && i < by_cause->begin()->second.size(); ++i)
+                    if (const auto pair = deciding(*by_cause, i))
+                        for (std::uint32_t c : {pair->first, pair->second}) {
+                            cause_node.try_emplace(c, n + cause_node.size());
+                            decided.push_back({o, c});
+                        }
+        std::vector<std::size_t> parent(n + cause_node.size());
         std::iota(parent.begin(), parent.end(), std::size_t{0});
         auto find = [&](std::size_t x) {
             while (parent[x] != x) x = parent[x] = parent[parent[x]];
@@ -441,11 +539,20 @@ private:
         };
         for (const Contact& c : sit.contacts) parent[find(surface(c.first).object.value)] = find(surface(c.second).object.value);
         for (const Linkage& l : scene_.linkages) parent[find(l.first.value)] = find(l.second.value);
+        std::vector<std::size_t> kinematic(n);
+        for (std::size_t o = 0; o < n; ++o) kinematic[o] = find(o);
+        for (const auto& [o, c] : decided) parent[find(o)] = find(cause_node.at(c));
         std::map<std::size_t, std::vector<std::size_t>> groups;
         for (std::size_t o = 0; o < n; ++o) groups[find(o)].push_back(o);
         std::vector<std::vector<std::size_t>> out;
         for (auto& [root, members] : groups) out.push_back(members);
         std::sort(out.begin(), out.end());
+        if (kinematic_chains)
+            for (const auto& members : out) {
+                std::set<std::size_t> roots;
+                for (std::size_t o : members) roots.insert(kinematic[o]);
+                kinematic_chains->push_back(roots.size());
+            }
         return out;
     }
 
@@ -535,6 +642,41 @@ private:
         auto given = [&](std::size_t o) {
             return std::any_of(sit.motions.begin(), sit.motions.end(), [&](const Motion& m) { return m.object.value == o; });
         };
+        // Section 2.3: every realisable answer to the comparisons that decide an axis here is a branch;
+        // the selection is made in each, and the branches' selections are united.
+        std::vector<CausePair> pairs;
+        for (std::size_t i : driven)
+            for (const auto* by_cause : {&res.drive[chain[i]].cause_trans, &res.drive[chain[i]].cause_rot})
+                for (std::size_t axis = 0; !by_cause->empty() && axis < by_cause->begin()->second.size(); ++axis)
+                    if (const auto pair = deciding(*by_cause, axis)) pairs.push_back(*pair);
+        std::sort(pairs.begin(), pairs.end());
+        pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+        std::set<std::vector<Motion2>> selected;
+        std::vector<int> answer(pairs.size(), -1);
+        for (;;) {
+            Comparison w;
+            for (std::size_t k = 0; k < pairs.size(); ++k) w[pairs[k]] = answer[k];
+            if (realisable(w)) {
+                ++out.branches;
+                for (const auto& combo : select(sit, res, chain, driven, pushes, out.consistent, w, given)) selected.insert(combo);
+            }
+            std::size_t k = 0;
+            while (k < answer.size() && answer[k] == 1) answer[k++] = -1;
+            if (k == answer.size()) break;
+            ++answer[k];
+        }
+        out.selected.assign(selected.begin(), selected.end());
+        return out;
+    }
+
+    // In one branch w: the driven objects' ranks against their resolved net force and torque; the
+    // threshold (unless moved by a given motion); Pareto.
+    template <class Push, class Given>
+    std::vector<std::vector<Motion2>> select(const Situation& sit, const SituationResult& res,
+                                             const std::vector<std::size_t>& chain, const std::vector<std::size_t>& driven,
+                                             const std::vector<Push>& pushes,
+                                             const std::vector<std::vector<Motion2>>& consistent, const Comparison& w,
+                                             const Given& given) const {
         // docs/LAWS.md, "Given current motion": what a given motion pushes (Table 3.2 in this
         // combination), and what that pushes in turn, is moved by being pushed, not held back by
         // its own forces' threshold.
@@ -552,20 +694,27 @@ private:
             }
             return moved;
         };
+        std::vector<QVec> net_t, net_r;
+        for (std::size_t i : driven) {
+            const Drive& d = res.drive[chain[i]];
+            net_t.push_back(resolved(d.net_trans, d.cause_trans, w));
+            net_r.push_back(resolved(d.net_rot, d.cause_rot, w));
+        }
         std::vector<std::pair<std::vector<int>, const std::vector<Motion2>*>> ranked;
-        for (const auto& combo : out.consistent) {
+        for (const auto& combo : consistent) {
             std::vector<int> ranks;
             bool within = true;
             const std::vector<bool> moved = sit.motions.empty() ? std::vector<bool>(chain.size(), false) : kinematically_moved(combo);
-            for (std::size_t i : driven) {
-                const Drive& d = res.drive[chain[i]];
-                const int rt = rank(trans_[combo[i].first], d.net_trans), rr = rank(rot_[combo[i].second], d.net_rot);
+            for (std::size_t k = 0; k < driven.size(); ++k) {
+                const std::size_t i = driven[k];
+                const int rt = rank(trans_[combo[i].first], net_t[k]), rr = rank(rot_[combo[i].second], net_r[k]);
                 if ((rt > 2 || rr > 2) && !moved[i]) within = false;
                 ranks.push_back(rt);
                 ranks.push_back(rr);
             }
             if (within) ranked.push_back({std::move(ranks), &combo});
         }
+        std::vector<std::vector<Motion2>> out;
         for (const auto& [ranks, combo] : ranked) {
             bool dominated = false;
             for (const auto& other : ranked) {
@@ -579,7 +728,7 @@ private:
                     break;
                 }
             }
-            if (!dominated) out.selected.push_back(*combo);
+            if (!dominated) out.push_back(*combo);
         }
         return out;
     }
@@ -649,7 +798,8 @@ Analysis analyse_ok(const Scene& scene) {
 
 // Readings from the environment for exploratory runs (each token flips one field of `Readings`):
 // t1 torque_needs_freedom, f0 turn_needs_freedom, z0 ambiguous_includes_zero, p0
-// pushed_force_drives, g0 given_push_transitive, n1 into_by_body_normal.
+// pushed_force_drives, g0 given_push_transitive, n1 into_by_body_normal, l0/l1 linked_share, c0
+// compare_causes, r0 ranks_stop_at_zero.
 Readings readings_from_env() {
     Readings r;
     if (const char* env = std::getenv("QM_FORCE_READING")) {
@@ -663,6 +813,8 @@ Readings readings_from_env() {
         if (s.find("n1") != std::string::npos) r.into_by_body_normal = true;
         if (s.find("l0") != std::string::npos) r.linked_share = 0;
         if (s.find("l1") != std::string::npos) r.linked_share = 1;
+        if (s.find("c0") != std::string::npos) r.compare_causes = false;
+        if (s.find("r0") != std::string::npos) r.ranks_stop_at_zero = false;
     }
     return r;
 }
@@ -680,6 +832,8 @@ std::string combo_text(const Oracle& o, const Scene& scene, const std::vector<st
 struct Verdict {
     std::string diff;
     std::size_t chains = 0, chains_driven = 0, differing = 0;
+    std::size_t branched = 0;   // oracle chains with more than one realisable answer to their comparisons
+    std::size_t together = 0;   // oracle chains of several kinematic chains (sharing a compared cause)
     bool partition = false;
 };
 
@@ -693,14 +847,70 @@ Verdict compare(const Oracle& o, const Scene& scene, const force_oracle::Situati
         for (ObjectId id : c.objects) objs.push_back(id.value);
         by_objects[objs] = &c;
     }
-    if (got.chains.size() != e.chains.size()) {
-        v.partition = true;
-        diff << "product has " << got.chains.size() << " chains, oracle " << e.chains.size() << "\n";
+    auto motions_of = [&](const std::vector<ObjectMotion>& combo) {
+        std::vector<force_oracle::Motion2> m;
+        for (const ObjectMotion& om : combo)
+            m.push_back({o.trans_id(force_oracle::qvec(om.translation)), o.rot_id(force_oracle::qvec(om.rotation))});
+        return m;
+    };
+    // Every product chain lies within one oracle chain (the oracle takes together every chain that
+    // shares a compared cause; the product only those whose branches are not independent).
+    std::map<std::size_t, std::size_t> oracle_chain_of;
+    for (std::size_t k = 0; k < e.chains.size(); ++k)
+        for (std::size_t x : e.chains[k].objects) oracle_chain_of[x] = k;
+    std::vector<std::vector<const ChainMotions*>> inside(e.chains.size());
+    for (const ChainMotions& c : got.chains) {
+        std::set<std::size_t> homes;
+        for (ObjectId id : c.objects) homes.insert(oracle_chain_of.at(id.value));
+        if (homes.size() != 1) {
+            v.partition = true;
+            diff << "a product chain of " << c.objects.size() << " objects spans " << homes.size() << " oracle chains\n";
+            continue;
+        }
+        inside[*homes.begin()].push_back(&c);
     }
-    for (const auto& ec : e.chains) {
+    for (std::size_t k = 0; k < e.chains.size(); ++k) {
+        const auto& ec = e.chains[k];
         ++v.chains;
         const bool driven = std::any_of(ec.objects.begin(), ec.objects.end(), [&](std::size_t x) { return e.drive[x].driven; });
         v.chains_driven += driven;
+        v.branched += ec.branches > 1;
+        v.together += ec.kinematic_chains > 1;
+        std::size_t covered = 0;
+        for (const ChainMotions* c : inside[k]) covered += c->objects.size();
+        if (covered == ec.objects.size() && inside[k].size() > 1) {
+            // The oracle's selection must be the product of these chains' selections: as many
+            // combinations, each projecting into every one of them.
+            std::uint64_t expected = 1;
+            for (const ChainMotions* c : inside[k]) expected *= c->combinations.size();
+            std::vector<std::set<std::vector<force_oracle::Motion2>>> theirs;
+            for (const ChainMotions* c : inside[k]) {
+                theirs.emplace_back();
+                for (const auto& g : c->combinations) theirs.back().insert(motions_of(g));
+            }
+            std::size_t outside = 0;
+            std::string example;
+            for (const auto& combo : ec.selected)
+                for (std::size_t j = 0; j < inside[k].size(); ++j) {
+                    std::vector<force_oracle::Motion2> part;
+                    for (ObjectId id : inside[k][j]->objects)
+                        part.push_back(combo[static_cast<std::size_t>(
+                            std::find(ec.objects.begin(), ec.objects.end(), id.value) - ec.objects.begin())]);
+                    if (theirs[j].count(part) == 0) {
+                        ++outside;
+                        if (example.empty()) example = combo_text(o, scene, ec.objects, combo);
+                        break;
+                    }
+                }
+            if (expected == ec.selected.size() && outside == 0) continue;
+            ++v.differing;
+            diff << "chain of " << ec.objects.size() << " objects, " << inside[k].size()
+                 << " product chains: product " << expected << " combinations, oracle " << ec.selected.size() << " (of "
+                 << ec.consistent.size() << " consistent, " << ec.branches << " branches); " << outside
+                 << " oracle combinations not in the product's\n";
+            if (!example.empty()) diff << "  only oracle:  " << example << "\n";
+            continue;
+        }
         const auto it = by_objects.find(ec.objects);
         if (it == by_objects.end()) {
             v.partition = true;
@@ -722,7 +932,7 @@ Verdict compare(const Oracle& o, const Scene& scene, const force_oracle::Situati
         std::set_difference(g.begin(), g.end(), ec.selected.begin(), ec.selected.end(), std::back_inserter(only_product));
         std::set_difference(ec.selected.begin(), ec.selected.end(), g.begin(), g.end(), std::back_inserter(only_oracle));
         diff << "chain of " << ec.objects.size() << " objects: product " << g.size() << " combinations, oracle "
-             << ec.selected.size() << " (of " << ec.consistent.size() << " consistent)\n";
+             << ec.selected.size() << " (of " << ec.consistent.size() << " consistent, " << ec.branches << " branches)\n";
         for (std::size_t x : ec.objects) {
             const force_oracle::Drive& d = e.drive[x];
             if (d.driven)
@@ -778,6 +988,7 @@ enum class Family {
     chain,        // 2-4 objects, contacts, forces anywhere: transmission, several driven objects
     given,        // as `chain`, with given current motions
     linked,       // as `chain`, two of the objects linked (Def 21)
+    causes,       // 2-4 objects, few contacts, pairs of opposite forces from three shared causes (2.3)
 };
 const char* family_name(Family f) {
     switch (f) {
@@ -786,6 +997,7 @@ const char* family_name(Family f) {
     case Family::chain: return "chain";
     case Family::given: return "given";
     case Family::linked: return "linked";
+    case Family::causes: return "causes";
     }
     return "?";
 }
@@ -914,6 +1126,7 @@ Group random_group(Random& rnd, Family family, int dims, std::size_t situations)
     case Family::chain:
     case Family::given:
     case Family::linked: count = 2 + rnd.below(dims == 3 ? 2 : 3); break;
+    case Family::causes: count = 2 + rnd.below(3); break;
     }
     grp.objects.resize(count);
     struct Placed {
@@ -957,7 +1170,7 @@ Group random_group(Random& rnd, Family family, int dims, std::size_t situations)
     grp.motions.resize(situations);
     for (std::size_t k = 0; k < situations; ++k) {
         if (family != Family::direct) {
-            const std::size_t contacts = 1 + rnd.below(4);
+            const std::size_t contacts = family == Family::causes ? rnd.below(2) : 1 + rnd.below(4);
             std::set<std::pair<std::size_t, std::size_t>> used;
             for (std::size_t c = 0; c < contacts; ++c) {
                 std::vector<std::pair<std::size_t, std::size_t>> candidates, facing;
@@ -975,6 +1188,20 @@ Group random_group(Random& rnd, Family family, int dims, std::size_t situations)
                 if (rnd.chance(50)) std::swap(a, b);
                 grp.contacts[k].push_back({placed[a].object, placed[a].index, placed[b].object, placed[b].index});
             }
+        }
+        if (family == Family::causes) {
+            // Two forces of different shared causes on most objects, often opposite: the same
+            // pairs of causes meet on several objects, in and out of contact.
+            for (std::size_t o = 0; o < count; ++o) {
+                if (!rnd.chance(75)) continue;
+                Group::F f = random_force(rnd, o, tn), g = random_force(rnd, o, tn);
+                if (rnd.chance(70)) g.dir = opposite(f.dir);
+                f.cause = static_cast<int>(rnd.below(3));
+                g.cause = static_cast<int>((static_cast<std::size_t>(f.cause) + 1 + rnd.below(2)) % 3);
+                grp.forces[k].push_back(f);
+                grp.forces[k].push_back(g);
+            }
+            continue;
         }
         for (std::size_t n = rnd.below(3); n > 0; --n) {
             Group::F f = random_force(rnd, force_target(), tn);
@@ -1020,7 +1247,7 @@ void add_given_motions(Random& rnd, Group& grp, const Scene& scene, const Oracle
 struct RunStats {
     std::size_t groups = 0, situations = 0, chains = 0, chains_driven = 0, differing = 0, situations_differing = 0;
     std::size_t forces = 0, transmitted = 0, pushed = 0, ambiguous = 0, replaced = 0;
-    std::size_t selected = 0, consistent = 0;
+    std::size_t selected = 0, consistent = 0, branched = 0, together = 0;
     std::size_t known = 0;       // differing chains that the `known` reading explains exactly
     std::string examples, known_example;
 };
@@ -1081,6 +1308,8 @@ RunStats run_family(Family family, int dims, std::size_t packs, std::uint32_t se
             }
             st.chains += v.chains;
             st.chains_driven += v.chains_driven;
+            st.branched += v.branched;
+            st.together += v.together;
             if (!explained) {
                 st.differing += v.differing + (v.partition ? 1 : 0);
                 st.situations_differing += v.differing > 0 || v.partition;
@@ -1134,7 +1363,9 @@ std::size_t packs_for(std::size_t release, std::size_t debug) {
 void report(Family family, int dims, std::size_t packs, const RunStats& st) {
     MESSAGE(std::string(family_name(family)) << " (" << dims << "-D): " << st.groups << " scenes in " << packs << " analyses, "
                                 << st.situations << " situations, " << st.chains << " chains (" << st.chains_driven
-                                << " driven), consistent combinations " << st.consistent << ", selected " << st.selected
+                                << " driven, " << st.branched << " branching on comparisons of causes, " << st.together
+                                << " of several kinematic chains sharing a compared cause), consistent combinations " << st.consistent
+                                << ", selected " << st.selected
                                 << "; forces " << st.forces << " (" << st.transmitted << " transmitted, " << st.pushed
                                 << " pushed), driven objects with an ambiguous net force " << st.ambiguous
                                 << "; groups replaced (a chain over the limit) " << st.replaced
@@ -1174,11 +1405,18 @@ TEST_CASE("alex/force_oracle: Definition 38 ranks and the zero threshold") {
     CHECK(o.rank({1, -1}, {0, -1}) == 1);
     CHECK(o.rank({0, 0}, {0, -1}) == 2);
     CHECK(o.rank({1, 0}, {0, -1}) == 3);   // perpendicular: past the threshold
-    CHECK(o.rank({1, 1}, {0, -1}) == 4);   // the opposite half plane
-    CHECK(o.rank({0, 1}, {0, -1}) == 5);   // -v: in that half plane too, but listed last
-    CHECK(o.rank({-1}, {1}) == 5);
+    CHECK(o.rank({1, 1}, {0, -1}) == 3);   // the opposite half plane: past it too, ranked alike (8.3.4)
+    CHECK(o.rank({0, 1}, {0, -1}) == 3);   // -v
+    CHECK(o.rank({-1}, {1}) == 3);
     CHECK(o.rank({0, 0}, {0, 0}) == 0);    // no net force: only standing still
-    CHECK(o.rank({1, 0}, {0, 0}) == 6);
+    CHECK(o.rank({1, 0}, {0, 0}) == 3);
+    // Def 38's order beyond the threshold, were it used.
+    Readings on;
+    on.ranks_stop_at_zero = false;
+    const Oracle o_on(s, on);
+    CHECK(o_on.rank({1, 1}, {0, -1}) == 4);  // the opposite half plane
+    CHECK(o_on.rank({0, 1}, {0, -1}) == 5);  // -v: in that half plane too, but listed last
+    CHECK(o_on.rank({1, 0}, {0, 0}) == 6);
     CHECK(o.rank({0, 1}, {0, force_oracle::amb}) == 0);  // (0 ?) resolves to (0 +), (0 0), (0 -)
     CHECK(o.rank({0, 0}, {0, force_oracle::amb}) == 0);
     CHECK(o.rank({1, 1}, {0, force_oracle::amb}) == 1);
@@ -1268,7 +1506,22 @@ TEST_CASE("alex/force_oracle: direct forces on free objects (no contact)") {
     const RunStats st = run_family(Family::direct, 2, packs, 0x51f0u);
     report(Family::direct, 2, packs, st);
     CHECK(st.differing == 0);
+    if (packs >= 100) {  // comparisons of causes, also joining separate objects that share them
+        CHECK(st.branched > 0);
+        CHECK(st.together > 0);
+    }
     CHECK(st.groups == packs * 4);
+}
+
+TEST_CASE("alex/force_oracle: opposing forces of shared causes on several objects (section 2.3)") {
+    const std::size_t packs = packs_for(150, 10);
+    const RunStats st = run_family(Family::causes, 2, packs, 0xca05u);
+    report(Family::causes, 2, packs, st);
+    CHECK(st.differing == 0);
+    if (packs >= 100) {
+        CHECK(st.branched > 0);
+        CHECK(st.together > 0);
+    }
 }
 
 TEST_CASE("alex/force_oracle: forces on one object among fixed ones") {
@@ -1283,6 +1536,7 @@ TEST_CASE("alex/force_oracle: transmission and several driven objects") {
     const RunStats st = run_family(Family::chain, 2, packs, 0xc4a1u);
     report(Family::chain, 2, packs, st);
     CHECK(st.differing == 0);
+    if (packs >= 100) CHECK(st.branched > 0);  // the family exercises the comparisons of causes
 }
 
 TEST_CASE("alex/force_oracle: forces with given current motions") {
@@ -1366,4 +1620,61 @@ TEST_CASE("alex/force_oracle: 3-D transmission and several driven objects") {
     const RunStats st = run_family(Family::chain, 3, packs, 0x3dc4u);
     report(Family::chain, 3, packs, st);
     CHECK(st.differing == 0);
+}
+
+// Section 2.3's branching, in scenes built to need it. The oracle's answer is checked against the
+// count the reading implies, and the product against the oracle.
+TEST_CASE("alex/force_oracle: opposing causes branch once for every object (section 2.3)") {
+    auto agree = [](const Scene& s, std::size_t situation) {
+        const Oracle o(s, Readings{});
+        const auto e = o.solve(s.situations[situation], 100000);
+        Analysis a = analyse_ok(s);
+        const Verdict v = compare(o, s, e, a.situations()[situation]);
+        INFO(v.diff);
+        CHECK(v.diff == "");
+        return std::make_pair(e, a.situations()[situation].combination_count());
+    };
+    SUBCASE("squeezed blocks move together: hand prevails, they balance, or wind prevails") {
+        const Scene s = read_file_ok("squeeze.def");
+        const auto [e, count] = agree(s, 0);
+        CHECK(count == 3);
+        CHECK(selected_of(Oracle(s, Readings{}), s, e, "a") == std::set<std::string>{"(+ 0) (0)", "(0 0) (0)", "(- 0) (0)"});
+    }
+    SUBCASE("a wedge pushed under a block against its weight") {
+        const Scene s = read_file_ok("wedge_push.def");
+        CHECK(agree(s, 0).second == 3);
+        CHECK(agree(s, 1).second == 1);
+    }
+    SUBCASE("two blocks apart, each pushed by the same hand against the same wind: one answer for both") {
+        const Scene s = read_ok(R"((Defscenario 2 apart
+  Individuals (a b)
+  Forces ((a (+ 0) (0 0) hand) (a (- 0) (0 0) wind) (b (0 +) (0 0) hand) (b (0 -) (0 0) wind)))
+(Defstates ()))");
+        const auto [e, count] = agree(s, 0);
+        CHECK(count == 3);  // not 3 x 3: the answer is the same for a and b
+        REQUIRE(e.chains.size() == 1);
+        CHECK(e.chains[0].kinematic_chains == 2);
+        CHECK(e.chains[0].branches == 3);
+    }
+    SUBCASE("three causes compared pairwise on three objects: only the 13 orders of three magnitudes") {
+        const Scene s = read_ok(R"((Defscenario 2 triangle
+  Individuals (a b c)
+  Forces ((a (+ 0) (0 0) x) (a (- 0) (0 0) y) (b (+ 0) (0 0) y) (b (- 0) (0 0) z) (c (+ 0) (0 0) x) (c (- 0) (0 0) z)))
+(Defstates ()))");
+        const auto [e, count] = agree(s, 0);
+        CHECK(e.chains[0].branches == 13);
+        CHECK(count == 13);  // each order moves a, b and c its own way (27 without transitivity)
+        Readings r;
+        r.compare_causes = false;  // the sums left ambiguous: every pair of directions near
+        CHECK(Oracle(s, r).solve(s.situations[0], 100000).chains.size() == 3);
+    }
+    SUBCASE("three causes along one axis: ? stays (no comparison is asked)") {
+        const Scene s = read_ok(R"((Defscenario 2 three
+  Individuals (a)
+  Forces ((a (+ 0) (0 0) hand) (a (+ 0) (0 0) spring) (a (- 0) (0 0) wind)))
+(Defstates ()))");
+        const auto [e, count] = agree(s, 0);
+        CHECK(e.chains[0].branches == 1);
+        CHECK(count == 3);
+    }
 }

@@ -67,6 +67,16 @@ TEST_CASE("scenarios/cause_comparison: why a squeezed block does not move apart"
     auto u = a.why(up, 1, d);
     REQUIRE(u.has_value());
     CHECK(u->status == alex::WhyAnswer::Status::ruled_out);
+    // a lifting off the table is past the zero threshold of its net force in every branch: excluded
+    // by cases over the branches (with the nogoods that the other objects meet on the way).
+    alex::QueryFact lift{alex::QueryFact::Kind::translational_motion, object(scene, "a"), {alex::Sign::zero, alex::Sign::plus},
+                         std::nullopt, std::nullopt};
+    auto l = a.why(lift, 1, d);
+    REQUIRE(l.has_value());
+    CHECK(l->status == alex::WhyAnswer::Status::ruled_out);
+    CHECK(l->exclusions.size() >= 3);
+    REQUIRE_FALSE(l->notes.empty());
+    CHECK(l->notes.front().find("in every branch") != std::string::npos);
     CHECK_FALSE(d.has_errors());
 }
 
