@@ -51,8 +51,9 @@ void Builder::absorb_short_runs(std::vector<ChainNode>& nodes, bool is_closed) {
 }
 
 // Where a join between boundary points a and b lies: the crossing of their tangent lines when
-// the normals differ enough to make it well conditioned and it lies near them (a corner), moved
-// onto the boundary along the mean normal.
+// the normals differ enough to make it well conditioned and it lies near them (a corner: within
+// 1.5 cells, or within 4 cells along each axis if the boundary is found on both tangent lines),
+// moved onto the boundary along the mean normal.
 Eigen::Vector2d Builder::corner(const ChainNode& a, const ChainNode& b) {
     const Eigen::Vector2d pb = a.q + difference(r, a.q, b.q);
     const Eigen::Vector2d mid = 0.5 * (a.q + pb);
@@ -62,9 +63,22 @@ Eigen::Vector2d Builder::corner(const ChainNode& a, const ChainNode& b) {
         Eigen::Matrix2d m;
         m << a.normal.x(), a.normal.y(), b.normal.x(), b.normal.y();
         const Eigen::Vector2d x = m.inverse() * Eigen::Vector2d(a.normal.dot(a.q), b.normal.dot(pb));
-        if ((x - mid).cwiseQuotient(cell()).norm() < 1.5) guess = x;
+        const Eigen::Vector2d off = (x - mid).cwiseQuotient(cell());
+            if (off.norm() < 1.5 || (off.lpNorm<Eigen::Infinity>() < 4 && on_tangents(a.q, a.normal, x) && on_tangents(pb, b.normal, x)))
+            guess = x;
     }
     return project(guess, a.normal + b.normal);
+}
+
+// Whether the boundary follows the tangent line from boundary point p (normal n) to x: at the
+// middle, a fiftieth of a cell along n is free and as far against it blocked. The tip of a
+// blocked needle thinner than a cell lies further from the last crossings the grid sees than a
+// cell or so; its two sides, straight near the tip, say where it is.
+bool Builder::on_tangents(const Eigen::Vector2d& p, const Eigen::Vector2d& n, const Eigen::Vector2d& x) {
+    const double scaled = n.cwiseQuotient(cell()).norm();
+    if (!(scaled > 0)) return false;
+    const Eigen::Vector2d o = n * (0.02 / scaled), m = 0.5 * (p + x);
+    return in_domain(m + o) && in_domain(m - o) && !blocked(m + o) && blocked(m - o);
 }
 
 // A run of a normal with a zero component (e.g. (0 +)) shorter than half a grid cell, between

@@ -78,6 +78,7 @@ struct Builder {
     void insert_normal_joins(std::size_t c);
     void collapse_point_runs(std::size_t c);
     Eigen::Vector2d corner(const ChainNode& a, const ChainNode& b);
+    bool on_tangents(const Eigen::Vector2d& p, const Eigen::Vector2d& n, const Eigen::Vector2d& x);
     bool duplicate(const Division& d) const;
     void grow_fsds();
     bool runs_along_boundary(const Division& d, const CSpaceAxis& ax);
