@@ -77,7 +77,7 @@ struct Builder {
     void absorb_short_runs(std::vector<ChainNode>& nodes, bool is_closed);
     void insert_normal_joins(std::size_t c);
     void collapse_point_runs(std::size_t c);
-    Eigen::Vector2d corner(const ChainNode& a, const ChainNode& b);
+    Eigen::Vector2d corner(const std::vector<ChainNode>& nodes, std::size_t k, bool is_closed);
     bool on_tangents(const Eigen::Vector2d& p, const Eigen::Vector2d& n, const Eigen::Vector2d& x);
     bool duplicate(const Division& d) const;
     void grow_fsds();
