@@ -110,18 +110,7 @@ CSpaceResult classify_cspace(const PairOracle& oracle, const CSpaceRequest& requ
                     n[axis] = along;
                 }
                 n.normalize();
-                // A normal pointing back towards the blocked sample contradicts the crossing.
-                // Where two contact features meet at a sharp corner (a pawl's tip on a ratchet
-                // tooth's tip), the exact features nearest a configuration that the meshes found
-                // (within the chordal error of touching) can be those of the surface's far side.
-                // If a probe a twentieth of a cell out confirms that the opposite direction is
-                // the free side, take it; each such sign error would otherwise start a CSEG of a
-                // cell or less and two joins, the more of them the finer the grid.
-                if (n[axis] * along < -request.normal_zero_tolerance) {
-                    const double d = 0.05 * std::min(request.axes[0].step(), request.axes[1].step());
-                    out.oracle_calls += 2;
-                    if (!oracle.blocked(wrap(request, p.q - d * n)) && oracle.blocked(wrap(request, p.q + d * n))) n = -n;
-                }
+                p.normal_contradicts_edge = n[axis] * along < -request.normal_zero_tolerance;
                 p.normal = n;
                 p.qual = qualitative(p.normal, request.normal_zero_tolerance);
                 out.boundary.push_back(p);

@@ -21,10 +21,48 @@ void Builder::make_chains(const std::vector<BoundaryChain>& traced) {
             const auto& p = space.boundary[static_cast<std::size_t>(k)];
             nodes.push_back({p.q, k, std::nullopt, p.qual, p.normal});
         }
+        adopt_neighbour_normals(nodes, t.points, t.closed);
         absorb_short_runs(nodes, t.closed);
         chains.push_back(std::move(nodes));
         closed.push_back(t.closed);
     }
+}
+
+// A point whose normal contradicts its own crossing (BoundaryPoint::normal_contradicts_edge)
+// takes the normal of the nearest point before it along the chain that has a sound one (after
+// it, at a chain's open start). Flipping such normals instead made things worse where the far
+// surface is not parallel to the near one (the escapement's pallet corner at grid 256: 92 places
+// became 135); left alone, each started a CSEG of a cell or less and two joins, the more of
+// them the finer the grid (the ratchet: 63 to 143 places).
+void Builder::adopt_neighbour_normals(std::vector<ChainNode>& nodes, const std::vector<int>& points, bool is_closed) {
+    const std::size_t n = nodes.size();
+    auto sound = [&](std::size_t k) { return !space.boundary[static_cast<std::size_t>(points[k])].normal_contradicts_edge; };
+    std::size_t good = n;
+    for (std::size_t k = 0; k < n; ++k)
+        if (sound(k)) {
+            good = k;
+            break;
+        }
+    if (good == n) return;  // nothing sound to take from
+    std::vector<ChainNode> fixed = nodes;
+    for (std::size_t k = 0; k < n; ++k) {
+        if (sound(k)) continue;
+        std::optional<std::size_t> from;
+        for (std::size_t s = 1; s < n && !from; ++s) {  // backwards first
+            if (!is_closed && s > k) break;
+            const std::size_t j = (k + n - s) % n;
+            if (sound(j)) from = j;
+        }
+        for (std::size_t s = 1; s < n && !from; ++s) {  // then forwards
+            if (!is_closed && k + s >= n) break;
+            const std::size_t j = (k + s) % n;
+            if (sound(j)) from = j;
+        }
+        if (!from) continue;
+        fixed[k].qual = nodes[*from].qual;
+        fixed[k].normal = nodes[*from].normal;
+    }
+    nodes = std::move(fixed);
 }
 
 // 8.1.6: "interactions between small irregularities on surfaces may be ignored": a run of one
