@@ -271,8 +271,9 @@ TEST_CASE("geometry/pair_vocabulary: the ratchet's place vocabulary settles as t
     // configurations found on the meshes near it could name the far side of the surface. Each
     // such flicker started a CSEG and two joins (more of them the finer the grid: 63 to 143
     // places between grids 64x64 and 256x2048), and the needle's apex was placed a cell short
-    // of its tip, losing its FSDs at some grids. From 64 x 256 on the vocabulary is one
-    // (docs/ACCURACY.md: 51 places at 64x256 .. 256x1024).
+    // of its tip, losing its FSDs at some grids. These grids all give one vocabulary, 51 places
+    // (docs/ACCURACY.md: so do 256x1024 and 256x2048; 64x512 and 128x1024 give 33 and 44, the
+    // divisions grazing the needle's apex not started, which is not settled).
     auto ratchet = [](int n0, int n1) {
         return "(Defmechanism ratchet Settings ((grid 64 64))"
                " Parts ((ratchet-wheel (ratchet-wheel (teeth 12) (root-radius 0.8) (tip-radius 1.0)) (rotation))"
