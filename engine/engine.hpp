@@ -13,7 +13,9 @@
 // Semantics:  of `not`, aggregates and contexts: docs/RULES.md "## Semantics".
 // Errors:     a rule that cannot be evaluated soundly (negation over an assumption-dependent fact
 //             without a context, ...) or a builtin error is reported into the Diagnostics given to
-//             run(), located at the condition; API misuse throws qm::InternalError.
+//             run(), located at the condition; so is a choice set that shares an assumption with
+//             another, different one (located at its `exactly one`, naming the other's location).
+//             API misuse throws qm::InternalError.
 // Knows nothing of mechanics.
 #pragma once
 #include "atms/atms.hpp"
@@ -25,6 +27,7 @@
 #include "engine/matcher.hpp"
 #include "engine/value_table.hpp"
 #include "qm/diagnostics.hpp"
+#include <map>
 #include <optional>
 #include <set>
 #include <span>
@@ -133,6 +136,9 @@ private:
     void execute(const RuleInstance& instance, Diagnostics& diagnostics);
     std::optional<FactId> instantiate(const CompiledAtom& atom, const Binding& b, Diagnostics& diagnostics);
     void assume_fact(FactId f, atms::InformantId why, std::span<const atms::NodeId> antecedents);
+    void declare_choice_set(const CompiledConsequent& c, const CompiledRule& rule, atms::InformantId why,
+                            std::vector<atms::AssumptionId> set, std::span<const atms::NodeId> nodes,
+                            Diagnostics& diagnostics);
 
     CompiledProgram program_;
     ValueTable values_;
@@ -148,7 +154,9 @@ private:
     IdVector<RuleId, std::size_t> rule_cursor_;          // activation_log_ prefix each rule has seen
     IdVector<RuleId, std::uint8_t> rule_matched_;               // a full match has been done
     std::vector<std::vector<atms::AssumptionId>> choice_sets_;
-    std::set<std::vector<atms::AssumptionId>> choice_set_keys_;
+    std::vector<SourceLocation> choice_set_where_;       // the `exactly one` that declared each set
+    std::set<std::vector<atms::AssumptionId>> choice_set_keys_;  // every set seen, sorted (also refused ones)
+    std::map<atms::AssumptionId, std::uint32_t> choice_set_of_;  // the choice set of each member
     std::vector<bool> is_choice_assumption_;             // indexed by AssumptionId
     std::vector<Context> contexts_;
     bool closed_world_used_ = false;

@@ -98,7 +98,6 @@ void Engine::execute(const RuleInstance& instance, Diagnostics& diagnostics) {
                 b[c.slot].reset();
                 break;
             case CompiledConsequent::Kind::exactly_one: {
-                // Law 1 style uniqueness: each element an assumption, pairwise nogoods, one choice set.
                 std::vector<atms::AssumptionId> set;
                 std::vector<atms::NodeId> nodes;
                 for (ValueId e : elements(c)) {
@@ -113,16 +112,46 @@ void Engine::execute(const RuleInstance& instance, Diagnostics& diagnostics) {
                     }
                 }
                 b[c.slot].reset();
-                for (std::size_t i = 0; i < nodes.size(); ++i)
-                    for (std::size_t j = i + 1; j < nodes.size(); ++j) atms_.add_nogood(why, {nodes[i], nodes[j]});
-                for (atms::AssumptionId a : set) is_choice_assumption_[a.value] = true;
-                std::vector<atms::AssumptionId> key = set;
-                std::sort(key.begin(), key.end());
-                if (choice_set_keys_.insert(key).second) choice_sets_.push_back(std::move(set));
+                declare_choice_set(c, rule, why, std::move(set), nodes, diagnostics);
                 break;
             }
         }
     }
+}
+
+// Law 1 style uniqueness: each element an assumption, a nogood for every pair, one choice set. The
+// interpretations pick one assumption from every choice set, which the ATMS can only do for
+// disjoint sets: a set sharing an assumption with another (not identical) set is refused, located.
+void Engine::declare_choice_set(const CompiledConsequent& c, const CompiledRule& rule, atms::InformantId why,
+                                std::vector<atms::AssumptionId> set, std::span<const atms::NodeId> nodes,
+                                Diagnostics& diagnostics) {
+    std::vector<atms::AssumptionId> key = set;
+    std::sort(key.begin(), key.end());
+    // The same set declared again (another binding, another rule) adds nothing; a refused one was
+    // reported when first seen.
+    if (!choice_set_keys_.insert(key).second) return;
+    for (atms::AssumptionId a : set) {
+        auto owner = choice_set_of_.find(a);
+        if (owner == choice_set_of_.end()) continue;
+        const std::vector<atms::AssumptionId>& other = choice_sets_[owner->second];
+        std::string members;
+        for (atms::AssumptionId m : other) members += (members.empty() ? "" : ", ") + print(m);
+        const SourceLocation& at = choice_set_where_[owner->second];
+        diagnostics.error(c.where, "rule '" + rule.name + "': `exactly one` would put " + print(a) +
+                                       " in a second choice set: it is already in the choice set {" + members +
+                                       "} declared at " + at.file + ":" + std::to_string(at.line) + ":" +
+                                       std::to_string(at.column) + "; choice sets must be disjoint or identical");
+        return;
+    }
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+        for (std::size_t j = i + 1; j < nodes.size(); ++j) atms_.add_nogood(why, {nodes[i], nodes[j]});
+    const auto index = static_cast<std::uint32_t>(choice_sets_.size());
+    for (atms::AssumptionId a : set) {
+        is_choice_assumption_[a.value] = true;
+        choice_set_of_.emplace(a, index);
+    }
+    choice_sets_.push_back(std::move(set));
+    choice_set_where_.push_back(c.where);
 }
 
 }  // namespace qm::engine
