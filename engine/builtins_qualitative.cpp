@@ -1,5 +1,8 @@
 // engine/builtins_qualitative.cpp: thesis section 2.3 (Tables 2.2-2.3, Defs 1, 4, 12-14, 38).
 #include "engine/builtins_qualitative.hpp"
+#include <algorithm>
+#include <string>
+#include <vector>
 
 namespace qm::engine {
 namespace {
@@ -29,17 +32,17 @@ char dot_sign(const std::string& a, const std::string& b) {
     for (std::size_t i = 0; i < a.size(); ++i) s = sign_sum(s, sign_product(a[i], b[i]));
     return s;
 }
-bool open_half_plane(const std::string& a, const std::string& b) { return dot_sign(a, b) == '+'; }
 bool is_zero(const std::string& v) { return v.find_first_not_of('0') == std::string::npos; }
 
-// Def 38: 0 x = v; 1 Open-Half-Plane(v, x); 2 x zero; 3 x = Rotate-90(v, +/-) (and, our reading,
-// any other direction with no definite dot product); 4 Open-Half-Plane(-v, x); 5 x = -v.
-int nearness(const std::string& v, const std::string& x) {
-    if (x == v) return 0;
-    if (x == neg(v)) return 5;
-    if (is_zero(x)) return 2;
-    if (open_half_plane(v, x)) return 1;
-    if (open_half_plane(neg(v), x)) return 4;
+// Def 38, the rank of x relative to a definite v, given x == v, x == -v and the sign of v.x: 0 x = v;
+// 1 Open-Half-Plane(v, x); 2 x zero; 3 x = Rotate-90(v, +/-) (and, our reading, any other direction
+// with no definite dot product); 4 Open-Half-Plane(-v, x), i.e. v.x is -; 5 x = -v.
+int nearness_rank(bool equal, bool opposite, bool x_zero, char dot) {
+    if (equal) return 0;
+    if (opposite) return 5;
+    if (x_zero) return 2;
+    if (dot == '+') return 1;
+    if (dot == '-') return 4;
     return 3;
 }
 
@@ -47,26 +50,32 @@ using Args = std::span<const ValueId>;
 
 bool single(const std::vector<std::string>& d) { return d[0].size() == 1 && d[1].size() == 1; }
 
-// Every sign resolution of an ambiguous direction: each `?` becomes +, 0 and - (section 2.3:
-// "we resolve this ambiguity by branching").
-std::vector<std::string> resolutions(const std::string& v) {
-    std::vector<std::string> out{""};
-    for (char c : v) {
-        std::vector<std::string> next;
-        for (const auto& p : out) {
-            if (c != '?') next.push_back(p + c);
-            else
-                for (char s : {'+', '0', '-'}) next.push_back(p + s);
-        }
-        out = std::move(next);
-    }
-    return out;
-}
-
-// Def 38 for an ambiguous v: the nearest rank over v's resolutions.
+// Def 38 for an ambiguous v: the nearest rank over v's resolutions (section 2.3: "we resolve this
+// ambiguity by branching"; each `?` becomes +, 0 or -). There are 3^k resolutions of k `?`s, so
+// rather than listing them we follow, component by component, the set of states a resolution r can
+// be in: the sign of the dot product r.x so far, and whether r still equals x and -x. The rank of
+// r depends on nothing else, and every `?` is resolved independently, so the states reachable after
+// the last component are exactly those of the resolutions: at most 4 x 2 x 2 = 16, whatever k.
 int nearness_resolved(const std::string& v, const std::string& x) {
+    struct State {
+        char dot;
+        bool equal, opposite;  // r == x, r == -x so far
+        bool operator==(const State&) const = default;
+    };
+    std::vector<State> states{{'0', true, true}};
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        std::vector<State> next;
+        for (char r : {'+', '0', '-'}) {
+            if (v[i] != '?' && v[i] != r) continue;
+            for (const State& s : states) {
+                State t{sign_sum(s.dot, sign_product(r, x[i])), s.equal && r == x[i], s.opposite && r == sign_neg(x[i])};
+                if (std::find(next.begin(), next.end(), t) == next.end()) next.push_back(t);
+            }
+        }
+        states = std::move(next);
+    }
     int best = 5;
-    for (const auto& r : resolutions(v)) best = std::min(best, nearness(r, x));
+    for (const State& s : states) best = std::min(best, nearness_rank(s.equal, s.opposite, is_zero(x), s.dot));
     return best;
 }
 

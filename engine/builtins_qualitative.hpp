@@ -10,7 +10,8 @@
 //              quarter turns e x v summed; a zero rotation gives the zero vector), translations n /
 //              rotations n (Defs 1 and 4: every direction of the dimension, the zero one included;
 //              rotations have 1 component in 2-D and 3 in 3-D), zero-translation n, zero-rotation n,
-//              nearness v x (Def 38 rank 0..5; an ambiguous v takes the nearest of its resolutions),
+//              nearness v x (Def 38 rank 0..5; an ambiguous v takes the nearest of its resolutions, found
+//              per component without listing them),
 //              qsum-of s (the qualitative sum of a set's directions; a direction is its own sum),
 //              set-add s x (s with x added; to collect values in an aggregate).
 //   tests      half-plane a b (dot sign + or 0), open-half-plane a b (dot sign +; an ambiguous dot
