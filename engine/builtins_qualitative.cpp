@@ -1,6 +1,8 @@
 // engine/builtins_qualitative.cpp: thesis section 2.3 (Tables 2.2-2.3, Defs 1, 4, 12-14, 38).
 #include "engine/builtins_qualitative.hpp"
 #include <algorithm>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -187,29 +189,50 @@ std::vector<std::string> all_directions(std::size_t n) {
     return out;
 }
 
-// n must be the integer 2 or 3.
-std::optional<std::int64_t> dimension(const ValueTable& v, ValueId x) {
+// Translations (Defs 1 and 3) are defined for any number of components; 3^n of them are listed,
+// so the dimension is capped. Rotations (Defs 4 and 6) only in the plane (one component, about the
+// normal) and in space (three, about x, y and z): the thesis gives them no other form (Table 2.1).
+constexpr std::int64_t max_translation_dimension = 8;  // 3^8 = 6561 directions
+
+std::optional<std::size_t> translation_dimension(const ValueTable& v, ValueId x) {
+    const Value& val = v.value(x);
+    if (val.kind != ValueKind::integer || val.integer < 1 || val.integer > max_translation_dimension) return std::nullopt;
+    return static_cast<std::size_t>(val.integer);
+}
+std::optional<std::size_t> rotation_components(const ValueTable& v, ValueId x) {
     const Value& val = v.value(x);
     if (val.kind != ValueKind::integer || (val.integer != 2 && val.integer != 3)) return std::nullopt;
-    return val.integer;
+    return val.integer == 2 ? 1 : 3;
+}
+
+// The number of components of the directions `name` produces for dimension x; else an error text.
+std::optional<std::size_t> components(const ValueTable& v, ValueId x, const char* name, bool rotation, std::string& error) {
+    auto n = rotation ? rotation_components(v, x) : translation_dimension(v, x);
+    if (!n)
+        error = std::string("'") + name + "' expects " +
+                (rotation ? std::string("the dimension 2 or 3 (rotations are defined only in the plane and in space)")
+                          : "a dimension from 1 to " + std::to_string(max_translation_dimension)) +
+                ", not " + v.print(x);
+    return n;
 }
 
 BuiltinFn direction_set(const char* name, bool rotations) {
     return [name, rotations](ValueTable& v, Args a) {
-        auto n = dimension(v, a[0]);
-        if (!n) return BuiltinResult::fail(std::string("'") + name + "' expects the dimension 2 or 3");
-        std::size_t components = rotations && *n == 2 ? 1 : static_cast<std::size_t>(*n);
+        std::string error;
+        auto n = components(v, a[0], name, rotations, error);
+        if (!n) return BuiltinResult::fail(error);
         std::vector<ValueId> out;
-        for (const auto& d : all_directions(components)) out.push_back(v.direction(d));
+        for (const auto& d : all_directions(*n)) out.push_back(v.direction(d));
         return BuiltinResult::of(v.set(std::move(out)));
     };
 }
 
 BuiltinFn zero_direction(const char* name, bool rotation) {
     return [name, rotation](ValueTable& v, Args a) {
-        auto n = dimension(v, a[0]);
-        if (!n) return BuiltinResult::fail(std::string("'") + name + "' expects the dimension 2 or 3");
-        return BuiltinResult::of(v.direction(std::string(rotation && *n == 2 ? 1 : static_cast<std::size_t>(*n), '0')));
+        std::string error;
+        auto n = components(v, a[0], name, rotation, error);
+        if (!n) return BuiltinResult::fail(error);
+        return BuiltinResult::of(v.direction(std::string(*n, '0')));
     };
 }
 

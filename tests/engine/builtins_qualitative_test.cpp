@@ -152,7 +152,7 @@ TEST_CASE("engine/builtins_qualitative: vector sums, negation, direction sets, n
     CHECK(values.value(*apply("rotations", {values.integer(3)}).value).elements.size() == 27);
     CHECK(text(apply("zero-rotation", {values.integer(2)})) == "(0)");
     CHECK(text(apply("zero-translation", {values.integer(3)})) == "(0 0 0)");
-    CHECK(!apply("translations", {values.integer(4)}).error.empty());
+    CHECK(!apply("translations", {values.integer(9)}).error.empty());
     CHECK(apply("zero?", {dir("00")}).holds);
     CHECK(apply("nonzero?", {dir("0-")}).holds);
     // Def 38 ranks relative to v = (+ 0).
@@ -249,3 +249,35 @@ TEST_CASE("engine/builtins_qualitative: nearness of a direction with many `?` ne
     CHECK(text(apply("nearness", {dir(minus), dir(plus)})) == "5");
 }
 
+TEST_CASE("engine/builtins_qualitative: translations of any dimension 1..8 (Defs 1, 3); rotations in 2-D and 3-D only") {
+    auto count = [](const char* name, std::int64_t n) {
+        auto r = apply(name, {values.integer(n)});
+        REQUIRE(r.value.has_value());
+        return values.value(*r.value).elements.size();
+    };
+    CHECK(count("translations", 1) == 3);
+    CHECK(text(apply("translations", {values.integer(1)})) == "{(+) (-) (0)}");
+    CHECK(count("translations", 2) == 9);
+    CHECK(count("translations", 4) == 81);
+    CHECK(count("translations", 8) == 6561);
+    CHECK(text(apply("zero-translation", {values.integer(1)})) == "(0)");
+    CHECK(text(apply("zero-translation", {values.integer(4)})) == "(0 0 0 0)");
+    // Every 4-D direction once, each of four signs from + 0 -.
+    auto four = apply("translations", {values.integer(4)});
+    std::set<std::string> seen;
+    for (ValueId d : values.value(*four.value).elements) {
+        CHECK(values.value(d).text.size() == 4);
+        seen.insert(values.value(d).text);
+    }
+    CHECK(seen.size() == 81);
+    for (std::int64_t bad : {0, -1, 9, 64})
+        for (const char* name : {"translations", "zero-translation"})
+            CHECK(apply(name, {values.integer(bad)}).error ==
+                  std::string("'") + name + "' expects a dimension from 1 to 8, not " + std::to_string(bad));
+    for (std::int64_t bad : {1, 4})
+        for (const char* name : {"rotations", "zero-rotation"})
+            CHECK(apply(name, {values.integer(bad)}).error ==
+                  std::string("'") + name + "' expects the dimension 2 or 3 (rotations are defined only in the plane "
+                                            "and in space), not " + std::to_string(bad));
+    CHECK(!apply("translations", {values.symbol("two")}).error.empty());
+}
