@@ -137,8 +137,8 @@ private:
     std::optional<FactId> instantiate(const CompiledAtom& atom, const Binding& b, Diagnostics& diagnostics);
     void assume_fact(FactId f, atms::InformantId why, std::span<const atms::NodeId> antecedents);
     void declare_choice_set(const CompiledConsequent& c, const CompiledRule& rule, atms::InformantId why,
-                            std::vector<atms::AssumptionId> set, std::span<const atms::NodeId> nodes,
-                            Diagnostics& diagnostics);
+                            std::span<const atms::NodeId> antecedents, std::vector<atms::AssumptionId> set,
+                            std::span<const atms::NodeId> nodes, Diagnostics& diagnostics);
 
     CompiledProgram program_;
     ValueTable values_;

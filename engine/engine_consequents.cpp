@@ -112,7 +112,7 @@ void Engine::execute(const RuleInstance& instance, Diagnostics& diagnostics) {
                     }
                 }
                 b[c.slot].reset();
-                declare_choice_set(c, rule, why, std::move(set), nodes, diagnostics);
+                declare_choice_set(c, rule, why, ants, std::move(set), nodes, diagnostics);
                 break;
             }
         }
@@ -122,9 +122,17 @@ void Engine::execute(const RuleInstance& instance, Diagnostics& diagnostics) {
 // Law 1 style uniqueness: each element an assumption, a nogood for every pair, one choice set. The
 // interpretations pick one assumption from every choice set, which the ATMS can only do for
 // disjoint sets: a set sharing an assumption with another (not identical) set is refused, located.
+// "Exactly one of nothing" is false: an empty set makes the firing's antecedents a nogood, so the
+// environments where it fired are inconsistent, and `--why` names the rule that made them so. (An
+// empty choice set registered as such would instead leave no interpretation at all, with no
+// nogood to say why, even where the firing's antecedents do not hold.)
 void Engine::declare_choice_set(const CompiledConsequent& c, const CompiledRule& rule, atms::InformantId why,
-                                std::vector<atms::AssumptionId> set, std::span<const atms::NodeId> nodes,
-                                Diagnostics& diagnostics) {
+                                std::span<const atms::NodeId> antecedents, std::vector<atms::AssumptionId> set,
+                                std::span<const atms::NodeId> nodes, Diagnostics& diagnostics) {
+    if (set.empty()) {
+        atms_.add_nogood(why, antecedents);
+        return;
+    }
     std::vector<atms::AssumptionId> key = set;
     std::sort(key.begin(), key.end());
     // The same set declared again (another binding, another rule) adds nothing; a refused one was
