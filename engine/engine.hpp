@@ -25,6 +25,7 @@
 #include "engine/fact_store.hpp"
 #include "engine/firing.hpp"
 #include "engine/matcher.hpp"
+#include "engine/run_options.hpp"
 #include "engine/value_table.hpp"
 #include "qm/diagnostics.hpp"
 #include <map>
@@ -66,11 +67,12 @@ public:
 
     // ---- running --------------------------------------------------------------------------------
     // Runs every stratum to quiescence; `not` and aggregates are decided generically (a fact whose
-    // label depends on assumptions makes them undecidable: a diagnostic).
-    void run(Diagnostics& diagnostics);
+    // label depends on assumptions makes them undecidable: a diagnostic). With options.max_steps,
+    // the run stops when it has taken that many steps (a diagnostic; see run_options.hpp).
+    void run(Diagnostics& diagnostics, const RunOptions& options = {});
     // Runs every stratum; `not` and aggregates are decided in the context environment C.
     // Pre: context was issued by atms().
-    ContextRun run_in_context(atms::EnvId context, Diagnostics& diagnostics);
+    ContextRun run_in_context(atms::EnvId context, Diagnostics& diagnostics, const RunOptions& options = {});
 
     // ---- facts and labels -----------------------------------------------------------------------
     [[nodiscard]] const FactStore& facts() const noexcept { return facts_; }
@@ -124,7 +126,12 @@ private:
     atms::InformantId new_firing(Firing f);
     void note_if_in(FactId f);
     // engine_run.cpp
-    void run_strata(std::optional<std::uint32_t> context, Diagnostics& diagnostics);
+    void run_strata(std::optional<std::uint32_t> context, Diagnostics& diagnostics, const RunOptions& options);
+    // Takes n steps of the run's RunOptions::max_steps; if they would exceed it, stops the run
+    // instead (stop()) and returns false.
+    bool spend(std::size_t n, const CompiledRule& rule, const SourceLocation& where, Diagnostics& diagnostics);
+    // Ends the current run: nothing more is matched or fired; a diagnostic at where, naming rule.
+    void stop(const CompiledRule& rule, const SourceLocation& where, Diagnostics& diagnostics);
     void match_rule(RuleId r, std::optional<Seed> seed, std::optional<std::uint32_t> context,
                     Diagnostics& diagnostics, const Binding* initial = nullptr);
     bool drain(std::uint32_t stratum, std::optional<std::uint32_t> context, Diagnostics& diagnostics);
@@ -160,6 +167,9 @@ private:
     std::vector<bool> is_choice_assumption_;             // indexed by AssumptionId
     std::vector<Context> contexts_;
     bool closed_world_used_ = false;
+    RunOptions options_;                                 // of the current run
+    std::size_t steps_ = 0;                              // taken by the current run
+    bool stopped_ = false;                               // the current run ran out of steps
     std::size_t rule_firings_ = 0;
 };
 }  // namespace qm::engine

@@ -23,6 +23,7 @@ std::optional<FactId> Engine::instantiate(const CompiledAtom& atom, const Bindin
 
 void Engine::execute(const RuleInstance& instance, Diagnostics& diagnostics) {
     const CompiledRule& rule = program_.rules[instance.rule];
+    if (!spend(1, rule, rule.where, diagnostics)) return;
     ++rule_firings_;
     atms::InformantId why = new_firing(Firing{Firing::Kind::rule, instance.rule, instance.binding, instance.context, rule.where});
     std::vector<atms::NodeId> ants;
@@ -87,8 +88,10 @@ void Engine::execute(const RuleInstance& instance, Diagnostics& diagnostics) {
                     note_if_in(*f);
                 }
                 break;
-            case CompiledConsequent::Kind::for_all_assert:
-                for (ValueId e : elements(c)) {
+            case CompiledConsequent::Kind::for_all_assert: {
+                const std::vector<ValueId> es = elements(c);
+                if (!spend(es.size(), rule, c.where, diagnostics)) return;
+                for (ValueId e : es) {
                     b[c.slot] = e;
                     if (auto f = instantiate(c.atom, b, diagnostics)) {
                         atms_.justify(element_informant(), ants, fact_nodes_[*f].node);
@@ -97,10 +100,16 @@ void Engine::execute(const RuleInstance& instance, Diagnostics& diagnostics) {
                 }
                 b[c.slot].reset();
                 break;
+            }
             case CompiledConsequent::Kind::exactly_one: {
+                // One step per element and one per pair of elements (a nogood each), before anything
+                // is assumed: a choice set is declared whole or not at all.
+                const std::vector<ValueId> es = elements(c);
+                if (!spend(es.size() + es.size() * (es.size() - (es.empty() ? 0 : 1)) / 2, rule, c.where, diagnostics))
+                    return;
                 std::vector<atms::AssumptionId> set;
                 std::vector<atms::NodeId> nodes;
-                for (ValueId e : elements(c)) {
+                for (ValueId e : es) {
                     b[c.slot] = e;
                     if (auto f = instantiate(c.atom, b, diagnostics)) {
                         assume_fact(*f, element_informant(), ants);
