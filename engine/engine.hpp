@@ -96,6 +96,7 @@ public:
 
     // ---- provenance -----------------------------------------------------------------------------
     [[nodiscard]] const CompiledProgram& program() const noexcept { return program_; }
+    [[nodiscard]] const BuiltinRegistry& builtins() const noexcept { return builtins_; }
     [[nodiscard]] const Firing& firing(atms::InformantId i) const;  // Pre: i issued by this engine
     [[nodiscard]] std::size_t firing_count() const noexcept { return firings_.size(); }
     [[nodiscard]] std::size_t rule_firings() const noexcept { return rule_firings_; }
