@@ -155,6 +155,10 @@ TEST_CASE("engine/builtins_qualitative: vector sums, negation, direction sets, n
     CHECK(!apply("translations", {values.integer(9)}).error.empty());
     CHECK(apply("zero?", {dir("00")}).holds);
     CHECK(apply("nonzero?", {dir("0-")}).holds);
+    // An ambiguous component is not known to be 0: (?) is nonzero, as docs/RULES.md says.
+    CHECK(apply("nonzero?", {dir("?")}).holds);
+    CHECK(apply("nonzero?", {dir("?0")}).holds);
+    CHECK(!apply("zero?", {dir("?")}).holds);
     // Def 38 ranks relative to v = (+ 0).
     CHECK(text(apply("nearness", {dir("+0"), dir("+0")})) == "0");
     CHECK(text(apply("nearness", {dir("+0"), dir("++")})) == "1");
