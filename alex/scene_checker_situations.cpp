@@ -6,6 +6,8 @@
 
 #include "alex/detail/scene_checker.hpp"
 
+#include <algorithm>
+
 namespace qm::alex {
 namespace detail {
 
@@ -44,8 +46,23 @@ struct SceneChecker::DescriptorVisitor {
     void operator()(const ast::ForceEntry& e) const {
         if (auto f = c.check_force(e)) out.forces.push_back(*f);
     }
+    // One current motion per object: a second Motion of the same object in one situation would
+    // leave no consistent combination (Law 1), or repeat the first, so it is an error like other
+    // duplicates.
     void operator()(const ast::MotionEntry& e) const {
-        if (auto m = c.motion(e)) out.motions.push_back(*m);
+        auto m = c.motion(e);
+        if (!m) return;
+        auto first = std::find_if(out.motions.begin(), out.motions.end(), [&](const Motion& x) { return x.object == m->object; });
+        if (first == out.motions.end()) {
+            out.motions.push_back(*m);
+            return;
+        }
+        const std::string name = c.scene_.objects[m->object].name;
+        const bool same = first->translation == m->translation && first->rotation == m->rotation;
+        c.cx_.error(e, same ? "the motion of '" + name + "' is given twice in one situation"
+                            : "two different motions of '" + name + "' in one situation: an object has one motion at "
+                              "a time (Law 1), so no combination of motions would be consistent",
+                    {"the first Motion of '" + name + "' in this situation is at " + line_column(first->where)});
     }
 };
 
