@@ -101,7 +101,11 @@ struct WhyAnswer {
     std::size_t situation = 0;
     std::vector<Derivation> support;       // holds: a consistent combination / the absence of constraints, explained
     std::vector<Exclusion> exclusions;     // ruled_out: each minimal nogood (or case-analysis branch)
-    std::vector<std::vector<std::string>> responsible_sets;  // minimal sets of contacts/forces responsible
+    // Sets of contacts, forces and given motions, each of which suffices to rule the fact out
+    // (docs/ANALYSIS.md, "Why"); every minimal such set when responsible_minimal, else one
+    // sufficient set that may not be minimal (a large scene).
+    std::vector<std::vector<std::string>> responsible_sets;
+    bool responsible_minimal = true;
     std::vector<std::string> notes;        // e.g. "excluded by case analysis over gear's motions"
 };
 

@@ -324,3 +324,44 @@ TEST_CASE("cli/scene_command: interactive errors name the command, and whatif ch
     CHECK(r.err.find("boost") == std::string::npos);
     CHECK(r.out.find("9 consistent combinations") != std::string::npos);  // the last whatif still answers
 }
+
+// Regressions found by audit 5: --why's reasons and responsible sets.
+TEST_CASE("cli/scene_command: --why lists the argument's reasons, the same in text and JSON") {
+    const std::string args = scene("recoil_escapement.def") + " --situation 2 --why 'Rotational-Motion (gear (+))'";
+    Result text = qm_atms(args);
+    Result json = qm_atms(args + " --json");
+    REQUIRE(text.status == 0);
+    REQUIRE(json.status == 0);
+    auto w = Json::parse(json.out);
+    REQUIRE(w.has_value());
+    const auto& exclusions = (*w)["exclusions"].array();
+    // Before: 21 reasons, exclusions[0] a pin of the scape wheel's translation resting on nothing.
+    CHECK(exclusions.size() <= 6);
+    REQUIRE_FALSE(exclusions.empty());
+    REQUIRE(exclusions[0]["responsible"].array().size() == 1);
+    CHECK(exclusions[0]["responsible"].array()[0].string() == "Contact (s-w-b-3 gear-top-3)");
+    for (const auto& x : exclusions) CHECK_FALSE(x["responsible"].array().empty());
+    std::size_t reasons = 0;
+    for (std::size_t at = text.out.find("  Reason "); at != std::string::npos; at = text.out.find("  Reason ", at + 1)) ++reasons;
+    CHECK(reasons == exclusions.size());
+    CHECK(text.out.find("  Reason 1: resting on {Contact (s-w-b-3 gear-top-3)}") != std::string::npos);
+    CHECK(text.out.find("the scene's description alone (no contact") == std::string::npos);
+    CHECK(text.out.find("every translation of scape-wheel but (0 0)") != std::string::npos);
+    CHECK((*w)["responsible_minimal"].boolean());
+
+    Result given = qm_atms(scene("gears.def") + " --given 'driver (0 0) (-)' --why 'Rotational-Motion (follower (-))'");
+    CHECK(given.out.find("  Reason 3:") != std::string::npos);
+    CHECK(given.out.find("  Reason 4:") == std::string::npos);  // before: 11
+}
+
+TEST_CASE("cli/scene_command: --why's responsible sets are the minimal ones, and say so") {
+    Result r = qm_atms(scene("wedge_ramp.def") + " --why 'Translational-Motion (wedge (0 0))'");
+    REQUIRE(r.status == 0);
+    CHECK(r.out.find("  Responsible (contacts, forces and given motions; the minimal sets, each suffices):\n"
+                     "    {Force (wedge (0 -) (0 0))}\n"
+                     "    {Contact (bl-b-l w-t-l), Force (block (0 -) (0 0))}\n"
+                     "    {Contact (bl-b-r w-t-r), Force (block (0 -) (0 0))}\n") != std::string::npos);
+    // The audit's check: without the block's force and its left contact the wedge still slides.
+    Result without = qm_atms(scene("wedge_ramp.def") + " --without 'Force block' --without 'Contact bl-b-l w-t-l'");
+    CHECK(without.out.find("Translational-Motion (wedge (+ -))") != std::string::npos);
+}
