@@ -124,6 +124,11 @@ public:
     // The situation with some contacts/forces taken away (docs/ANALYSIS.md: reuse vs recompute).
     [[nodiscard]] std::optional<SituationResult> what_if(std::size_t situation, std::span<const QueryFact> without,
                                                          Diagnostics& diagnostics);
+    // The contacts of a situation from which the laws derive no `touch` (rules/contact.rules), so
+    // that they constrain and push nothing: e.g. a corner against a surface it cannot touch
+    // (Definition 25). One located warning each, in the situation's order.
+    // Pre (QM_REQUIRE): 1 <= situation <= situations().size().
+    [[nodiscard]] std::vector<Diagnostic> inert_contacts(std::size_t situation);
     // The situation with extra current motions given (Figure 7.18).
     [[nodiscard]] std::optional<SituationResult> with_given(std::size_t situation, std::span<const Motion> given,
                                                             Diagnostics& diagnostics);

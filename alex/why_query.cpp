@@ -454,6 +454,8 @@ std::optional<WhyAnswer> Analysis::why(const QueryFact& query, std::size_t situa
     w.query = std::string(translational ? "Translational-" : "Rotational-") + (motion ? "Motion" : "Freedom") + " (" +
               st.scene.objects[o].name + " " + thesis_text(query.direction) + ")";
     const std::vector<ValueId> args{st.facts->symbol(o), st.facts->direction(query.direction)};
+    // A contact the laws cannot use changes every answer about the objects it joins: say so first.
+    for (const Diagnostic& inert : inert_contacts(situation)) w.notes.push_back(located(inert.where) + ": " + inert.message);
 
     if (!motion) {
         // Def 24: free unless a law constrains it; the constraint's derivation is the answer.

@@ -367,6 +367,12 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
         d.print(err);
         return 2;
     }
+    // Contacts the laws cannot use (a corner against a surface it cannot touch, Def 25): warned, located.
+    Diagnostics inert;
+    for (std::size_t s = 1; s <= analysis->situations().size(); ++s)
+        if (!options->situation || s == situation)
+            for (Diagnostic& w : analysis->inert_contacts(s)) inert.add(std::move(w));
+    inert.print(err);
     if (options->interactive) {
         Session(*analysis, options->json, out, err).run(in);
         return 0;

@@ -2,7 +2,7 @@
 // situations still has its laws checked and answers with no situations; "why" cites each scene
 // premise at the line where it is written (a constraint entry, a description), not at the object;
 // why lists the nogoods of the argument (the queried motion's first) and the exact minimal
-// responsible sets (checked by what-ifs).
+// responsible sets (checked by what-ifs); contacts the laws cannot use are reported.
 #include "alex/analysis.hpp"
 #include "alex/scene_parser.hpp"
 #include <algorithm>
@@ -276,4 +276,38 @@ TEST_CASE("alex/api: above the re-analysis limit a responsible set is labelled a
     bool said = false;
     for (const auto& n : w->notes) said |= n.find("not reduced to minimal sets") != std::string::npos;
     CHECK(said);
+}
+
+TEST_CASE("alex/api: a contact the laws cannot use is reported, and why says so") {
+    // Def 25: a tip with sides (+ -) and (- -) cannot touch a face with normal (- -).
+    const std::string text =
+        "(Defscenario 2 cb\n"                                                                           // 1
+        "  Individuals (upper lower)\n"                                                                 // 2
+        "  Descriptions ((rigid-ob upper) (rigid-ob lower))\n"                                          // 3
+        "  Surfaces ((upper (c (+ -) (- +)) (d (- -) (+ +))) (lower (a (- +) (+ -)) (b (- -) (+ +))))\n"  // 4
+        "  Corners ((upper (tip c d (0 +))))\n"                                                         // 5
+        "  Translational-Constraints ((lower (?x ?y)))\n"                                               // 6
+        "  Rotational-Constraints ((lower (?r)))\n"                                                     // 7
+        "  Forces ((upper (0 -) (0 0))))\n"                                                             // 8
+        "(Defstates ((Contact tip b) (Contact tip a)))\n";                                              // 9
+    const alex::Scene s = scene_of(text);
+    Diagnostics d;
+    auto a = alex::analyse(s, default_options(), d);
+    REQUIRE(a);
+    const auto inert = a->inert_contacts(1);
+    REQUIRE(inert.size() == 1);  // tip on a is usable
+    CHECK(inert[0].severity == Severity::warning);
+    CHECK(inert[0].where == SourceLocation{"api.def", 9, 14});
+    CHECK(inert[0].message.find("Contact (tip b)") == 0);
+    CHECK(inert[0].message.find("Definition 25") != std::string::npos);
+    auto w = a->why(motion_query(s, "upper", true, {alex::Sign::zero, alex::Sign::minus}), 1, d);
+    REQUIRE(w);
+    REQUIRE_FALSE(w->notes.empty());
+    CHECK(w->notes.front().find("api.def:9: Contact (tip b) in situation 1 constrains and pushes nothing") == 0);
+
+    // The bundled corner scene's contacts are all usable.
+    const alex::Scene c = scene_file("corner_contacts.def");
+    auto b = alex::analyse(c, default_options(), d);
+    REQUIRE(b);
+    for (std::size_t i = 1; i <= b->situations().size(); ++i) CHECK(b->inert_contacts(i).empty());
 }

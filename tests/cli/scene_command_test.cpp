@@ -325,7 +325,7 @@ TEST_CASE("cli/scene_command: interactive errors name the command, and whatif ch
     CHECK(r.out.find("9 consistent combinations") != std::string::npos);  // the last whatif still answers
 }
 
-// Regressions found by audit 5: --why's reasons and responsible sets.
+// Regressions found by audit 5: --why's reasons and responsible sets; corner contacts.
 TEST_CASE("cli/scene_command: --why lists the argument's reasons, the same in text and JSON") {
     const std::string args = scene("recoil_escapement.def") + " --situation 2 --why 'Rotational-Motion (gear (+))'";
     Result text = qm_atms(args);
@@ -364,4 +364,29 @@ TEST_CASE("cli/scene_command: --why's responsible sets are the minimal ones, and
     // The audit's check: without the block's force and its left contact the wedge still slides.
     Result without = qm_atms(scene("wedge_ramp.def") + " --without 'Force block' --without 'Contact bl-b-l w-t-l'");
     CHECK(without.out.find("Translational-Motion (wedge (+ -))") != std::string::npos);
+}
+
+TEST_CASE("cli/scene_command: a contact the laws cannot use is warned about, located, and --why says so") {
+    const std::string bad = std::string(QM_BINARY_DIR) + "/scene_cli_corner_bad.def";
+    std::ofstream(bad) << "(Defscenario 2 cb\n"
+                          "  Individuals (upper lower)\n"
+                          "  Descriptions ((rigid-ob upper) (rigid-ob lower))\n"
+                          "  Surfaces ((upper (c (+ -) (- +)) (d (- -) (+ +))) (lower (a (- +) (+ -)) (b (- -) (+ +))))\n"
+                          "  Corners ((upper (tip c d (0 +))))\n"
+                          "  Translational-Constraints ((lower (?x ?y)))\n"
+                          "  Rotational-Constraints ((lower (?r)))\n"
+                          "  Forces ((upper (0 -) (0 0))))\n"
+                          "(Defstates ((Contact tip b)))\n";
+    Result r = qm_atms(bad);
+    CHECK(r.status == 0);
+    CHECK(r.err.find("scene_cli_corner_bad.def:9:14: warning: Contact (tip b) in situation 1 constrains and pushes "
+                     "nothing") != std::string::npos);
+    CHECK(r.err.find("Definition 25") != std::string::npos);
+    Result json = qm_atms(bad + " --json");
+    CHECK(json.err.find("warning: Contact (tip b)") != std::string::npos);
+    Result why = qm_atms(bad + " --why 'Translational-Motion (upper (0 -))'");
+    CHECK(why.out.find("scene_cli_corner_bad.def:9: Contact (tip b) in situation 1 constrains and pushes nothing") !=
+          std::string::npos);
+    // The thesis' corner scene has no such contact.
+    CHECK(qm_atms(scene("corner_contacts.def")).err.empty());
 }
