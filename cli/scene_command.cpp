@@ -1,6 +1,7 @@
 // cli/scene_command.cpp: `qm-atms SCENE.def` (thesis chapters 6-7), its options and the interactive mode.
 #include "scene_command.hpp"
 #include "alex/analysis.hpp"
+#include "alex/direction_text.hpp"
 #include "alex/result_printer.hpp"
 #include "alex/scene_parser.hpp"
 #include "metric_command.hpp"
@@ -326,8 +327,34 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     }
     alex::AnalysisOptions ao;
     ao.combination_limit = options->limit;
+    std::vector<std::string> given_text;  // each --given as written, aligned with ao.given
     for (const auto& g : options->given)
-        if (auto m = alex::parse_given(*scene, g, d, "--given")) ao.given.push_back(*m);
+        if (auto m = alex::parse_given(*scene, g, d, "--given")) {
+            auto same = std::find_if(ao.given.begin(), ao.given.end(), [&](const alex::Motion& x) { return x.object == m->object; });
+            if (same != ao.given.end()) {
+                // One motion per object at a time (Law 1): the second would replace or contradict the first.
+                d.error({"--given", 1, 1}, "expected one --given per object, but '" + scene->objects[m->object].name +
+                                               "' is given twice ('" + given_text[static_cast<std::size_t>(same - ao.given.begin())] +
+                                               "' and '" + g + "')");
+                continue;
+            }
+            ao.given.push_back(*m);
+            given_text.push_back(g);
+        }
+    // A --given motion replaces a Motion the scene gives the same object (a what-if, like --without),
+    // said in a note at that Motion.
+    if (!d.has_errors())
+        for (std::size_t k = 0; k < ao.given.size(); ++k)
+            for (std::size_t s = 0; s < scene->situations.size(); ++s)
+                std::erase_if(scene->situations[s].motions, [&](const alex::Motion& m) {
+                    if (m.object != ao.given[k].object) return false;
+                    d.add({Severity::note, m.where,
+                           "--given '" + given_text[k] + "' replaces this Motion (" + scene->objects[m.object].name + " " +
+                               alex::thesis_text(m.translation) + " " + alex::thesis_text(m.rotation) + ") in situation " +
+                               std::to_string(s + 1),
+                           {}, {}});
+                    return true;
+                });
     const std::size_t situations = scene->situations.size();
     const std::size_t situation = options->situation.value_or(1);
     const bool situation_ok = situation <= situations;
@@ -358,10 +385,9 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     if (options->rules) ao.rules_directory = *options->rules;
     else if (auto dir = default_rules_directory()) ao.rules_directory = *dir;
     else d.error({"--rules", 1, 1}, "expected the folder of laws: none installed beside qm-atms; give --rules DIR");
-    if (d.has_errors()) {
-        d.print(err);
-        return 2;
-    }
+    d.print(err);  // errors, or notes (a --given replacing a scene's Motion)
+    if (d.has_errors()) return 2;
+    d = Diagnostics{};
     auto analysis = alex::analyse(*scene, ao, d);
     if (!analysis) {
         d.print(err);

@@ -2,7 +2,8 @@
 // situations still has its laws checked and answers with no situations; "why" cites each scene
 // premise at the line where it is written (a constraint entry, a description), not at the object;
 // why lists the nogoods of the argument (the queried motion's first) and the exact minimal
-// responsible sets (checked by what-ifs); contacts the laws cannot use are reported.
+// responsible sets (checked by what-ifs); contacts the laws cannot use are reported; a given motion
+// replaces the situation's motion of the same object.
 #include "alex/analysis.hpp"
 #include "alex/scene_parser.hpp"
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <span>
 #include <sstream>
 
 using namespace qm;
@@ -310,4 +312,21 @@ TEST_CASE("alex/api: a contact the laws cannot use is reported, and why says so"
     auto b = alex::analyse(c, default_options(), d);
     REQUIRE(b);
     for (std::size_t i = 1; i <= b->situations().size(); ++i) CHECK(b->inert_contacts(i).empty());
+}
+
+TEST_CASE("alex/api: a given motion replaces the situation's motion of the same object") {
+    const alex::Scene s = scene_file("recoil_escapement.def");
+    Diagnostics d;
+    auto a = alex::analyse(s, default_options(), d);
+    REQUIRE(a);
+    auto m = alex::parse_given(s, "pallet (0 0) (-)", d, "given");
+    REQUIRE(m);
+    auto r = a->with_given(2, std::span<const alex::Motion>(&*m, 1), d);
+    REQUIRE(r);
+    // Before: both (+) and (-) were given, and no combination was consistent.
+    CHECK(r->combination_count() > 0);
+    CHECK(predicted(*r, *s.find_object("pallet"), false, {alex::Sign::minus}));
+    bool said = false;
+    for (const auto& n : r->notes) said |= n.find("replaces Motion (pallet (0 0) (+))") != std::string::npos;
+    CHECK(said);
 }

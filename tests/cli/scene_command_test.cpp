@@ -325,7 +325,8 @@ TEST_CASE("cli/scene_command: interactive errors name the command, and whatif ch
     CHECK(r.out.find("9 consistent combinations") != std::string::npos);  // the last whatif still answers
 }
 
-// Regressions found by audit 5: --why's reasons and responsible sets; corner contacts.
+// Regressions found by audit 5: --why's reasons and responsible sets; corner contacts; one given
+// motion per object.
 TEST_CASE("cli/scene_command: --why lists the argument's reasons, the same in text and JSON") {
     const std::string args = scene("recoil_escapement.def") + " --situation 2 --why 'Rotational-Motion (gear (+))'";
     Result text = qm_atms(args);
@@ -389,4 +390,19 @@ TEST_CASE("cli/scene_command: a contact the laws cannot use is warned about, loc
           std::string::npos);
     // The thesis' corner scene has no such contact.
     CHECK(qm_atms(scene("corner_contacts.def")).err.empty());
+}
+
+TEST_CASE("cli/scene_command: one given motion per object; --given replaces a scene's Motion") {
+    Result twice = qm_atms(scene("gears.def") + " --given 'driver (0 0) (-)' --given 'driver (0 0) (+)'");
+    CHECK(twice.status == 2);
+    CHECK(twice.err.find("--given:1:1: error: expected one --given per object, but 'driver' is given twice") == 0);
+    Result over = qm_atms(scene("recoil_escapement.def") + " --situation 2 --given 'pallet (0 0) (-)'");
+    CHECK(over.status == 0);
+    CHECK(over.err.find("recoil_escapement.def:16:64: note: --given 'pallet (0 0) (-)' replaces this Motion "
+                        "(pallet (0 0) (+)) in situation 2") != std::string::npos);
+    CHECK(over.out.find("Rotational-Motion (pallet (-))") != std::string::npos);
+    CHECK(over.out.find("Motions: 0") == std::string::npos);
+    // Interactive: the same replacement, said in a note.
+    Result i = qm_atms(scene("recoil_escapement.def") + " -i", "situation 2\ngiven pallet (0 0) (-)\n");
+    CHECK(i.out.find("Note: the given motion of pallet replaces Motion (pallet (0 0) (+))") != std::string::npos);
 }
