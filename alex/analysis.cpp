@@ -284,10 +284,14 @@ std::unique_ptr<Analysis::State> Analysis::State::restricted(std::size_t s, std:
         });
     });
     std::erase_if(only.forces, [&](const Force& f) {
-        return taken([&](const QueryFact& q) { return q.kind == QueryFact::Kind::force && f.object == *q.object; });
+        return taken([&](const QueryFact& q) {
+            return q.kind == QueryFact::Kind::force && f.object == *q.object && (!q.cause || f.cause == *q.cause);
+        });
     });
     std::erase_if(changed.forces, [&](const Force& f) {
-        return taken([&](const QueryFact& q) { return q.kind == QueryFact::Kind::force && f.object == *q.object; });
+        return taken([&](const QueryFact& q) {
+            return q.kind == QueryFact::Kind::force && f.object == *q.object && (!q.cause || f.cause == *q.cause);
+        });
     });
     changed.situations = {only};
     AnalysisOptions o = options;

@@ -111,9 +111,23 @@ std::optional<QueryFact> check_query(const ast::QueryFact& fact, const Scene& sc
         out.second = b;
     } else {
         out.object = c.object(fact.first, "the fact");
-        if (fact.second) c.cx_.error(*fact.second, pred + " takes one object but found a second name");
+        if (fact.second && out.kind != K::force) c.cx_.error(*fact.second, pred + " takes one object but found a second name");
         if (out.kind == K::force) {
-            if (fact.direction) c.cx_.error(*fact.direction, "Force names only an object");
+            if (fact.direction) c.cx_.error(*fact.direction, "Force names an object and, optionally, a cause");
+            if (fact.second && out.object) {
+                // `Force obj CAUSE`: the force(s) of that named cause on obj.
+                const std::string cause = detail::lower(fact.second->text);
+                auto id = scene.find_cause(cause);
+                auto mine = [&](const Force& f) { return f.object == *out.object && id && f.cause == *id; };
+                const bool on_object = std::any_of(scene.forces.begin(), scene.forces.end(), mine) ||
+                                       std::any_of(scene.situations.begin(), scene.situations.end(), [&](const Situation& s) {
+                                           return std::any_of(s.forces.begin(), s.forces.end(), mine);
+                                       });
+                if (!id || !scene.causes[*id].is_explicit || !on_object)
+                    c.cx_.error(*fact.second, "no force on '" + scene.objects[*out.object].name + "' has the cause '" +
+                                                  fact.second->text + "': expected a cause named at the end of a force entry");
+                else out.cause = id;
+            }
         } else if (!fact.direction) {
             c.cx_.error(fact.first, pred + " needs a direction after the object, like (" + fact.first.text + " (0 +))");
         } else {

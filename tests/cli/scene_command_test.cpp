@@ -319,14 +319,14 @@ TEST_CASE("cli/scene_command: interactive errors name the command, and whatif ch
     CHECK(r.err.find("--why") == std::string::npos);
     CHECK(r.err.find("whatif:1:1: error: expected a contact or force of situation 1 to take away, but it has no "
                      "force on 'driver'") != std::string::npos);
-    CHECK(r.err.find("whatif:1:1: error: expected 'Contact A B' or 'Force OBJ' to take away, but found "
+    CHECK(r.err.find("whatif:1:1: error: expected 'Contact A B' or 'Force OBJ [CAUSE]' to take away, but found "
                      "'Rotational-Motion (driver (+))'") != std::string::npos);
     CHECK(r.err.find("boost") == std::string::npos);
     CHECK(r.out.find("9 consistent combinations") != std::string::npos);  // the last whatif still answers
 }
 
-// Regressions found by audit 5: --why's reasons and responsible sets; corner contacts; one given
-// motion per object.
+// Regressions found by audit 5 (--why's reasons and responsible sets, corner contacts, duplicate
+// motions, --without's note, whole JSON entries as queries).
 TEST_CASE("cli/scene_command: --why lists the argument's reasons, the same in text and JSON") {
     const std::string args = scene("recoil_escapement.def") + " --situation 2 --why 'Rotational-Motion (gear (+))'";
     Result text = qm_atms(args);
@@ -405,4 +405,42 @@ TEST_CASE("cli/scene_command: one given motion per object; --given replaces a sc
     // Interactive: the same replacement, said in a note.
     Result i = qm_atms(scene("recoil_escapement.def") + " -i", "situation 2\ngiven pallet (0 0) (-)\n");
     CHECK(i.out.find("Note: the given motion of pallet replaces Motion (pallet (0 0) (+))") != std::string::npos);
+}
+
+TEST_CASE("cli/scene_command: --without says what it took away; 'Force OBJ CAUSE' takes one cause's force") {
+    Result r = qm_atms(scene("wedge_ramp.def") + " --without 'Force block'");
+    CHECK(r.out.find("  Note: what-if: analysed without every force on 'block' (--without)\n") != std::string::npos);
+    const std::string wind = std::string(QM_BINARY_DIR) + "/scene_cli_wind.def";
+    std::ofstream(wind) << "(Defscenario 2 wind\n"
+                           "  Individuals (boulder table)\n"
+                           "  Surfaces ((boulder (bo-b (0 -) (0 +))) (table (tb (0 +) (0 0))))\n"
+                           "  Translational-Constraints ((table (?x ?y)))\n"
+                           "  Rotational-Constraints ((table (?r)))\n"
+                           "  Forces ((boulder (0 -) (0 0) gravity)))\n"
+                           "(Defstates ((Contact bo-b tb) (Force boulder (+ 0) (0 0) wind)))\n";
+    Result calm = qm_atms(wind + " --json --without 'Force boulder wind'");
+    REQUIRE(calm.status == 0);
+    auto doc = Json::parse(calm.out);
+    REQUIRE(doc.has_value());
+    // Gravity stays: the boulder rests on the table.
+    CHECK((*doc)["situations"].array()[0]["stable"].boolean());
+    CHECK(calm.err.find("without the force of cause 'wind' on 'boulder'") != std::string::npos);
+    Result none = qm_atms(wind + " --without 'Force boulder breeze'");
+    CHECK(none.status == 2);
+    CHECK(none.err.find("--without:1:15: error: no force on 'boulder' has the cause 'breeze'") == 0);
+}
+
+TEST_CASE("cli/scene_command: a whole motion entry of the JSON output as a query is refused helpfully") {
+    Result r = qm_atms(scene("block.def") + R"q( --why '{"block": {"translation": "(0 -)", "rotation": "(0)"}}')q");
+    CHECK(r.status == 2);
+    CHECK(r.err.find("--why:1:34: error: expected '}' but found ',': a query asks about one motion at a time, e.g. "
+                     "{\"block\": {\"translation\": \"(0 -)\"}}; ask about the rotation in a query of its own") == 0);
+}
+
+TEST_CASE("cli/scene_command: --why about a consistent motion the --limit cut off is an error, not 'ruled out'") {
+    // Gears: 6 consistent pairs; with --limit 1 only (driver +, follower +) is listed.
+    Result r = qm_atms(scene("gears.def") + " --limit 1 --why 'Rotational-Motion (follower (-))'");
+    CHECK(r.status == 2);
+    CHECK(r.err.find("--why:1:1: error: cannot tell whether Rotational-Motion (follower (-)) is predicted") == 0);
+    CHECK(qm_atms(scene("gears.def") + " --why 'Rotational-Motion (follower (-))'").out.find("holds") != std::string::npos);
 }
