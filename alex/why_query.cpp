@@ -267,10 +267,9 @@ public:
         return node(start, assigned);
     }
     [[nodiscard]] bool gave_up() const noexcept { return gave_up_; }
-
-private:
     static constexpr std::size_t node_budget = 200000;
 
+private:
     Proof leaf(std::size_t i) {
         used_.insert(i);
         return {{nogoods_[i]}, atms_.env(nogoods_[i])};
@@ -395,6 +394,28 @@ std::string description_alone_note(const Analysis::State& st, const std::vector<
                        "(not listed as reasons):";
     for (std::size_t i = 0; i < parts.size(); ++i) text += (i ? "; " : " ") + parts[i];
     return text;
+}
+
+// The derivation of the nearness rank (Definition 38) of object o's motion d in env, if the laws
+// rank it (the object has a net force).
+std::optional<Exclusion> rank_reason(Analysis::State& st, ObjectId o, bool translational, const Direction& d,
+                                     atms::EnvId env) {
+    const engine::Engine& e = *st.engine;
+    const auto& atms = e.atms();
+    const ValueId object = st.facts->symbol(o), direction = st.facts->direction(d);
+    for (engine::FactId f : e.facts_of(st.facts->predicate(translational ? v::trans_nearness : v::rot_nearness))) {
+        const engine::Fact& fact = e.facts().fact(f);
+        if (fact.args.size() != 3 || fact.args[0] != object || fact.args[1] != direction) continue;
+        const atms::NodeId n = e.node(f);
+        if (!atms.holds_in(n, env)) continue;
+        for (atms::EnvId label_env : atms.label(n)) {
+            if (!atms.env(label_env).subset_of(atms.env(env))) continue;
+            TreeBuilder b(st, atms.explain(n, label_env));
+            Derivation tree = b.build(n);
+            return Exclusion{item_texts(st, atms.env(label_env), &b), std::move(tree)};
+        }
+    }
+    return std::nullopt;
 }
 
 // Most relevant first: nogoods with the queried motion, then those naming scene items, smaller
@@ -542,10 +563,13 @@ std::optional<WhyAnswer> Analysis::why(const QueryFact& query, std::size_t situa
     if (!consistent) {
         Refuter refuter(atms, sets, relevant, a);
         std::optional<Refuter::Proof> proof = refuter.refute(with_a);
-        if (!proof) {
-            diagnostics.error({where, 1, 1}, "the case analysis of " + w.query + " stopped after too many steps: "
-                                             "expected a smaller kinematic chain (try --without to take parts away)");
-            return std::nullopt;
+        if (!proof) {  // the search gave up: the exclusion stands (the ATMS found no consistent choice)
+            w.notes.push_back("inconsistent with every choice of the other motions of its kinematic chain, but the "
+                              "case analysis is too large to show (it stopped after " +
+                              std::to_string(Refuter::node_budget) + " steps); --without can take parts away");
+            w.responsible_minimal = false;
+            coarse_note(st, w);
+            return w;
         }
         std::vector<atms::EnvId> nogoods = proof->nogoods;
         order_by_relevance(st, nogoods, a);
@@ -591,24 +615,51 @@ std::optional<WhyAnswer> Analysis::why(const QueryFact& query, std::size_t situa
     }
 
     // 3. Consistent, but not what the forces produce (section 6.2, Definition 38).
-    const std::string_view rank_pred = translational ? v::trans_nearness : v::rot_nearness;
     std::set<std::string> together;
-    for (engine::FactId f : e.facts_of(st.facts->predicate(rank_pred))) {
-        const engine::Fact& fact = e.facts().fact(f);
-        if (fact.args.size() != 3 || fact.args[0] != args[0] || fact.args[1] != args[1]) continue;
-        const atms::NodeId n = e.node(f);
-        if (!atms.holds_in(n, env)) continue;
-        for (atms::EnvId label_env : atms.label(n)) {
-            if (!atms.env(label_env).subset_of(base)) continue;
-            TreeBuilder b(st, atms.explain(n, label_env));
-            Derivation d = b.build(n);
-            w.exclusions.push_back({item_texts(st, atms.env(label_env), &b), std::move(d)});
-            together.insert(w.exclusions.back().responsible.begin(), w.exclusions.back().responsible.end());
-            break;
-        }
+    auto add = [&](std::optional<Exclusion> x) {
+        if (!x) return;
+        together.insert(x->responsible.begin(), x->responsible.end());
+        w.exclusions.push_back(std::move(*x));
+    };
+    std::string predicted_example;
+    for (const ChainMotions& chain : result.chains)
+        if (std::find(chain.objects.begin(), chain.objects.end(), o) != chain.objects.end() && !chain.combinations.empty())
+            for (std::size_t j = 0; j < chain.objects.size(); ++j)
+                predicted_example += " " + st.scene.objects[chain.objects[j]].name + " " +
+                                     thesis_text(chain.combinations.front()[j].translation) + " " +
+                                     thesis_text(chain.combinations.front()[j].rotation);
+    if (auto mine = rank_reason(st, o, translational, query.direction, env)) {
+        add(std::move(mine));
+        w.notes.push_back("consistent, but not produced by the forces: other consistent combinations are nearer to "
+                          "every net force (section 6.2, Definition 38), e.g. the predicted" + predicted_example);
+    } else {
+        // Not ranked itself (no force drives it): every consistent combination with it needs motions
+        // of the driven objects that are farther from their net forces than a predicted one's. The
+        // reasons are the ranks of those motions no predicted combination has (from the first few
+        // such combinations).
+        std::set<std::tuple<std::uint32_t, bool, std::size_t>> seen;
+        std::size_t visited = 0;
+        std::vector<ObjectId> chain_objects;
+        for (const ChainMotions& chain : result.chains)
+            if (std::find(chain.objects.begin(), chain.objects.end(), o) != chain.objects.end()) chain_objects = chain.objects;
+        atms.for_each_interpretation(sets, with_a_id, [&](const atms::Environment& full) {
+            for (ObjectId x : chain_objects)
+                for (bool trans : {true, false}) {
+                    const auto& xs = trans ? st.choices[x].trans : st.choices[x].rot;
+                    const auto& xd = trans ? st.choices[x].trans_dirs : st.choices[x].rot_dirs;
+                    for (std::size_t i = 0; i < xs.size(); ++i)
+                        if (full.contains(xs[i]) && !predicted(st, result, x, trans, xd[i]) &&
+                            seen.insert({x.value, trans, i}).second && w.exclusions.size() < 8)
+                            add(rank_reason(st, x, trans, xd[i], env));
+                }
+            return ++visited < 32 && w.exclusions.size() < 8;
+        });
+        w.notes.push_back("consistent, but not produced by the forces: " + st.scene.objects[o].name +
+                          " has no nearness rank of its own (no force drives it), and every consistent combination "
+                          "with this motion needs motions of the driven objects that are farther from their net forces "
+                          "(section 6.2, Definition 38) than those of a predicted combination, e.g." + predicted_example +
+                          "; the reasons are the ranks of those motions");
     }
-    w.notes.push_back("consistent, but not produced by the forces: other consistent combinations are nearer to every "
-                      "net force (section 6.2, Definition 38), e.g. the predicted motions of this situation");
     if (st.facts->granularity() == Granularity::situation) {
         w.responsible_sets.push_back({together.begin(), together.end()});
     } else if (auto exact = minimal_by_reanalysis(st, situation, env, o, translational, query.direction)) {

@@ -330,3 +330,25 @@ TEST_CASE("alex/api: a given motion replaces the situation's motion of the same 
     for (const auto& n : r->notes) said |= n.find("replaces Motion (pallet (0 0) (+))") != std::string::npos;
     CHECK(said);
 }
+
+TEST_CASE("alex/api: why an undriven object's motion is not selected names the driven motions it would need") {
+    // Linked gears, situation 3: the driver's force turns the train; gear-c has no force of its
+    // own, so no rank; staying still needs the driver and gears a, b still too, farther from the force.
+    const alex::Scene s = scene_file("linked_gears.def");
+    Diagnostics d;
+    auto a = alex::analyse(s, default_options(), d);
+    REQUIRE(a);
+    REQUIRE(a->situations().size() >= 3);
+    auto w = a->why(motion_query(s, "gear-c", false, {alex::Sign::zero}), 3, d);
+    REQUIRE(w);
+    REQUIRE(w->status == alex::WhyAnswer::Status::ruled_out);
+    // Before: no reason at all.
+    REQUIRE_FALSE(w->exclusions.empty());
+    for (const auto& x : w->exclusions) {
+        CHECK(x.derivation.fact.find("(rot-nearness ") == 0);
+        CHECK(x.derivation.fact.find(" (0) ") != std::string::npos);  // the motions staying still would need
+    }
+    bool said = false;
+    for (const auto& n : w->notes) said |= n.find("gear-c has no nearness rank of its own") != std::string::npos;
+    CHECK(said);
+}
