@@ -294,6 +294,13 @@ std::optional<SituationResult> Analysis::with_given(std::size_t situation, std::
     SituationResult r = state->results.front();
     r.index = situation;
     r.notes.push_back("given motions are new assumptions: the situation was analysed afresh");
+    std::vector<Motion> before = state_->scene.situations[situation - 1].motions;
+    before.insert(before.end(), state_->options.given.begin(), state_->options.given.end());
+    for (const Motion& m : before)
+        if (std::any_of(given.begin(), given.end(), [&](const Motion& g) { return g.object == m.object; }))
+            r.notes.push_back("the given motion of " + state_->scene.objects[m.object].name + " replaces Motion (" +
+                              state_->scene.objects[m.object].name + " " + thesis_text(m.translation) + " " +
+                              thesis_text(m.rotation) + ")");
     return r;
 }
 
@@ -302,6 +309,11 @@ std::unique_ptr<Analysis::State> Analysis::State::restricted(std::size_t s, std:
                                                              std::optional<Granularity> granularity) const {
     Scene changed = scene;
     Situation only = changed.situations[s - 1];
+    // A given motion replaces any other of the same object (one motion at a time, Law 1).
+    auto replaced = [&](const Motion& m) {
+        return std::any_of(given.begin(), given.end(), [&](const Motion& g) { return g.object == m.object; });
+    };
+    std::erase_if(only.motions, replaced);
     only.motions.insert(only.motions.end(), given.begin(), given.end());
     auto taken = [&](auto pred) { return std::any_of(without.begin(), without.end(), pred); };
     std::erase_if(only.contacts, [&](const Contact& c) {
@@ -311,13 +323,18 @@ std::unique_ptr<Analysis::State> Analysis::State::restricted(std::size_t s, std:
         });
     });
     std::erase_if(only.forces, [&](const Force& f) {
-        return taken([&](const QueryFact& q) { return q.kind == QueryFact::Kind::force && f.object == *q.object; });
+        return taken([&](const QueryFact& q) {
+            return q.kind == QueryFact::Kind::force && f.object == *q.object && (!q.cause || f.cause == *q.cause);
+        });
     });
     std::erase_if(changed.forces, [&](const Force& f) {
-        return taken([&](const QueryFact& q) { return q.kind == QueryFact::Kind::force && f.object == *q.object; });
+        return taken([&](const QueryFact& q) {
+            return q.kind == QueryFact::Kind::force && f.object == *q.object && (!q.cause || f.cause == *q.cause);
+        });
     });
     changed.situations = {only};
     AnalysisOptions o = options;
+    std::erase_if(o.given, replaced);
     o.without.clear();
     o.granularity = granularity;
     return build_state(changed, o, program, diagnostics);

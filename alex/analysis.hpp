@@ -101,7 +101,11 @@ struct WhyAnswer {
     std::size_t situation = 0;
     std::vector<Derivation> support;       // holds: a consistent combination / the absence of constraints, explained
     std::vector<Exclusion> exclusions;     // ruled_out: each minimal nogood (or case-analysis branch)
-    std::vector<std::vector<std::string>> responsible_sets;  // minimal sets of contacts/forces responsible
+    // Sets of contacts, forces and given motions, each of which suffices to rule the fact out
+    // (docs/ANALYSIS.md, "Why"); every minimal such set when responsible_minimal, else one
+    // sufficient set that may not be minimal (a large scene).
+    std::vector<std::vector<std::string>> responsible_sets;
+    bool responsible_minimal = true;
     std::vector<std::string> notes;        // e.g. "excluded by case analysis over gear's motions"
 };
 
@@ -120,6 +124,11 @@ public:
     // The situation with some contacts/forces taken away (docs/ANALYSIS.md: reuse vs recompute).
     [[nodiscard]] std::optional<SituationResult> what_if(std::size_t situation, std::span<const QueryFact> without,
                                                          Diagnostics& diagnostics);
+    // The contacts of a situation from which the laws derive no `touch` (rules/contact.rules), so
+    // that they constrain and push nothing: e.g. a corner against a surface it cannot touch
+    // (Definition 25). One located warning each, in the situation's order.
+    // Pre (QM_REQUIRE): 1 <= situation <= situations().size().
+    [[nodiscard]] std::vector<Diagnostic> inert_contacts(std::size_t situation);
     // The situation with extra current motions given (Figure 7.18).
     [[nodiscard]] std::optional<SituationResult> with_given(std::size_t situation, std::span<const Motion> given,
                                                             Diagnostics& diagnostics);

@@ -128,7 +128,8 @@ void print_why(std::ostream& os, const WhyAnswer& w) {
         print_tree(os, x.derivation, "    ");
     }
     if (!w.responsible_sets.empty()) {
-        os << "  Responsible (contacts, forces and given motions; each set suffices):\n";
+        os << (w.responsible_minimal ? "  Responsible (contacts, forces and given motions; the minimal sets, each suffices):\n"
+                                     : "  Responsible (contacts, forces and given motions; a set that suffices, maybe not minimal):\n");
         for (const auto& set : w.responsible_sets) {
             if (set.empty()) {
                 os << "    {} (the scene's description alone)\n";
@@ -192,7 +193,7 @@ void write_why_json(std::ostream& os, const WhyAnswer& w) {
         if (i) os << ", ";
         write_strings(os, w.responsible_sets[i]);
     }
-    os << "]}\n";
+    os << "], \"responsible_minimal\": " << (w.responsible_minimal ? "true" : "false") << "}\n";
 }
 
 }  // namespace qm::alex

@@ -166,13 +166,15 @@ struct Scene {
 };
 
 // A single fact named on the command line: `Rotational-Motion (follower (-))`,
-// `Translational-Freedom (block (0 +))`, `Contact a b`, `Force obj`.
+// `Translational-Freedom (block (0 +))`, `Contact a b`, `Force obj` (every force on obj), `Force obj
+// CAUSE` (the force of that named cause on obj).
 struct QueryFact {
     enum class Kind { translational_motion, rotational_motion, translational_freedom, rotational_freedom, contact, force };
     Kind kind = Kind::contact;
     std::optional<ObjectId> object;   // all kinds but contact
     Direction direction;              // the four motion/freedom kinds
     std::optional<SurfaceId> first, second;  // contact
+    std::optional<CauseId> cause;     // force: only the force(s) of this cause; empty: every force on object
     friend bool operator==(const QueryFact&, const QueryFact&) = default;
 };
 

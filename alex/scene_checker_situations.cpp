@@ -6,6 +6,8 @@
 
 #include "alex/detail/scene_checker.hpp"
 
+#include <algorithm>
+
 namespace qm::alex {
 namespace detail {
 
@@ -44,8 +46,23 @@ struct SceneChecker::DescriptorVisitor {
     void operator()(const ast::ForceEntry& e) const {
         if (auto f = c.check_force(e)) out.forces.push_back(*f);
     }
+    // One current motion per object: a second Motion of the same object in one situation would
+    // leave no consistent combination (Law 1), or repeat the first, so it is an error like other
+    // duplicates.
     void operator()(const ast::MotionEntry& e) const {
-        if (auto m = c.motion(e)) out.motions.push_back(*m);
+        auto m = c.motion(e);
+        if (!m) return;
+        auto first = std::find_if(out.motions.begin(), out.motions.end(), [&](const Motion& x) { return x.object == m->object; });
+        if (first == out.motions.end()) {
+            out.motions.push_back(*m);
+            return;
+        }
+        const std::string name = c.scene_.objects[m->object].name;
+        const bool same = first->translation == m->translation && first->rotation == m->rotation;
+        c.cx_.error(e, same ? "the motion of '" + name + "' is given twice in one situation"
+                            : "two different motions of '" + name + "' in one situation: an object has one motion at "
+                              "a time (Law 1), so no combination of motions would be consistent",
+                    {"the first Motion of '" + name + "' in this situation is at " + line_column(first->where)});
     }
 };
 
@@ -94,9 +111,23 @@ std::optional<QueryFact> check_query(const ast::QueryFact& fact, const Scene& sc
         out.second = b;
     } else {
         out.object = c.object(fact.first, "the fact");
-        if (fact.second) c.cx_.error(*fact.second, pred + " takes one object but found a second name");
+        if (fact.second && out.kind != K::force) c.cx_.error(*fact.second, pred + " takes one object but found a second name");
         if (out.kind == K::force) {
-            if (fact.direction) c.cx_.error(*fact.direction, "Force names only an object");
+            if (fact.direction) c.cx_.error(*fact.direction, "Force names an object and, optionally, a cause");
+            if (fact.second && out.object) {
+                // `Force obj CAUSE`: the force(s) of that named cause on obj.
+                const std::string cause = detail::lower(fact.second->text);
+                auto id = scene.find_cause(cause);
+                auto mine = [&](const Force& f) { return f.object == *out.object && id && f.cause == *id; };
+                const bool on_object = std::any_of(scene.forces.begin(), scene.forces.end(), mine) ||
+                                       std::any_of(scene.situations.begin(), scene.situations.end(), [&](const Situation& s) {
+                                           return std::any_of(s.forces.begin(), s.forces.end(), mine);
+                                       });
+                if (!id || !scene.causes[*id].is_explicit || !on_object)
+                    c.cx_.error(*fact.second, "no force on '" + scene.objects[*out.object].name + "' has the cause '" +
+                                                  fact.second->text + "': expected a cause named at the end of a force entry");
+                else out.cause = id;
+            }
         } else if (!fact.direction) {
             c.cx_.error(fact.first, pred + " needs a direction after the object, like (" + fact.first.text + " (0 +))");
         } else {

@@ -103,7 +103,7 @@ std::size_t SceneFacts::add_item(SceneItem::Kind kind, std::string text, SourceL
         for (std::size_t s : situations)
             engine_.add_fact(predicate(pred), args, std::span<const engine::FactId>(&situation_facts_[s], 1), where);
         if (it != item_by_fact_.end()) return it->second;
-        items_.push_back(SceneItem{kind, std::move(text), std::move(where), std::nullopt, std::nullopt, {}, {}});
+        items_.push_back(SceneItem{kind, std::move(text), std::move(where), std::nullopt, std::nullopt, {}, {}, std::nullopt});
         item_by_fact_[key] = items_.size() - 1;
         return items_.size() - 1;
     }
@@ -111,7 +111,7 @@ std::size_t SceneFacts::add_item(SceneItem::Kind kind, std::string text, SourceL
     engine::FactId f = engine_.add_assumption(predicate(pred), args, where);
     auto a = engine_.assumption(f);
     QM_ASSERT(a.has_value(), "an asserted assumption has an assumption id");
-    SceneItem item{kind, std::move(text), std::move(where), *a, std::nullopt, {}, {}};
+    SceneItem item{kind, std::move(text), std::move(where), *a, std::nullopt, {}, {}, std::nullopt};
     items_.push_back(std::move(item));
     item_by_fact_[key] = items_.size() - 1;
     item_by_assumption_[a->value] = items_.size() - 1;
@@ -143,6 +143,7 @@ std::size_t SceneFacts::add_force(const Force& f, std::span<const std::size_t> s
                               values.symbol(cause.name)},
                              situations);
     items_[i].object = f.object;
+    items_[i].cause = f.cause;
     return i;
 }
 
@@ -162,7 +163,7 @@ bool SceneFacts::matches(const SceneItem& item, const QueryFact& q) const {
             return item.kind == SceneItem::Kind::contact &&
                    ((item.first == *q.first && item.second == *q.second) || (item.first == *q.second && item.second == *q.first));
         case QueryFact::Kind::force:
-            return item.kind == SceneItem::Kind::force && item.object == q.object;
+            return item.kind == SceneItem::Kind::force && item.object == q.object && (!q.cause || item.cause == q.cause);
         default:
             return false;
     }

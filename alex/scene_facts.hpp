@@ -30,6 +30,7 @@ struct SceneItem {
     std::optional<atms::AssumptionId> assumption;  // Granularity::item only
     std::optional<ObjectId> object;    // force, motion
     SurfaceId first{}, second{};       // contact
+    std::optional<CauseId> cause;      // force
 };
 
 class SceneFacts {

@@ -312,6 +312,10 @@ const x3::rule<struct force_list_class, std::vector<ast::ForceEntry>> force_list
 const x3::rule<struct brace_items_class, std::vector<ast::Descriptor>> brace_items =
     "a situation descriptor (Contact, Force or Motion) or '}'";
 const x3::rule<struct brace_close_class> brace_close = "',' or '}'";
+// A comma-separated list of keyword-notation descriptors: after a ',' a descriptor must follow, so
+// an unknown one (`Contact (a b), Frobnicate (x)`) is reported where it is, not at the ','.
+const x3::rule<struct descriptor_list_kw_class, std::vector<ast::Descriptor>> descriptor_list_kw =
+    "a situation descriptor (Contact, Force or Motion)";
 const x3::rule<struct brace_situations_class, std::vector<ast::Situation>> brace_situations =
     "a situation in braces like {} or {Contact(a b), Contact(c d)}";
 const x3::rule<struct situations_braces_class, std::vector<ast::Situation>> situations_braces = "Situations";
@@ -401,8 +405,11 @@ const auto descriptor_kw_def = contact_kw | force_kw | motion_kw;
 // Figure 7.2: `{}` is a situation without descriptors, `{Contact(tb block-b-l), ...}` one with.
 const auto situation_braces_def = situation_braces_inner;
 const auto situation_braces_inner_def = (x3::lit('{') > brace_items)[store(&ast::Situation::descriptors)];
+const auto descriptor_list_kw_def = descriptor_kw > *(x3::lit(',') > descriptor_kw);
+// A word directly followed by '(' after `Situation :` can only start a descriptor.
+const auto descriptor_start = x3::lexeme[letter >> *name_char] >> '(';
 const auto brace_items_def =
-    (x3::lit('}') >> x3::attr(std::vector<ast::Descriptor>{})) | (descriptor_kw % ',' > brace_close);
+    (x3::lit('}') >> x3::attr(std::vector<ast::Descriptor>{})) | (descriptor_list_kw > brace_close);
 const auto brace_close_def = x3::lit('}');
 const auto brace_situations_def = +situation_braces;
 const auto situations_braces_def = (kw("situations") >> -colon) > brace_situations;
@@ -418,7 +425,7 @@ const auto contact_list_inner_def = (kw("contact") > contact_pairs > contact_lis
 const auto contact_list_end_def = x3::eoi;
 const auto situation_kw_def = situation_kw_inner;
 const auto situation_kw_inner_def =
-    (kw("situation") > colon > -(descriptor_kw % ','))[([](auto& ctx) {
+    (kw("situation") > colon > -(&descriptor_start > descriptor_list_kw))[([](auto& ctx) {
         auto& items = x3::_attr(ctx);
         if (items) x3::_val(ctx).descriptors = std::move(*items);
     })];
@@ -531,6 +538,7 @@ BOOST_SPIRIT_DEFINE(individuals_sx, individuals_kw, descriptions_sx, description
                     name_list, name_items, description_list_kw, surface_groups_kw, surface_list_kw, corner_groups_kw,
                     corner_list_kw, constraint_list_kw, direction_list, force_list_kw, linkage_list_kw, defscenario_kw, sx_section_end, kw_section_end, end_of_input, colon, defstates,
                     scenario_sx, header_scenario, scenario_kw, scene_file, given, query, brace_items, brace_close,
+                    descriptor_list_kw,
                     brace_situations, situations_braces, contact_pairs, contact_list_end, sx_states, figure_tail,
                     figure_body, keyword_body, scene_body)
 

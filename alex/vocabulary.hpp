@@ -31,4 +31,5 @@ inline constexpr std::string_view trans_constraint = "trans-constraint";  // Def
 inline constexpr std::string_view rot_constraint = "rot-constraint";
 inline constexpr std::string_view trans_nearness = "trans-nearness";      // (trans-nearness O T K), Def 38
 inline constexpr std::string_view rot_nearness = "rot-nearness";
+inline constexpr std::string_view touch = "touch";                        // (touch P Q NORMALS), Def 19: a contact the laws use
 }  // namespace qm::alex::vocabulary

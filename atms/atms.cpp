@@ -175,6 +175,25 @@ void Atms::run_events() {
         bool& flag;
         ~Reset() { flag = false; }
     } reset{running_events_};
+    // A consumer that a callback removed (and perhaps destroyed) gets no further event.
+    auto still_registered = [&](Consumer* c) { return std::find(consumers_.begin(), consumers_.end(), c) != consumers_.end(); };
+    // Run a node's waiting callbacks one by one; if one throws, the ones after it keep waiting
+    // (requeued) and the exception goes on: one failing callback loses no other.
+    auto run_callbacks = [&](NodeId n) {
+        auto callbacks = std::move(nodes_[n].first_label_callbacks);
+        nodes_[n].first_label_callbacks.clear();
+        for (std::size_t i = 0; i < callbacks.size(); ++i) {
+            try {
+                callbacks[i](n);
+            } catch (...) {
+                auto& waiting = nodes_[n].first_label_callbacks;
+                waiting.insert(waiting.begin(), std::make_move_iterator(callbacks.begin() + static_cast<std::ptrdiff_t>(i) + 1),
+                               std::make_move_iterator(callbacks.end()));
+                if (!waiting.empty()) events_.push_front(Event{Event::Kind::callbacks, n.value});
+                throw;
+            }
+        }
+    };
     while (!events_.empty()) {
         const Event ev = events_.front();
         events_.pop_front();
@@ -182,20 +201,18 @@ void Atms::run_events() {
         if (ev.kind == Event::Kind::label_nonempty) {
             const NodeId n{ev.id};
             if (labels_[n].empty()) continue;  // emptied by a nogood before delivery
-            auto callbacks = std::move(nodes_[n].first_label_callbacks);
-            nodes_[n].first_label_callbacks.clear();
-            for (Consumer* c : consumers) c->label_became_nonempty(n);
-            for (auto& f : callbacks) f(n);
+            for (Consumer* c : consumers)
+                if (still_registered(c)) c->label_became_nonempty(n);
+            run_callbacks(n);
         } else if (ev.kind == Event::Kind::callbacks) {
             // Registered while the label was non-empty, but an earlier event's callback may have
             // emptied it since: then the node holds in no consistent environment, and the
             // callbacks keep waiting for the label_nonempty event of its next fill.
             if (labels_[NodeId{ev.id}].empty()) continue;
-            auto callbacks = std::move(nodes_[NodeId{ev.id}].first_label_callbacks);
-            nodes_[NodeId{ev.id}].first_label_callbacks.clear();
-            for (auto& f : callbacks) f(NodeId{ev.id});
+            run_callbacks(NodeId{ev.id});
         } else {
-            for (Consumer* c : consumers) c->environment_became_nogood(EnvId{ev.id});
+            for (Consumer* c : consumers)
+                if (still_registered(c)) c->environment_became_nogood(EnvId{ev.id});
         }
     }
 }

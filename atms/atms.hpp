@@ -5,7 +5,10 @@
 //             nogoods, interpretations over choice sets, explanations.
 // Ownership:  an Atms owns its nodes, assumptions, environments and justifications; all are referred
 //             to by dense ids valid for the lifetime of the Atms. Nothing is ever removed. There is no
-//             global state: any number of Atms objects can coexist. Not thread safe.
+//             global state: any number of Atms objects can coexist. Not thread safe. References
+//             returned by env(), label() and justification() stay valid only until the next call
+//             that adds nodes, justifications, nogoods or environments (the stores may grow): copy
+//             what must outlive such a call.
 // Invariants: after every public call returns, each node's label is
 //               sound      every label env E derives the node from E and the premises,
 //               consistent no label env is nogood,
@@ -14,7 +17,9 @@
 //             the contradiction node's label is always empty (its would-be envs become nogoods).
 // Reentrancy: consumers and on_first_label callbacks never run during propagation; they are queued
 //             and run, FIFO, just before the public call that caused them returns. They may call any
-//             member (including justify); events they cause are appended to the same queue.
+//             member (including justify); events they cause are appended to the same queue. A
+//             consumer removed by a callback gets no further event; if a callback throws, the
+//             exception reaches the caller and the node's remaining callbacks run at the next call.
 // Errors:     every violated `Pre:` throws qm::InternalError (QM_REQUIRE), never UB.
 // Knows nothing of rules, patterns or mechanics.
 #pragma once
@@ -99,7 +104,9 @@ public:
     // All consistent environments base + exactly one assumption from each choice set, found by
     // backtracking with nogood pruning (never the full product), in lexicographic order of the
     // choices (first set varies slowest). No choice sets: {base} if base is consistent. An empty
-    // set: none. Pre: ids valid; no assumption occurs in two sets.
+    // set: none. A base that holds a member of a set keeps that member as the set's pick, and a
+    // base holding two members of one set has no interpretation (exactly one per set).
+    // Pre: ids valid; no assumption occurs in two sets.
     std::vector<EnvId> interpretations(std::span<const std::vector<AssumptionId>> choice_sets);
     std::vector<EnvId> interpretations(std::span<const std::vector<AssumptionId>> choice_sets, EnvId base);
     // Streaming form: calls visit(env) for each interpretation without interning it; visit returns

@@ -10,6 +10,7 @@
 //             superset when a nogood is added (Atms does).
 // Knows nothing of justifications or rules.
 #pragma once
+#include "qm/assert.hpp"
 #include "atms/environment.hpp"
 #include "atms/ids.hpp"
 #include "atms/nogood_database.hpp"
@@ -34,15 +35,16 @@ public:
 
     [[nodiscard]] std::size_t size() const noexcept { return envs_.size(); }
     [[nodiscard]] bool contains(EnvId e) const noexcept { return envs_.contains(e); }
-    [[nodiscard]] const Environment& operator[](EnvId e) const { return envs_[e].env; }
-    [[nodiscard]] std::uint32_t count(EnvId e) const { return envs_[e].count; }  // |e|
-    [[nodiscard]] bool is_nogood(EnvId e) const { return envs_[e].nogood; }
-    void mark_nogood(EnvId e) { envs_[e].nogood = true; }
+    // Pre (checked, also in release builds: an unknown id is an InternalError): e valid.
+    [[nodiscard]] const Environment& operator[](EnvId e) const { return entry(e).env; }
+    [[nodiscard]] std::uint32_t count(EnvId e) const { return entry(e).count; }  // |e|
+    [[nodiscard]] bool is_nogood(EnvId e) const { return entry(e).nogood; }
+    void mark_nogood(EnvId e) { envs_[checked(e)].nogood = true; }
     // x is a subset of y (fast size check first).
     [[nodiscard]] bool subset(EnvId x, EnvId y) const;
     // Nodes whose label has held e (the BPS env-nodes field); may list nodes that dropped e since.
-    [[nodiscard]] const std::vector<NodeId>& nodes(EnvId e) const { return envs_[e].nodes; }
-    void add_node(EnvId e, NodeId n) { envs_[e].nodes.push_back(n); }
+    [[nodiscard]] const std::vector<NodeId>& nodes(EnvId e) const { return entry(e).nodes; }
+    void add_node(EnvId e, NodeId n) { envs_[checked(e)].nodes.push_back(n); }
     // Every interned env containing a, in creation order.
     [[nodiscard]] const std::vector<EnvId>& containing(AssumptionId a) const;
 
@@ -54,6 +56,11 @@ private:
         bool nogood = false;
         std::vector<NodeId> nodes;
     };
+    [[nodiscard]] EnvId checked(EnvId e) const {
+        QM_REQUIRE(envs_.contains(e), "unknown environment id");
+        return e;
+    }
+    [[nodiscard]] const Entry& entry(EnvId e) const { return envs_[checked(e)]; }
     IdVector<EnvId, Entry> envs_;
     std::unordered_map<Environment, EnvId, EnvironmentHash> index_;
     std::unordered_map<std::uint64_t, EnvId> joins_;  // key: (min id << 32) | max id

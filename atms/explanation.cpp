@@ -16,6 +16,12 @@ enum class How : std::uint8_t { underived, premise, assumption, justified };
 std::optional<Explanation> derive_explanation(std::span<const Justification> justs, std::size_t node_count,
                                               const DerivationBase& base, NodeId goal) {
     QM_REQUIRE(goal.value < node_count, "unknown node id");
+    for (const Justification& j : justs) {
+        QM_REQUIRE(j.consequent.value < node_count, "a justification's consequent is an unknown node id");
+        for (NodeId a : j.antecedents) QM_REQUIRE(a.value < node_count, "a justification's antecedent is an unknown node id");
+    }
+    for (NodeId p : base.premises) QM_REQUIRE(p.value < node_count, "a premise is an unknown node id");
+    for (const auto& entry : base.assumptions) QM_REQUIRE(entry.first.value < node_count, "an assumption's node is an unknown node id");
     std::vector<How> how(node_count, How::underived);
     std::vector<std::uint32_t> reason(node_count, 0);       // JustId value when How::justified
     std::vector<AssumptionId> assumption_of(node_count);    // when How::assumption

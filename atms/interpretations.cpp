@@ -3,6 +3,8 @@
 // as Environment values, so a search over millions of partial choices allocates nothing per step.
 #include "atms/interpretations.hpp"
 
+#include "qm/assert.hpp"
+
 #include <algorithm>
 
 namespace qm::atms {
@@ -56,11 +58,17 @@ std::size_t enumerate_interpretations(const NogoodDatabase& nogoods, std::size_t
     choices.reserve(choice_sets.size());
     for (const auto& set : choice_sets) {
         auto& kept = choices.emplace_back();
+        // A set the base already picks from keeps only that pick: any other member would make two.
+        std::vector<AssumptionId> in_base;
+        for (AssumptionId a : set)
+            if (base.contains(a) && std::find(in_base.begin(), in_base.end(), a) == in_base.end()) in_base.push_back(a);
+        if (in_base.size() > 1) return 0;  // the base itself picks twice from one set
+        if (in_base.size() == 1) {
+            kept = in_base;
+            continue;
+        }
         for (AssumptionId a : set) {
-            if (base.contains(a)) {
-                kept.push_back(a);
-                continue;
-            }
+            QM_REQUIRE(a.value < assumption_count, "unknown assumption in a choice set");
             std::uint64_t& w = words[a.value / word_bits];
             const std::uint64_t bit = std::uint64_t{1} << (a.value % word_bits);
             w |= bit;

@@ -16,9 +16,10 @@
 
 namespace qm::atms {
 // Calls visit for each interpretation in lexicographic order of choices (first set slowest);
-// visit returns false to stop. Returns the number of interpretations visited. A choice already in
-// base (or repeated within a set) gives base unchanged for that set; results are not deduplicated.
-// Pre (checked by Atms): every assumption < assumption_count; no assumption in two sets.
+// visit returns false to stop. Returns the number of interpretations visited. A set the base
+// already picks from contributes that pick only (no interpretation if the base holds two of its
+// members); an assumption repeated within a set is visited twice (results are not deduplicated).
+// Pre (checked here and by Atms): every assumption < assumption_count; no assumption in two sets.
 std::size_t enumerate_interpretations(const NogoodDatabase& nogoods, std::size_t assumption_count,
                                       std::span<const std::vector<AssumptionId>> choice_sets,
                                       const Environment& base,

@@ -1,4 +1,5 @@
-// atms/nogood_database.cpp: minimal nogoods indexed by lowest assumption and by every assumption.
+// atms/nogood_database.cpp: minimal nogoods indexed by highest assumption (by_first_: the first
+// bucket a query looks in) and by every assumption.
 #include "atms/nogood_database.hpp"
 
 #include "qm/assert.hpp"

@@ -5,6 +5,7 @@
 #include "alex/scene_parser.hpp"
 #include "alex/scene_printer.hpp"
 #include "geometry/contact_detection.hpp"
+#include "geometry/contact_place.hpp"
 #include "geometry/cspace_svg.hpp"
 #include "geometry/external_force.hpp"
 #include "geometry/kinematic_pairs.hpp"
@@ -337,10 +338,17 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
             QM_REQUIRE(built.status == g::PlaceStatus::ok, built.message);
             vocabulary = std::move(built.vocabulary);
         }
-        if (vocabulary.count(g::PlaceKind::face) == 0)
-            warn(diags, *m, pair.where,
-                 "'" + m->parts[pair.a].name + "' and '" + m->parts[pair.b].name +
-                     "' have no free space on the sampled grid: they overlap everywhere (check the pivots) or their play is below a grid cell");
+        if (vocabulary.count(g::PlaceKind::face) == 0) {
+            // No free area: parts drawn in contact with zero play move only in contact (8.1.6's gap
+            // place in the limit); parts drawn overlapping have no place at all.
+            const g::ContactRequest touching{m->settings.contact_tolerance, m->settings.normal_zero_tolerance};
+            if (auto in_contact = g::contact_place(*oracle, request, touching))
+                vocabulary = std::move(*in_contact);
+            else
+                warn(diags, *m, pair.where,
+                     "'" + m->parts[pair.a].name + "' and '" + m->parts[pair.b].name +
+                         "' have no free space on the sampled grid, and are not drawn in contact: they overlap everywhere (check the pivots) or their play is below a grid cell");
+        }
         text << "pair " << m->parts[pair.a].name << ' ' << m->parts[pair.b].name << " (q0 = " << axis_text(*m, pair.a, request.cspace.axes[0])
              << "; q1 = " << axis_text(*m, pair.b, request.cspace.axes[1]) << ")" << (from_cache ? " from cache" : "") << '\n';
         g::write_place_text(text, vocabulary);

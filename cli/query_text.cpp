@@ -24,7 +24,7 @@ auto named(const char* name, Parser p) {
     return x3::rule<Tag>{name} = p;
 }
 
-std::optional<Entry> parse_json(std::string_view text, std::size_t& error_at, std::string& expected) {
+std::optional<Entry> parse_json(std::string_view text, std::size_t& error_at, std::string& expected, std::string& hint) {
     Entry e;
     auto set = [](std::string& out) { return [&out](auto& ctx) { out = x3::_attr(ctx); }; };
     auto flag = [&e](auto&) { e.freedom = true; };
@@ -48,6 +48,11 @@ std::optional<Entry> parse_json(std::string_view text, std::size_t& error_at, st
                    // Any parser left unnamed would print its mangled C++ type: say it in words.
                    : which.find("boost") != std::string::npos ? "a JSON entry like {\"follower\": {\"rotation\": \"(-)\"}}"
                                                               : which;
+        // A whole motion entry of the output (translation and rotation): a query asks about one.
+        if (which == "'}'" && error_at < text.size() && text[error_at] == ',' && !e.direction.empty())
+            hint = ": a query asks about one motion at a time, e.g. {\"" + e.object + "\": {\"" + e.kind + "\": \"" +
+                   e.direction + "\"}}; ask about the " + (e.kind == "translation" ? "rotation" : "translation") +
+                   " in a query of its own";
     }
     return std::nullopt;
 }
@@ -71,14 +76,14 @@ std::optional<std::string> query_text(std::string_view text, const std::string& 
         return out;
     }
     std::size_t at = 0;
-    std::string expected;
-    auto e = parse_json(text, at, expected);
+    std::string expected, hint;
+    auto e = parse_json(text, at, expected, hint);
     if (!e || (e->kind != "translation" && e->kind != "rotation")) {
         if (e) {
             expected = "\"translation\" or \"rotation\"";
             at = text.find("\"" + e->kind + "\"");
         }
-        diagnostics.error({origin, 1, static_cast<std::uint32_t>(at + 1)}, "expected " + expected + " but found " + found_at(text, at),
+        diagnostics.error({origin, 1, static_cast<std::uint32_t>(at + 1)}, "expected " + expected + " but found " + found_at(text, at) + hint,
                           std::string(text));
         return std::nullopt;
     }

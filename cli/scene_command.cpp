@@ -1,6 +1,7 @@
 // cli/scene_command.cpp: `qm-atms SCENE.def` (thesis chapters 6-7), its options and the interactive mode.
 #include "scene_command.hpp"
 #include "alex/analysis.hpp"
+#include "alex/direction_text.hpp"
 #include "alex/result_printer.hpp"
 #include "alex/scene_parser.hpp"
 #include "metric_command.hpp"
@@ -59,14 +60,15 @@ std::optional<std::size_t> positive(const std::string& s) {
 }
 
 // Whether situation s (from 1) has the contact or force q, the things `--without` and `whatif` take
-// away. `Force OBJ` names every force on OBJ, scene-level ones included (they act in every situation).
+// away. `Force OBJ` names every force on OBJ, scene-level ones included (they act in every situation);
+// `Force OBJ CAUSE` only the force(s) of that cause on OBJ.
 bool has_item(const alex::Scene& scene, std::size_t s, const alex::QueryFact& q) {
     const alex::Situation& situation = scene.situations[s - 1];
     if (q.kind == alex::QueryFact::Kind::contact)
         return std::any_of(situation.contacts.begin(), situation.contacts.end(), [&](const alex::Contact& c) {
             return (c.first == *q.first && c.second == *q.second) || (c.first == *q.second && c.second == *q.first);
         });
-    auto on = [&](const alex::Force& f) { return f.object == *q.object; };
+    auto on = [&](const alex::Force& f) { return f.object == *q.object && (!q.cause || f.cause == *q.cause); };
     return std::any_of(scene.forces.begin(), scene.forces.end(), on) ||
            std::any_of(situation.forces.begin(), situation.forces.end(), on);
 }
@@ -75,6 +77,7 @@ bool has_item(const alex::Scene& scene, std::size_t s, const alex::QueryFact& q)
 std::string item_text(const alex::Scene& scene, const alex::QueryFact& q) {
     if (q.kind == alex::QueryFact::Kind::contact)
         return "Contact (" + scene.surfaces[*q.first].name + " " + scene.surfaces[*q.second].name + ")";
+    if (q.cause) return "force of cause '" + scene.causes[*q.cause].name + "' on '" + scene.objects[*q.object].name + "'";
     return "force on '" + scene.objects[*q.object].name + "'";
 }
 
@@ -120,7 +123,7 @@ std::optional<SceneOptions> parse(std::span<const std::string> args, std::ostrea
             if (!v) return std::nullopt;
             o.given.push_back(*v);
         } else if (a == "--without") {
-            auto v = value("a contact or force, e.g. --without 'Contact tb block-b-m' or --without 'Force block'");
+            auto v = value("a contact or force, e.g. --without 'Contact tb block-b-m', --without 'Force block' or --without 'Force block wind'");
             if (!v) return std::nullopt;
             o.without.push_back(*v);
         } else if (a == "--rules") {
@@ -235,7 +238,7 @@ private:
                 const std::string part = trim(text.substr(from, semi == std::string::npos ? std::string::npos : semi - from));
                 if (auto q = alex::parse_query_fact(scene, part, d, "whatif")) {
                     if (!is_contact_or_force(*q))
-                        d.error({"whatif", 1, 1}, "expected 'Contact A B' or 'Force OBJ' to take away, but found '" + part + "'");
+                        d.error({"whatif", 1, 1}, "expected 'Contact A B' or 'Force OBJ [CAUSE]' to take away, but found '" + part + "'");
                     else if (!has_item(scene, situation_, *q))
                         d.error({"whatif", 1, 1}, "expected a contact or force of situation " + std::to_string(situation_) +
                                                       " to take away, but it has no " + item_text(scene, *q));
@@ -285,7 +288,7 @@ private:
 
 const char* scene_usage() noexcept {
     return "usage: qm-atms SCENE.def [--json] [--why FACT [--situation N]] [--given 'OBJ TRANS ROT']...\n"
-           "                         [--without 'Contact A B' | 'Force OBJ']... [--rules DIR] [--limit N] [-i]\n"
+           "                         [--without 'Contact A B' | 'Force OBJ [CAUSE]']... [--rules DIR] [--limit N] [-i]\n"
            "                         [--config 'PART=VALUE, ...']   (a metric scene, at that configuration)\n"
            "  prints, for every situation, the free directions, every consistent combination of motions\n"
            "  and whether the structure is stable (thesis chapters 6-7)\n"
@@ -293,7 +296,8 @@ const char* scene_usage() noexcept {
            "  --why FACT      why a motion or freedom holds or was ruled out, e.g.\n"
            "                  --why 'Rotational-Motion (follower (-))' (situation 1 unless --situation N)\n"
            "  --given M       a current motion added to every situation, e.g. --given 'pallet (0 0) (+)'\n"
-           "  --without F     take a contact or force away in every situation (what if)\n"
+           "  --without F     take a contact or force away in every situation (what if): 'Contact A B',\n"
+           "                  'Force OBJ' (every force on OBJ, gravity included) or 'Force OBJ CAUSE'\n"
            "  --rules DIR     the folder of laws (default: the rules/ installed with qm-atms)\n"
            "  --limit N       stop enumerating a chain's combinations after N (default 100000)\n"
            "  -i              answer queries typed on standard input (type help)\n"
@@ -326,8 +330,34 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     }
     alex::AnalysisOptions ao;
     ao.combination_limit = options->limit;
+    std::vector<std::string> given_text;  // each --given as written, aligned with ao.given
     for (const auto& g : options->given)
-        if (auto m = alex::parse_given(*scene, g, d, "--given")) ao.given.push_back(*m);
+        if (auto m = alex::parse_given(*scene, g, d, "--given")) {
+            auto same = std::find_if(ao.given.begin(), ao.given.end(), [&](const alex::Motion& x) { return x.object == m->object; });
+            if (same != ao.given.end()) {
+                // One motion per object at a time (Law 1): the second would replace or contradict the first.
+                d.error({"--given", 1, 1}, "expected one --given per object, but '" + scene->objects[m->object].name +
+                                               "' is given twice ('" + given_text[static_cast<std::size_t>(same - ao.given.begin())] +
+                                               "' and '" + g + "')");
+                continue;
+            }
+            ao.given.push_back(*m);
+            given_text.push_back(g);
+        }
+    // A --given motion replaces a Motion the scene gives the same object (a what-if, like --without),
+    // said in a note at that Motion.
+    if (!d.has_errors())
+        for (std::size_t k = 0; k < ao.given.size(); ++k)
+            for (std::size_t s = 0; s < scene->situations.size(); ++s)
+                std::erase_if(scene->situations[s].motions, [&](const alex::Motion& m) {
+                    if (m.object != ao.given[k].object) return false;
+                    d.add({Severity::note, m.where,
+                           "--given '" + given_text[k] + "' replaces this Motion (" + scene->objects[m.object].name + " " +
+                               alex::thesis_text(m.translation) + " " + alex::thesis_text(m.rotation) + ") in situation " +
+                               std::to_string(s + 1),
+                           {}, {}});
+                    return true;
+                });
     const std::size_t situations = scene->situations.size();
     const std::size_t situation = options->situation.value_or(1);
     const bool situation_ok = situation <= situations;
@@ -338,7 +368,7 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
             for (std::size_t s = 1; s <= situations; ++s)
                 if ((!options->situation || s == situation) && has_item(*scene, s, *q)) present = true;
             if (!is_contact_or_force(*q))
-                d.error({"--without", 1, 1}, "expected 'Contact A B' or 'Force OBJ' to take away, but found '" + w + "'");
+                d.error({"--without", 1, 1}, "expected 'Contact A B' or 'Force OBJ [CAUSE]' to take away, but found '" + w + "'");
             else if (!present && situation_ok)
                 d.error({"--without", 1, 1}, "expected a contact or force of the scene to take away, but " +
                                                  (options->situation ? "situation " + std::to_string(situation) : std::string("no situation")) +
@@ -358,15 +388,20 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     if (options->rules) ao.rules_directory = *options->rules;
     else if (auto dir = default_rules_directory()) ao.rules_directory = *dir;
     else d.error({"--rules", 1, 1}, "expected the folder of laws: none installed beside qm-atms; give --rules DIR");
-    if (d.has_errors()) {
-        d.print(err);
-        return 2;
-    }
+    d.print(err);  // errors, or notes (a --given replacing a scene's Motion)
+    if (d.has_errors()) return 2;
+    d = Diagnostics{};
     auto analysis = alex::analyse(*scene, ao, d);
     if (!analysis) {
         d.print(err);
         return 2;
     }
+    // Contacts the laws cannot use (a corner against a surface it cannot touch, Def 25): warned, located.
+    Diagnostics inert;
+    for (std::size_t s = 1; s <= analysis->situations().size(); ++s)
+        if (!options->situation || s == situation)
+            for (Diagnostic& w : analysis->inert_contacts(s)) inert.add(std::move(w));
+    inert.print(err);
     if (options->interactive) {
         Session(*analysis, options->json, out, err).run(in);
         return 0;
@@ -382,6 +417,17 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     }
     std::vector<alex::SituationResult> shown = analysis->situations();
     if (options->situation) shown = {shown[situation - 1]};
+    // A what-if says what it took away, as the interactive `whatif` does (docs/OUTPUT.md).
+    for (alex::SituationResult& r : shown) {
+        std::string taken;
+        for (const alex::QueryFact& q : ao.without)
+            if (has_item(analysis->scene(), r.index, q))
+                taken += (taken.empty() ? "" : ", ") +
+                         (q.kind == alex::QueryFact::Kind::contact ? item_text(analysis->scene(), q)
+                          : q.cause                                ? "the " + item_text(analysis->scene(), q)
+                                                                   : "every " + item_text(analysis->scene(), q));
+        if (!taken.empty()) r.notes.insert(r.notes.begin(), "what-if: analysed without " + taken + " (--without)");
+    }
     // The JSON schema has no place for notes (docs/OUTPUT.md): a truncated enumeration is said on
     // standard error, so a program reading the JSON is not silently given a partial list.
     if (options->json)

@@ -1,6 +1,8 @@
 // engine/builtins_integer.cpp
 #include "engine/builtins_integer.hpp"
+#include <cstdint>
 #include <limits>
+#include <string>
 
 namespace qm::engine {
 namespace {
@@ -58,10 +60,16 @@ void register_integer_builtins(BuiltinRegistry& r) {
         if (!integers(v, a)) return not_integers("range");
         std::int64_t lo = v.value(a[0]).integer;
         std::int64_t hi = v.value(a[1]).integer;
-        if (hi >= lo && (hi - lo >= max_range_size || hi - lo < 0))
-            return BuiltinResult::fail("'range' would have more than 100000 elements");
+        if (hi < lo) return BuiltinResult::of(v.set({}));
+        // hi - lo can exceed INT64_MAX (e.g. (range INT64_MIN INT64_MAX)): take the difference in
+        // unsigned arithmetic, where it is exact for hi >= lo. Counting elements rather than
+        // stepping i up to hi keeps ++i from overflowing at hi = INT64_MAX.
+        const std::uint64_t span = static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo);
+        if (span >= static_cast<std::uint64_t>(max_range_size))
+            return BuiltinResult::fail("'range' would have more than " + std::to_string(max_range_size) + " elements");
         std::vector<ValueId> elements;
-        for (std::int64_t i = lo; i <= hi; ++i) elements.push_back(v.integer(i));
+        elements.reserve(static_cast<std::size_t>(span) + 1);
+        for (std::uint64_t k = 0; k <= span; ++k) elements.push_back(v.integer(lo + static_cast<std::int64_t>(k)));
         return BuiltinResult::of(v.set(std::move(elements)));
     });
 }

@@ -1,6 +1,11 @@
 // engine/builtins_qualitative.cpp: thesis section 2.3 (Tables 2.2-2.3, Defs 1, 4, 12-14, 38), and
 // Table 2.2 with a known comparison of magnitudes (qsum-compared).
 #include "engine/builtins_qualitative.hpp"
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace qm::engine {
 namespace {
@@ -30,17 +35,17 @@ char dot_sign(const std::string& a, const std::string& b) {
     for (std::size_t i = 0; i < a.size(); ++i) s = sign_sum(s, sign_product(a[i], b[i]));
     return s;
 }
-bool open_half_plane(const std::string& a, const std::string& b) { return dot_sign(a, b) == '+'; }
 bool is_zero(const std::string& v) { return v.find_first_not_of('0') == std::string::npos; }
 
-// Def 38: 0 x = v; 1 Open-Half-Plane(v, x); 2 x zero; 3 x = Rotate-90(v, +/-) (and, our reading,
-// any other direction with no definite dot product); 4 Open-Half-Plane(-v, x); 5 x = -v.
-int nearness(const std::string& v, const std::string& x) {
-    if (x == v) return 0;
-    if (x == neg(v)) return 5;
-    if (is_zero(x)) return 2;
-    if (open_half_plane(v, x)) return 1;
-    if (open_half_plane(neg(v), x)) return 4;
+// Def 38, the rank of x relative to a definite v, given x == v, x == -v and the sign of v.x: 0 x = v;
+// 1 Open-Half-Plane(v, x); 2 x zero; 3 x = Rotate-90(v, +/-) (and, our reading, any other direction
+// with no definite dot product); 4 Open-Half-Plane(-v, x), i.e. v.x is -; 5 x = -v.
+int nearness_rank(bool equal, bool opposite, bool x_zero, char dot) {
+    if (equal) return 0;
+    if (opposite) return 5;
+    if (x_zero) return 2;
+    if (dot == '+') return 1;
+    if (dot == '-') return 4;
     return 3;
 }
 
@@ -57,26 +62,32 @@ using Args = std::span<const ValueId>;
 
 bool single(const std::vector<std::string>& d) { return d[0].size() == 1 && d[1].size() == 1; }
 
-// Every sign resolution of an ambiguous direction: each `?` becomes +, 0 and - (section 2.3:
-// "we resolve this ambiguity by branching").
-std::vector<std::string> resolutions(const std::string& v) {
-    std::vector<std::string> out{""};
-    for (char c : v) {
-        std::vector<std::string> next;
-        for (const auto& p : out) {
-            if (c != '?') next.push_back(p + c);
-            else
-                for (char s : {'+', '0', '-'}) next.push_back(p + s);
-        }
-        out = std::move(next);
-    }
-    return out;
-}
-
-// Def 38 for an ambiguous v: the nearest rank over v's resolutions.
+// Def 38 for an ambiguous v: the nearest rank over v's resolutions (section 2.3: "we resolve this
+// ambiguity by branching"; each `?` becomes +, 0 or -). There are 3^k resolutions of k `?`s, so
+// rather than listing them we follow, component by component, the set of states a resolution r can
+// be in: the sign of the dot product r.x so far, and whether r still equals x and -x. The rank of
+// r depends on nothing else, and every `?` is resolved independently, so the states reachable after
+// the last component are exactly those of the resolutions: at most 4 x 2 x 2 = 16, whatever k.
 int nearness_resolved(const std::string& v, const std::string& x) {
+    struct State {
+        char dot;
+        bool equal, opposite;  // r == x, r == -x so far
+        bool operator==(const State&) const = default;
+    };
+    std::vector<State> states{{'0', true, true}};
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        std::vector<State> next;
+        for (char r : {'+', '0', '-'}) {
+            if (v[i] != '?' && v[i] != r) continue;
+            for (const State& s : states) {
+                State t{sign_sum(s.dot, sign_product(r, x[i])), s.equal && r == x[i], s.opposite && r == sign_neg(x[i])};
+                if (std::find(next.begin(), next.end(), t) == next.end()) next.push_back(t);
+            }
+        }
+        states = std::move(next);
+    }
     int best = 5;
-    for (const auto& r : resolutions(v)) best = std::min(best, nearness(r, x));
+    for (const State& s : states) best = std::min(best, nearness_rank(s.equal, s.opposite, is_zero(x), s.dot));
     return best;
 }
 
@@ -198,29 +209,50 @@ std::vector<std::string> all_directions(std::size_t n) {
     return out;
 }
 
-// n must be the integer 2 or 3.
-std::optional<std::int64_t> dimension(const ValueTable& v, ValueId x) {
+// Translations (Defs 1 and 3) are defined for any number of components; 3^n of them are listed,
+// so the dimension is capped. Rotations (Defs 4 and 6) only in the plane (one component, about the
+// normal) and in space (three, about x, y and z): the thesis gives them no other form (Table 2.1).
+constexpr std::int64_t max_translation_dimension = 8;  // 3^8 = 6561 directions
+
+std::optional<std::size_t> translation_dimension(const ValueTable& v, ValueId x) {
+    const Value& val = v.value(x);
+    if (val.kind != ValueKind::integer || val.integer < 1 || val.integer > max_translation_dimension) return std::nullopt;
+    return static_cast<std::size_t>(val.integer);
+}
+std::optional<std::size_t> rotation_components(const ValueTable& v, ValueId x) {
     const Value& val = v.value(x);
     if (val.kind != ValueKind::integer || (val.integer != 2 && val.integer != 3)) return std::nullopt;
-    return val.integer;
+    return val.integer == 2 ? 1 : 3;
+}
+
+// The number of components of the directions `name` produces for dimension x; else an error text.
+std::optional<std::size_t> components(const ValueTable& v, ValueId x, const char* name, bool rotation, std::string& error) {
+    auto n = rotation ? rotation_components(v, x) : translation_dimension(v, x);
+    if (!n)
+        error = std::string("'") + name + "' expects " +
+                (rotation ? std::string("the dimension 2 or 3 (rotations are defined only in the plane and in space)")
+                          : "a dimension from 1 to " + std::to_string(max_translation_dimension)) +
+                ", not " + v.print(x);
+    return n;
 }
 
 BuiltinFn direction_set(const char* name, bool rotations) {
     return [name, rotations](ValueTable& v, Args a) {
-        auto n = dimension(v, a[0]);
-        if (!n) return BuiltinResult::fail(std::string("'") + name + "' expects the dimension 2 or 3");
-        std::size_t components = rotations && *n == 2 ? 1 : static_cast<std::size_t>(*n);
+        std::string error;
+        auto n = components(v, a[0], name, rotations, error);
+        if (!n) return BuiltinResult::fail(error);
         std::vector<ValueId> out;
-        for (const auto& d : all_directions(components)) out.push_back(v.direction(d));
+        for (const auto& d : all_directions(*n)) out.push_back(v.direction(d));
         return BuiltinResult::of(v.set(std::move(out)));
     };
 }
 
 BuiltinFn zero_direction(const char* name, bool rotation) {
     return [name, rotation](ValueTable& v, Args a) {
-        auto n = dimension(v, a[0]);
-        if (!n) return BuiltinResult::fail(std::string("'") + name + "' expects the dimension 2 or 3");
-        return BuiltinResult::of(v.direction(std::string(rotation && *n == 2 ? 1 : static_cast<std::size_t>(*n), '0')));
+        std::string error;
+        auto n = components(v, a[0], name, rotation, error);
+        if (!n) return BuiltinResult::fail(error);
+        return BuiltinResult::of(v.direction(std::string(*n, '0')));
     };
 }
 

@@ -9,8 +9,10 @@
 //              turns (x y) into (-y x), r = (-) into (y -x); 3-D: per axis of r (Table 2.1), the
 //              quarter turns e x v summed; a zero rotation gives the zero vector), translations n /
 //              rotations n (Defs 1 and 4: every direction of the dimension, the zero one included;
-//              rotations have 1 component in 2-D and 3 in 3-D), zero-translation n, zero-rotation n,
-//              nearness v x (Def 38 rank 0..5; an ambiguous v takes the nearest of its resolutions),
+//              translations for n = 1..8, 3^n of them; rotations only for n = 2 (1 component) and
+//              n = 3 (3 components), the only ones the thesis defines, Table 2.1), zero-translation n
+//              (n = 1..8), zero-rotation n (n = 2, 3), nearness v x (Def 38 rank 0..5; an ambiguous v
+//              takes the nearest of its resolutions, computed per component without listing them),
 //              qsum-of s (the qualitative sum of a set's directions; a direction is its own sum),
 //              set-add s x (s with x added; to collect values in an aggregate), qsum-compared a b w
 //              (qsum when the magnitudes are known to compare as w, the sign of |a| - |b|: where a and b
@@ -24,8 +26,9 @@
 //              direction or a set of directions in either place and hold iff they hold for every
 //              pair (outside-: for no pair), i.e. a set stands for the intersection of its elements'
 //              half planes (the potential contacts of two corners, Def 26).
-// Errors:     wrong value kinds, mismatched dimensions, a rotation of the wrong arity, dimensions other than 2 and 3,
-//             a component number outside 1..the direction's size.
+// Errors:     wrong value kinds, mismatched dimensions, a rotation of the wrong arity, a translation
+//             dimension outside 1..8, a rotation dimension other than 2 and 3, a component number
+//             outside 1..the direction's size.
 // Knows nothing of the ATMS and of laws: this is mathematics, not mechanics.
 #pragma once
 #include "engine/builtin_registry.hpp"

@@ -13,7 +13,9 @@
 // Semantics:  of `not`, aggregates and contexts: docs/RULES.md "## Semantics".
 // Errors:     a rule that cannot be evaluated soundly (negation over an assumption-dependent fact
 //             without a context, ...) or a builtin error is reported into the Diagnostics given to
-//             run(), located at the condition; API misuse throws qm::InternalError.
+//             run(), located at the condition; so is a choice set that shares an assumption with
+//             another, different one (located at its `exactly one`, naming the other's location).
+//             API misuse throws qm::InternalError.
 // Knows nothing of mechanics.
 #pragma once
 #include "atms/atms.hpp"
@@ -23,8 +25,10 @@
 #include "engine/fact_store.hpp"
 #include "engine/firing.hpp"
 #include "engine/matcher.hpp"
+#include "engine/run_options.hpp"
 #include "engine/value_table.hpp"
 #include "qm/diagnostics.hpp"
+#include <map>
 #include <optional>
 #include <set>
 #include <span>
@@ -63,11 +67,12 @@ public:
 
     // ---- running --------------------------------------------------------------------------------
     // Runs every stratum to quiescence; `not` and aggregates are decided generically (a fact whose
-    // label depends on assumptions makes them undecidable: a diagnostic).
-    void run(Diagnostics& diagnostics);
+    // label depends on assumptions makes them undecidable: a diagnostic). With options.max_steps,
+    // the run stops when it has taken that many steps (a diagnostic; see run_options.hpp).
+    void run(Diagnostics& diagnostics, const RunOptions& options = {});
     // Runs every stratum; `not` and aggregates are decided in the context environment C.
     // Pre: context was issued by atms().
-    ContextRun run_in_context(atms::EnvId context, Diagnostics& diagnostics);
+    ContextRun run_in_context(atms::EnvId context, Diagnostics& diagnostics, const RunOptions& options = {});
 
     // ---- facts and labels -----------------------------------------------------------------------
     [[nodiscard]] const FactStore& facts() const noexcept { return facts_; }
@@ -91,6 +96,7 @@ public:
 
     // ---- provenance -----------------------------------------------------------------------------
     [[nodiscard]] const CompiledProgram& program() const noexcept { return program_; }
+    [[nodiscard]] const BuiltinRegistry& builtins() const noexcept { return builtins_; }
     [[nodiscard]] const Firing& firing(atms::InformantId i) const;  // Pre: i issued by this engine
     [[nodiscard]] std::size_t firing_count() const noexcept { return firings_.size(); }
     [[nodiscard]] std::size_t rule_firings() const noexcept { return rule_firings_; }
@@ -121,7 +127,12 @@ private:
     atms::InformantId new_firing(Firing f);
     void note_if_in(FactId f);
     // engine_run.cpp
-    void run_strata(std::optional<std::uint32_t> context, Diagnostics& diagnostics);
+    void run_strata(std::optional<std::uint32_t> context, Diagnostics& diagnostics, const RunOptions& options);
+    // Takes n steps of the run's RunOptions::max_steps; if they would exceed it, stops the run
+    // instead (stop()) and returns false.
+    bool spend(std::size_t n, const CompiledRule& rule, const SourceLocation& where, Diagnostics& diagnostics);
+    // Ends the current run: nothing more is matched or fired; a diagnostic at where, naming rule.
+    void stop(const CompiledRule& rule, const SourceLocation& where, Diagnostics& diagnostics);
     void match_rule(RuleId r, std::optional<Seed> seed, std::optional<std::uint32_t> context,
                     Diagnostics& diagnostics, const Binding* initial = nullptr);
     bool drain(std::uint32_t stratum, std::optional<std::uint32_t> context, Diagnostics& diagnostics);
@@ -133,6 +144,9 @@ private:
     void execute(const RuleInstance& instance, Diagnostics& diagnostics);
     std::optional<FactId> instantiate(const CompiledAtom& atom, const Binding& b, Diagnostics& diagnostics);
     void assume_fact(FactId f, atms::InformantId why, std::span<const atms::NodeId> antecedents);
+    void declare_choice_set(const CompiledConsequent& c, const CompiledRule& rule, atms::InformantId why,
+                            std::span<const atms::NodeId> antecedents, std::vector<atms::AssumptionId> set,
+                            std::span<const atms::NodeId> nodes, Diagnostics& diagnostics);
 
     CompiledProgram program_;
     ValueTable values_;
@@ -149,10 +163,15 @@ private:
     IdVector<RuleId, std::uint8_t> rule_matched_;               // a full match has been done
     IdVector<RuleId, std::vector<ValueId>> rule_triggers_;     // predicates it matches (sorted)
     std::vector<std::vector<atms::AssumptionId>> choice_sets_;
-    std::set<std::vector<atms::AssumptionId>> choice_set_keys_;
+    std::vector<SourceLocation> choice_set_where_;       // the `exactly one` that declared each set
+    std::set<std::vector<atms::AssumptionId>> choice_set_keys_;  // every set seen, sorted (also refused ones)
+    std::map<atms::AssumptionId, std::uint32_t> choice_set_of_;  // the choice set of each member
     std::vector<bool> is_choice_assumption_;             // indexed by AssumptionId
     std::vector<Context> contexts_;
     bool closed_world_used_ = false;
+    RunOptions options_;                                 // of the current run
+    std::size_t steps_ = 0;                              // taken by the current run
+    bool stopped_ = false;                               // the current run ran out of steps
     std::size_t rule_firings_ = 0;
 };
 }  // namespace qm::engine

@@ -23,6 +23,7 @@ std::optional<FactId> Engine::instantiate(const CompiledAtom& atom, const Bindin
 
 void Engine::execute(const RuleInstance& instance, Diagnostics& diagnostics) {
     const CompiledRule& rule = program_.rules[instance.rule];
+    if (!spend(1, rule, rule.where, diagnostics)) return;
     ++rule_firings_;
     atms::InformantId why = new_firing(Firing{Firing::Kind::rule, instance.rule, instance.binding, instance.context, rule.where});
     std::vector<atms::NodeId> ants;
@@ -87,8 +88,10 @@ void Engine::execute(const RuleInstance& instance, Diagnostics& diagnostics) {
                     note_if_in(*f);
                 }
                 break;
-            case CompiledConsequent::Kind::for_all_assert:
-                for (ValueId e : elements(c)) {
+            case CompiledConsequent::Kind::for_all_assert: {
+                const std::vector<ValueId> es = elements(c);
+                if (!spend(es.size(), rule, c.where, diagnostics)) return;
+                for (ValueId e : es) {
                     b[c.slot] = e;
                     if (auto f = instantiate(c.atom, b, diagnostics)) {
                         atms_.justify(element_informant(), ants, fact_nodes_[*f].node);
@@ -97,11 +100,16 @@ void Engine::execute(const RuleInstance& instance, Diagnostics& diagnostics) {
                 }
                 b[c.slot].reset();
                 break;
+            }
             case CompiledConsequent::Kind::exactly_one: {
-                // Law 1 style uniqueness: each element an assumption, pairwise nogoods, one choice set.
+                // One step per element and one per pair of elements (a nogood each), before anything
+                // is assumed: a choice set is declared whole or not at all.
+                const std::vector<ValueId> es = elements(c);
+                if (!spend(es.size() + es.size() * (es.size() - (es.empty() ? 0 : 1)) / 2, rule, c.where, diagnostics))
+                    return;
                 std::vector<atms::AssumptionId> set;
                 std::vector<atms::NodeId> nodes;
-                for (ValueId e : elements(c)) {
+                for (ValueId e : es) {
                     b[c.slot] = e;
                     if (auto f = instantiate(c.atom, b, diagnostics)) {
                         assume_fact(*f, element_informant(), ants);
@@ -113,16 +121,54 @@ void Engine::execute(const RuleInstance& instance, Diagnostics& diagnostics) {
                     }
                 }
                 b[c.slot].reset();
-                for (std::size_t i = 0; i < nodes.size(); ++i)
-                    for (std::size_t j = i + 1; j < nodes.size(); ++j) atms_.add_nogood(why, {nodes[i], nodes[j]});
-                for (atms::AssumptionId a : set) is_choice_assumption_[a.value] = true;
-                std::vector<atms::AssumptionId> key = set;
-                std::sort(key.begin(), key.end());
-                if (choice_set_keys_.insert(key).second) choice_sets_.push_back(std::move(set));
+                declare_choice_set(c, rule, why, ants, std::move(set), nodes, diagnostics);
                 break;
             }
         }
     }
+}
+
+// Law 1 style uniqueness: each element an assumption, a nogood for every pair, one choice set. The
+// interpretations pick one assumption from every choice set, which the ATMS can only do for
+// disjoint sets: a set sharing an assumption with another (not identical) set is refused, located.
+// "Exactly one of nothing" is false: an empty set makes the firing's antecedents a nogood, so the
+// environments where it fired are inconsistent, and `--why` names the rule that made them so. (An
+// empty choice set registered as such would instead leave no interpretation at all, with no
+// nogood to say why, even where the firing's antecedents do not hold.)
+void Engine::declare_choice_set(const CompiledConsequent& c, const CompiledRule& rule, atms::InformantId why,
+                                std::span<const atms::NodeId> antecedents, std::vector<atms::AssumptionId> set,
+                                std::span<const atms::NodeId> nodes, Diagnostics& diagnostics) {
+    if (set.empty()) {
+        atms_.add_nogood(why, antecedents);
+        return;
+    }
+    std::vector<atms::AssumptionId> key = set;
+    std::sort(key.begin(), key.end());
+    // The same set declared again (another binding, another rule) adds nothing; a refused one was
+    // reported when first seen.
+    if (!choice_set_keys_.insert(key).second) return;
+    for (atms::AssumptionId a : set) {
+        auto owner = choice_set_of_.find(a);
+        if (owner == choice_set_of_.end()) continue;
+        const std::vector<atms::AssumptionId>& other = choice_sets_[owner->second];
+        std::string members;
+        for (atms::AssumptionId m : other) members += (members.empty() ? "" : ", ") + print(m);
+        const SourceLocation& at = choice_set_where_[owner->second];
+        diagnostics.error(c.where, "rule '" + rule.name + "': `exactly one` would put " + print(a) +
+                                       " in a second choice set: it is already in the choice set {" + members +
+                                       "} declared at " + at.file + ":" + std::to_string(at.line) + ":" +
+                                       std::to_string(at.column) + "; choice sets must be disjoint or identical");
+        return;
+    }
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+        for (std::size_t j = i + 1; j < nodes.size(); ++j) atms_.add_nogood(why, {nodes[i], nodes[j]});
+    const auto index = static_cast<std::uint32_t>(choice_sets_.size());
+    for (atms::AssumptionId a : set) {
+        is_choice_assumption_[a.value] = true;
+        choice_set_of_.emplace(a, index);
+    }
+    choice_sets_.push_back(std::move(set));
+    choice_set_where_.push_back(c.where);
 }
 
 }  // namespace qm::engine

@@ -2,12 +2,13 @@
 #include "engine/engine.hpp"
 #include "qm/assert.hpp"
 #include <algorithm>
+#include <string>
 
 namespace qm::engine {
 
-void Engine::run(Diagnostics& diagnostics) { run_strata(std::nullopt, diagnostics); }
+void Engine::run(Diagnostics& diagnostics, const RunOptions& options) { run_strata(std::nullopt, diagnostics, options); }
 
-ContextRun Engine::run_in_context(atms::EnvId context, Diagnostics& diagnostics) {
+ContextRun Engine::run_in_context(atms::EnvId context, Diagnostics& diagnostics, const RunOptions& options) {
     std::uint32_t index = 0;
     while (index < contexts_.size() && contexts_[index].base != context) ++index;
     if (index == contexts_.size()) {
@@ -19,13 +20,16 @@ ContextRun Engine::run_in_context(atms::EnvId context, Diagnostics& diagnostics)
         contexts_.push_back(Context{context, n, *a, atms_.environment(members), 0});
         if (is_choice_assumption_.size() <= a->value) is_choice_assumption_.resize(a->value + 1, false);
     }
-    run_strata(index, diagnostics);
+    run_strata(index, diagnostics, options);
     const Context& c = contexts_[index];
     return ContextRun{index, c.environment, c.assumption};
 }
 
-void Engine::run_strata(std::optional<std::uint32_t> context, Diagnostics& diagnostics) {
-    for (std::uint32_t s = 0; s < program_.stratum_count; ++s) {
+void Engine::run_strata(std::optional<std::uint32_t> context, Diagnostics& diagnostics, const RunOptions& options) {
+    options_ = options;
+    steps_ = 0;
+    stopped_ = false;
+    for (std::uint32_t s = 0; s < program_.stratum_count && !stopped_; ++s) {
         // A rule with `not` or an aggregate is matched afresh in every run (its answers depend on
         // the context); a monotonic rule is matched in full once, then only against new facts.
         for (std::size_t i = 0; i < program_.rules.size(); ++i) {
@@ -53,6 +57,7 @@ void Engine::run_strata(std::optional<std::uint32_t> context, Diagnostics& diagn
 bool Engine::drain(std::uint32_t s, std::optional<std::uint32_t> context, Diagnostics& diagnostics) {
     bool changed = false;
     for (;;) {
+        if (stopped_) return changed;
         for (FactId f : pending_activation_)
             if (facts_.activate(f)) activation_log_.push_back(f);
         pending_activation_.clear();
@@ -123,11 +128,13 @@ bool Engine::drain(std::uint32_t s, std::optional<std::uint32_t> context, Diagno
 void Engine::match_rule(RuleId r, std::optional<Seed> seed, std::optional<std::uint32_t> context,
                         Diagnostics& diagnostics, const Binding* initial) {
     const CompiledRule& rule = program_.rules[r];
+    if (stopped_) return;
     std::optional<std::uint32_t> rule_context = rule.non_monotonic ? context : std::nullopt;
     if (rule.non_monotonic) closed_world_used_ = true;
     ClosedWorld world{[this, rule_context](FactId f) { return status(f, rule_context); },
                       [this, rule_context](FactId f) { return why_undecidable(f, rule_context); }};
     Matcher matcher(facts_, values_, builtins_, world);
+    if (options_.max_steps) matcher.limit_steps(*options_.max_steps - steps_);
     std::set<std::pair<std::string, std::string>> reported;
     bool urgent = std::any_of(rule.consequents.begin(), rule.consequents.end(),
                               [](const CompiledConsequent& c) { return c.kind == CompiledConsequent::Kind::falsity; });
@@ -142,6 +149,28 @@ void Engine::match_rule(RuleId r, std::optional<Seed> seed, std::optional<std::u
                 diagnostics.error(e.where, "rule '" + rule.name + "': " + e.message);
         },
         initial);
+    steps_ += matcher.steps();
+    if (matcher.stopped()) stop(rule, rule.where, diagnostics);
+}
+
+bool Engine::spend(std::size_t n, const CompiledRule& rule, const SourceLocation& where, Diagnostics& diagnostics) {
+    if (stopped_) return false;
+    if (options_.max_steps && n > *options_.max_steps - steps_) {
+        stop(rule, where, diagnostics);
+        return false;
+    }
+    steps_ += n;
+    return true;
+}
+
+// A run that stops is not resumed: the firing it was about to make is dropped, so what it found
+// is sound but stays incomplete (docs/RULES.md "## Semantics").
+void Engine::stop(const CompiledRule& rule, const SourceLocation& where, Diagnostics& diagnostics) {
+    if (stopped_) return;
+    stopped_ = true;
+    diagnostics.error(where, "rule '" + rule.name + "': the run stopped here after " + std::to_string(steps_) +
+                                 " steps, the limit set by its options (RunOptions::max_steps); what it found is "
+                                 "sound but incomplete");
 }
 
 // Records, for every context, the nogoods {closed-world of C, X} for assumptions X outside C and

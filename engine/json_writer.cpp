@@ -34,7 +34,7 @@ std::string derivation_list(const std::vector<Derivation>& ds) {
             const WhyStep& s = ds[i].steps[k];
             if (k > 0) out += ", ";
             out += "{\"fact\": " + json_string(s.consequent) + ", \"informant\": " + json_string(s.informant) +
-                   ", \"binding\": " + string_list(s.binding) + ", \"antecedents\": " + string_list(s.antecedents) + "}";
+                   ", \"binding\": " + string_list(s.binding) + ", \"antecedents\": " + string_list(s.antecedents) + ", \"not\": " + string_list(s.absent) + "}";
         }
         out += "]}";
     }

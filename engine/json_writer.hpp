@@ -7,7 +7,8 @@
 //             {"fact": F, "status": "holds" | "ruled-out" | "unsupported",
 //              "derivations": [DERIVATION, ...], "nogoods": [DERIVATION, ...]}, DERIVATION being
 //             {"environment": [A, ...], "steps": [{"fact": F, "informant": TEXT, "binding": [TEXT, ...],
-//              "antecedents": [F, ...]}, ...]} with the steps leaves first, as the text form prints them.
+//              "antecedents": [F, ...], "not": [F, ...]}, ...]} with the steps leaves first, as the text
+//             form prints them ("not": the `not` conditions the firing relied on, its "and not" lines).
 // Knows nothing of the ATMS.
 #pragma once
 #include "engine/run_report.hpp"

@@ -31,6 +31,17 @@ struct Matcher::Run {
     }
     void error(const SourceLocation& where, std::string message) { on_error(MatchError{where, std::move(message)}); }
 
+    // Takes one step; false once the matcher's limit is reached (then every loop ends at once).
+    bool tick() {
+        if (m.stopped_) return false;
+        if (m.step_limit_ && m.steps_ >= *m.step_limit_) {
+            m.stopped_ = true;
+            return false;
+        }
+        ++m.steps_;
+        return true;
+    }
+
     // Evaluates a ground term; reports builtin errors. Empty when not ground or on error.
     std::optional<ValueId> value_of(const CompiledTerm& t, const SourceLocation& where) {
         Evaluation e = evaluate(t, binding, m.values_, m.builtins_);
@@ -73,6 +84,7 @@ struct Matcher::Run {
         if (atoms.empty()) return next();
         const CompiledAtom& atom = atoms.front();
         for (FactId f : candidates(atom)) {
+            if (!tick()) return;
             std::size_t mark = trail.size();
             if (unify(atom, f)) {
                 antecedents.push_back(f);
@@ -130,6 +142,7 @@ struct Matcher::Run {
     bool closed_world_scan(const CompiledAtom& atom, Each&& each) {
         bool decidable = true;
         for (FactId f : m.facts_.with_predicate(atom.predicate)) {
+            if (!tick()) return decidable;
             std::size_t mark = trail.size();
             if (unify(atom, f)) {
                 ClosedWorldStatus s = m.closed_world_.status(f);
@@ -146,6 +159,7 @@ struct Matcher::Run {
     }
 
     void step(std::size_t i) {
+        if (m.stopped_) return;
         if (i == rule.conditions.size()) return on_match(binding, antecedents);
         const CompiledCondition& c = rule.conditions[i];
         switch (c.kind) {
@@ -203,6 +217,10 @@ struct Matcher::Run {
         std::size_t pushed = 0;
         bool all = true;
         for (ValueId e : *elements_of) {
+            if (!tick()) {
+                all = false;
+                break;
+            }
             std::size_t mark = trail.size();
             bind(c.slot, e);
             if (tests_hold(c.tests)) {
@@ -234,6 +252,7 @@ struct Matcher::Run {
         auto elements_of = elements(c.set, c.where);
         if (!elements_of) return;
         for (ValueId e : *elements_of) {
+            if (!tick()) return;
             std::size_t mark = trail.size();
             if (binding[c.slot] && *binding[c.slot] != e) continue;
             if (!binding[c.slot]) bind(c.slot, e);

@@ -5,7 +5,8 @@
 //             the engine seeds with each newly active fact (semi-naive evaluation).
 //             ClosedWorld is how the engine tells the matcher whether a fact holds for `not` and for
 //             aggregates; the matcher itself never consults the ATMS.
-// Ownership:  borrows the store, table and registry; holds no state between calls.
+// Ownership:  borrows the store, table and registry; holds no state between calls but the count of
+//             steps taken against an optional limit (limit_steps()).
 // Invariants: every match reports as antecedents exactly the facts its conditions used: one per
 //             `match`, one per atom per element of a `for all`, the witness facts of an `exists`,
 //             and the facts folded by an aggregate.
@@ -14,6 +15,7 @@
 #include "engine/binding.hpp"
 #include "engine/compiled_rule.hpp"
 #include "engine/fact_store.hpp"
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <span>
@@ -51,6 +53,12 @@ public:
     // rule.slot_count() slots. Matching starts from `initial` (some variables already bound).
     void match(const CompiledRule& rule, std::optional<Seed> seed, const OnMatch& on_match,
                const OnError& on_error, const Binding* initial = nullptr);
+    // Bounds the work of this matcher's match() calls: a step is one fact tried against an atom
+    // (for a `match`, `exists`, `not` or aggregate) or one element of a quantifier's set. Once
+    // `steps` are taken, matching stops where it is: no further match is reported.
+    void limit_steps(std::size_t steps) noexcept { step_limit_ = steps; }
+    [[nodiscard]] std::size_t steps() const noexcept { return steps_; }    // taken so far
+    [[nodiscard]] bool stopped() const noexcept { return stopped_; }      // the limit was reached
     // The binding of the rule's variables that unifying `atom` (an atom inside a quantifier of the
     // rule whose quantified variable is `local`) with fact f gives, less `local`: a new fact can
     // complete a `for all` or an `exists` only for such bindings. Empty if they do not unify, or if
@@ -68,5 +76,8 @@ private:
     const BuiltinRegistry& builtins_;
     const ClosedWorld& closed_world_;
     std::optional<BuiltinId> equals_;
+    std::optional<std::size_t> step_limit_;
+    std::size_t steps_ = 0;
+    bool stopped_ = false;
 };
 }  // namespace qm::engine

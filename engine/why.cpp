@@ -1,5 +1,6 @@
 // engine/why.cpp
 #include "engine/why.hpp"
+#include "engine/binding.hpp"
 #include "qm/assert.hpp"
 #include <algorithm>
 #include <set>
@@ -20,7 +21,37 @@ std::string node_text(const Engine& e, atms::NodeId n) {
     return e.print(*f);
 }
 
-WhyStep step_of(const Engine& e, atms::JustId j) {
+// A term under a firing's binding: its value where it is ground, otherwise as written (a variable
+// local to a `not` by its name).
+std::string term_text(Engine& e, const CompiledRule& rule, const CompiledTerm& t, const Binding& b) {
+    if (is_ground(t, b))
+        if (Evaluation v = evaluate(t, b, e.values(), e.builtins()); v.value) return e.values().print(*v.value);
+    switch (t.kind) {
+        case CompiledTerm::Kind::constant: return e.values().print(t.constant);
+        case CompiledTerm::Kind::variable: return rule.slot_names[t.slot];
+        case CompiledTerm::Kind::call: {
+            std::string out = "(" + e.builtins().get(t.function).name;
+            for (const auto& a : t.args) out += " " + term_text(e, rule, a, b);
+            return out + ")";
+        }
+    }
+    return {};
+}
+
+// The `not` conditions of a firing's rule, under its binding. They are not antecedents (a label
+// cannot say "where P does not hold"), so the ATMS does not know them: the rule does.
+std::vector<std::string> absent_of(Engine& e, const CompiledRule& rule, const Binding& b) {
+    std::vector<std::string> out;
+    for (const auto& c : rule.conditions) {
+        if (c.kind != CompiledCondition::Kind::negation) continue;
+        std::string atom = "(" + e.values().print(c.atom.predicate);
+        for (const auto& t : c.atom.args) atom += " " + term_text(e, rule, t, b);
+        out.push_back(atom + ")");
+    }
+    return out;
+}
+
+WhyStep step_of(Engine& e, atms::JustId j) {
     const atms::Justification& just = e.atms().justification(j);
     const Firing& firing = e.firing(just.informant);
     WhyStep s;
@@ -31,6 +62,7 @@ WhyStep step_of(const Engine& e, atms::JustId j) {
             s.informant = "rule " + rule.name + " at " + at;
             for (std::size_t i = 0; i < firing.binding.size(); ++i)
                 if (firing.binding[i]) s.binding.push_back(rule.slot_names[i] + " = " + e.values().print(*firing.binding[i]));
+            s.absent = absent_of(e, rule, firing.binding);
             break;
         }
         case Firing::Kind::premise: s.informant = "premise at " + at; break;
@@ -42,7 +74,7 @@ WhyStep step_of(const Engine& e, atms::JustId j) {
     return s;
 }
 
-std::vector<WhyStep> steps_of(const Engine& e, const atms::Explanation& x) {
+std::vector<WhyStep> steps_of(Engine& e, const atms::Explanation& x) {
     std::vector<WhyStep> out;
     for (atms::JustId j : x.steps) out.push_back(step_of(e, j));
     return out;

@@ -3,7 +3,8 @@
 //             holds, one justification tree per label environment (ATMS explain); for a fact that is
 //             ruled out (it has support, but every supporting environment is nogood), the minimal
 //             nogoods that exclude it and the derivation of each. Every step names the informant:
-//             the rule, its file:line and the binding of the firing (or "premise"/"assumption").
+//             the rule, its file:line and the binding of the firing (or "premise"/"assumption"),
+//             and the `not` conditions the firing relied on.
 // Ownership:  plain values, independent of the Engine once built.
 // Knows nothing of mechanics.
 #pragma once
@@ -18,6 +19,10 @@ struct WhyStep {
     std::string informant;                 // "rule same-column at queens4.rules:12", "premise at ..."
     std::vector<std::string> binding;      // "?r1 = 1", in slot order; bound slots only
     std::vector<std::string> antecedents;  // node texts; an assumption node reads "assume (f)"
+    // The `not` conditions of the rule, under the firing's binding: "(penguin tweety)", a variable
+    // local to the `not` kept as written: "(owns tweety ?x)". The firing relied on no fact matching
+    // them (this is not an ATMS antecedent: see docs/RULES.md "## Semantics").
+    std::vector<std::string> absent;
     std::string consequent;                // fact text, or "false"
 };
 

@@ -19,6 +19,7 @@ void print_derivation(std::string& out, const Derivation& d) {
         if (!s.binding.empty()) out += " {" + join(s.binding, ", ") + "}";
         if (!s.antecedents.empty()) out += ": " + join(s.antecedents, ", ");
         out += "\n";
+        for (const auto& a : s.absent) out += "      and not " + a + "\n";
     }
 }
 

@@ -109,7 +109,9 @@ CSpaceResult classify_cspace(const PairOracle& oracle, const CSpaceRequest& requ
                     n = Eigen::Vector2d::Zero();
                     n[axis] = along;
                 }
-                p.normal = n.normalized();
+                n.normalize();
+                p.normal_contradicts_edge = n[axis] * along < -request.normal_zero_tolerance;
+                p.normal = n;
                 p.qual = qualitative(p.normal, request.normal_zero_tolerance);
                 out.boundary.push_back(p);
             }

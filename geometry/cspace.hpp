@@ -47,6 +47,11 @@ struct BoundaryPoint {
     Eigen::Vector2d normal;       // unit normal into free space, from the geometry
     QualDirection qual;           // its qualitative direction
     bool low_side_blocked = false;  // the edge's first sample is blocked
+    // The normal points back towards the edge's blocked sample, against the crossing itself:
+    // the exact features nearest this configuration (found on the meshes) name another surface
+    // (near a sharp corner, e.g. a pawl's tip on a tooth's tip). Its normal says nothing here;
+    // the place builder gives the point its neighbours' along the boundary.
+    bool normal_contradicts_edge = false;
 };
 
 struct CSpaceResult {

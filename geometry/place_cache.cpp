@@ -11,7 +11,9 @@ namespace qm::geometry {
 namespace {
 
 // /2: divisions on a periodic axis carry intermediate points (their direction); faces a gap flag.
-constexpr const char* magic = "qm-place-cache/2";
+// /3: the builder changed (contradicting normals, joins at needle tips): vocabularies stored by /2
+// differ for the same geometry and settings (the escapement: 62 places, now 35).
+constexpr const char* magic = "qm-place-cache/3";
 
 void write_text(std::ostream& os, const std::string& s) { os << s.size() << ' ' << s; }
 

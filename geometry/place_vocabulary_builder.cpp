@@ -21,10 +21,48 @@ void Builder::make_chains(const std::vector<BoundaryChain>& traced) {
             const auto& p = space.boundary[static_cast<std::size_t>(k)];
             nodes.push_back({p.q, k, std::nullopt, p.qual, p.normal});
         }
+        adopt_neighbour_normals(nodes, t.points, t.closed);
         absorb_short_runs(nodes, t.closed);
         chains.push_back(std::move(nodes));
         closed.push_back(t.closed);
     }
+}
+
+// A point whose normal contradicts its own crossing (BoundaryPoint::normal_contradicts_edge)
+// takes the normal of the nearest point before it along the chain that has a sound one (after
+// it, at a chain's open start). Flipping such normals instead made things worse where the far
+// surface is not parallel to the near one (the escapement's pallet corner at grid 256: 92 places
+// became 135); left alone, each started a CSEG of a cell or less and two joins, the more of
+// them the finer the grid (the ratchet: 63 to 143 places).
+void Builder::adopt_neighbour_normals(std::vector<ChainNode>& nodes, const std::vector<int>& points, bool is_closed) {
+    const std::size_t n = nodes.size();
+    auto sound = [&](std::size_t k) { return !space.boundary[static_cast<std::size_t>(points[k])].normal_contradicts_edge; };
+    std::size_t good = n;
+    for (std::size_t k = 0; k < n; ++k)
+        if (sound(k)) {
+            good = k;
+            break;
+        }
+    if (good == n) return;  // nothing sound to take from
+    std::vector<ChainNode> fixed = nodes;
+    for (std::size_t k = 0; k < n; ++k) {
+        if (sound(k)) continue;
+        std::optional<std::size_t> from;
+        for (std::size_t s = 1; s < n && !from; ++s) {  // backwards first
+            if (!is_closed && s > k) break;
+            const std::size_t j = (k + n - s) % n;
+            if (sound(j)) from = j;
+        }
+        for (std::size_t s = 1; s < n && !from; ++s) {  // then forwards
+            if (!is_closed && k + s >= n) break;
+            const std::size_t j = (k + s) % n;
+            if (sound(j)) from = j;
+        }
+        if (!from) continue;
+        fixed[k].qual = nodes[*from].qual;
+        fixed[k].normal = nodes[*from].normal;
+    }
+    nodes = std::move(fixed);
 }
 
 // 8.1.6: "interactions between small irregularities on surfaces may be ignored": a run of one
@@ -50,21 +88,67 @@ void Builder::absorb_short_runs(std::vector<ChainNode>& nodes, bool is_closed) {
     }
 }
 
-// Where a join between boundary points a and b lies: the crossing of their tangent lines when
-// the normals differ enough to make it well conditioned and it lies near them (a corner), moved
-// onto the boundary along the mean normal.
-Eigen::Vector2d Builder::corner(const ChainNode& a, const ChainNode& b) {
+// Where a join between boundary points a = nodes[k] and b (the next) lies: the crossing of
+// their tangent lines when the normals differ enough to make it well conditioned and it lies
+// near them (a corner: within 1.5 cells, or within 4 cells along each axis if the boundary is
+// found on both tangent lines), moved onto the boundary along the mean normal. At a needle's
+// tip the points next to it can carry the normal of the needle's other side (nearly opposite
+// normals, no crossing to take); the secants through a cell or two of each run then stand in
+// for the tangents, if the boundary is found on both.
+Eigen::Vector2d Builder::corner(const std::vector<ChainNode>& nodes, std::size_t k, bool is_closed) {
+    const std::size_t n = nodes.size();
+    const ChainNode& a = nodes[k];
+    const ChainNode& b = nodes[(k + 1) % n];
     const Eigen::Vector2d pb = a.q + difference(r, a.q, b.q);
     const Eigen::Vector2d mid = 0.5 * (a.q + pb);
-    Eigen::Vector2d guess = mid;
-    const double det = a.normal.x() * b.normal.y() - a.normal.y() * b.normal.x();
-    if (std::abs(det) > 0.2) {
+    auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& w) { return u.x() * w.y() - u.y() * w.x(); };
+    auto crossing = [&](const Eigen::Vector2d& na, const Eigen::Vector2d& nb) {
         Eigen::Matrix2d m;
-        m << a.normal.x(), a.normal.y(), b.normal.x(), b.normal.y();
-        const Eigen::Vector2d x = m.inverse() * Eigen::Vector2d(a.normal.dot(a.q), b.normal.dot(pb));
-        if ((x - mid).cwiseQuotient(cell()).norm() < 1.5) guess = x;
+        m << na.x(), na.y(), nb.x(), nb.y();
+        return Eigen::Vector2d(m.inverse() * Eigen::Vector2d(na.dot(a.q), nb.dot(pb)));
+    };
+    auto near = [&](const Eigen::Vector2d& x, const Eigen::Vector2d& na, const Eigen::Vector2d& nb, bool loose) {
+        const Eigen::Vector2d off = (x - mid).cwiseQuotient(cell());
+        return (loose && off.norm() < 1.5) ||
+               (off.lpNorm<Eigen::Infinity>() < 4 && on_tangents(a.q, na, x) && on_tangents(pb, nb, x));
+    };
+    if (std::abs(cross(a.normal, b.normal)) > 0.2) {
+        const Eigen::Vector2d x = crossing(a.normal, b.normal);
+        return project(near(x, a.normal, b.normal, true) ? x : mid, a.normal + b.normal);
     }
-    return project(guess, a.normal + b.normal);
+    // The secant from the run's point a cell or two back (at most 4 points) to the run's end.
+    auto secant = [&](std::size_t from, int step, const Eigen::Vector2d& normal) -> std::optional<Eigen::Vector2d> {
+        std::size_t j = from;
+        for (int s = 0; s < 4; ++s) {
+            if (!is_closed && ((step < 0 && j == 0) || (step > 0 && j + 1 == n))) break;
+            const std::size_t next = (j + n + static_cast<std::size_t>(step > 0 ? 1 : n - 1)) % n;
+            if (next == from || nodes[next].point < 0 || nodes[next].join || !(nodes[next].qual == nodes[from].qual)) break;
+            j = next;
+            if (difference(r, nodes[from].q, nodes[j].q).cwiseQuotient(cell()).norm() >= 2) break;
+        }
+        const Eigen::Vector2d d = difference(r, nodes[from].q, nodes[j].q);
+        if (d.cwiseQuotient(cell()).norm() < 0.5) return std::nullopt;
+        Eigen::Vector2d s(-d.y(), d.x());
+        s.normalize();
+        return s.dot(normal) < 0 ? Eigen::Vector2d(-s) : s;
+    };
+    const auto sa = secant(k, -1, a.normal), sb = secant((k + 1) % n, 1, b.normal);
+    if (sa && sb && std::abs(cross(*sa, *sb)) > 0.2) {
+        const Eigen::Vector2d x = crossing(*sa, *sb);
+        if (near(x, *sa, *sb, false)) return project(x, *sa + *sb);
+    }
+    return project(mid, a.normal + b.normal);
+}
+
+// Whether the boundary follows the tangent line from boundary point p (normal n) to x: at the
+// middle, a fiftieth of a cell along n is free and as far against it blocked. The tip of a
+// blocked needle thinner than a cell lies further from the last crossings the grid sees than a
+// cell or so; its two sides, straight near the tip, say where it is.
+bool Builder::on_tangents(const Eigen::Vector2d& p, const Eigen::Vector2d& n, const Eigen::Vector2d& x) {
+    const double scaled = n.cwiseQuotient(cell()).norm();
+    if (!(scaled > 0)) return false;
+    const Eigen::Vector2d o = n * (0.02 / scaled), m = 0.5 * (p + x);
+    return in_domain(m + o) && in_domain(m - o) && !blocked(m + o) && blocked(m - o);
 }
 
 // A run of a normal with a zero component (e.g. (0 +)) shorter than half a grid cell, between
@@ -119,7 +203,7 @@ void Builder::insert_normal_joins(std::size_t c) {
         const auto& a = nodes[k];
         const auto& b = nodes[(k + 1) % n];
         if (a.qual == b.qual || b.join) continue;
-        const Eigen::Vector2d q = corner(a, b);
+        const Eigen::Vector2d q = corner(nodes, k, closed[c]);
         const PlaceId j = add_join(JoinKind::normal_change, q, {a.qual, b.qual});
         // Def 29: concave if the CSEG beyond the join lies in the half plane of this side's normal.
         v.places[j.value].concave = difference(r, q, b.q).dot(a.normal) > 0;

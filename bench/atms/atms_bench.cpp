@@ -20,6 +20,7 @@
 // stdout is line buffered, so a run piped into a file or `tee` shows each row when it is done.
 // Usage: atms_bench [--quick]   (--quick: fewer repetitions, smaller sizes, N up to 10)
 #include "atms/atms.hpp"
+#include "queens.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -32,6 +33,8 @@
 #include <vector>
 
 using namespace qm::atms;
+using qm::atms::bench::Queens;
+using qm::atms::bench::queens_plain;
 using Clock = std::chrono::steady_clock;
 
 namespace {
@@ -182,27 +185,6 @@ void theory_row(int reps, F&& build) {
 }
 
 // ---- 2. N-queens on the ATMS -------------------------------------------------------------------
-struct Queens {
-    Atms atms;
-    std::vector<std::vector<AssumptionId>> rows;
-    explicit Queens(int n) : rows(static_cast<std::size_t>(n)) {
-        std::vector<NodeId> node(static_cast<std::size_t>(n * n));
-        for (int r = 0; r < n; ++r)
-            for (int c = 0; c < n; ++c) {
-                const NodeId q = atms.add_assumption(DatumId{static_cast<std::uint32_t>(r * n + c)});
-                node[static_cast<std::size_t>(r * n + c)] = q;
-                rows[static_cast<std::size_t>(r)].push_back(*atms.assumption_of(q));
-            }
-        for (int r1 = 0; r1 < n; ++r1)
-            for (int c1 = 0; c1 < n; ++c1)
-                for (int r2 = r1 + 1; r2 < n; ++r2)
-                    for (int c2 = 0; c2 < n; ++c2)
-                        if (c1 == c2 || std::abs(r1 - r2) == std::abs(c1 - c2))
-                            atms.add_nogood(InformantId{0}, {node[static_cast<std::size_t>(r1 * n + c1)],
-                                                             node[static_cast<std::size_t>(r2 * n + c2)]});
-    }
-};
-
 std::size_t queens_atms(int n) {
     Queens q(n);
     return q.atms.interpretations(q.rows).size();
@@ -214,18 +196,6 @@ std::size_t queens_streaming(int n) {
                                           [](const Environment&) { return true; });
 }
 
-// ---- the floor: bitmask backtracking -------------------------------------------------------------
-std::size_t queens_plain(int n, int row, std::uint32_t cols, std::uint32_t d1, std::uint32_t d2) {
-    if (row == n) return 1;
-    std::size_t count = 0;
-    std::uint32_t free = ~(cols | d1 | d2) & ((1U << n) - 1);
-    while (free != 0) {
-        const std::uint32_t bit = free & (~free + 1);
-        free ^= bit;
-        count += queens_plain(n, row + 1, cols | bit, (d1 | bit) << 1, (d2 | bit) >> 1);
-    }
-    return count;
-}
 }  // namespace
 
 int main(int argc, char** argv) {

@@ -75,9 +75,11 @@ struct Builder {
 
     void make_chains(const std::vector<BoundaryChain>& traced);
     void absorb_short_runs(std::vector<ChainNode>& nodes, bool is_closed);
+    void adopt_neighbour_normals(std::vector<ChainNode>& nodes, const std::vector<int>& points, bool is_closed);
     void insert_normal_joins(std::size_t c);
     void collapse_point_runs(std::size_t c);
-    Eigen::Vector2d corner(const ChainNode& a, const ChainNode& b);
+    Eigen::Vector2d corner(const std::vector<ChainNode>& nodes, std::size_t k, bool is_closed);
+    bool on_tangents(const Eigen::Vector2d& p, const Eigen::Vector2d& n, const Eigen::Vector2d& x);
     bool duplicate(const Division& d) const;
     void grow_fsds();
     bool runs_along_boundary(const Division& d, const CSpaceAxis& ax);

@@ -82,7 +82,7 @@ TEST_CASE("alex/granularity: a tall stack is analysed per situation by default, 
     CHECK(automatic->situations()[0].stable);
 
     const alex::ObjectId top = *scene->find_object("b24");
-    alex::QueryFact q{alex::QueryFact::Kind::translational_motion, top, {alex::Sign::zero, alex::Sign::minus}, {}, {}};
+    alex::QueryFact q{alex::QueryFact::Kind::translational_motion, top, {alex::Sign::zero, alex::Sign::minus}, {}, {}, {}};
     auto coarse = automatic->why(q, 1, d);
     REQUIRE(coarse.has_value());
     CHECK(coarse->status == alex::WhyAnswer::Status::ruled_out);

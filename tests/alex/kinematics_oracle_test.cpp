@@ -748,6 +748,8 @@ void add_given_motions(Random& rnd, Group& grp, const Scene& scene, const oracle
         const oracle::Freedoms f = laws.freedom(scene.situations[k]);
         for (std::size_t n = rnd.chance(20) ? 2 : 1; n > 0; --n) {
             const std::size_t o = rnd.below(grp.objects.size());
+            // One Motion per object and situation: a second is an input error (scene checker).
+            const bool given = std::any_of(grp.motions[k].begin(), grp.motions[k].end(), [&](const Group::Given& g) { return g.object == o; });
             Group::Given m{o, {}, {}};
             if (rnd.chance(75)) {
                 const auto ts = free_list(laws.translations(), f.trans_constrained[o]);
@@ -758,7 +760,7 @@ void add_given_motions(Random& rnd, Group& grp, const Scene& scene, const oracle
                 m.translation = rnd.direction(scene.translation_arity());
                 m.rotation = rnd.direction(scene.rotation_arity());
             }
-            grp.motions[k].push_back(std::move(m));
+            if (!given) grp.motions[k].push_back(std::move(m));
         }
     }
 }

@@ -417,7 +417,7 @@ TEST_CASE("alex/scene_parser: situations in braces (Figure 7.2) in both notation
     CHECK(read_ok(kw + "Forces : a (0 -) (0 0) w Situations : {} {Contact(p q)}") == forced);
     CHECK(first_error(kw + "Situations {Contact(p q) Contact(q p)}") == "4:26 expected ',' or '}' but found 'Contact'");
     CHECK(first_error(kw + "Situations {Contact(p q),}") ==
-          "4:25 expected ',' or '}' but found ','");
+          "4:26 expected a situation descriptor (Contact, Force or Motion) but found '}'");
     CHECK(first_error(kw + "Situations") ==
           "4:11 expected a situation in braces like {} or {Contact(a b), Contact(c d)} but found end of input");
     CHECK(first_error(sx + "Situations") ==

@@ -6,6 +6,7 @@
 #include "random_theory.hpp"
 #include <doctest/doctest.h>
 #include <map>
+#include <stdexcept>
 
 using namespace qm::atms;
 using namespace qm::atms::test;
@@ -175,4 +176,48 @@ TEST_CASE("atms/consumer: registration errors") {
     CHECK_THROWS_AS(atms.on_first_label(atms.contradiction(), [](NodeId) {}), qm::InternalError);
     CHECK_THROWS_AS(atms.on_first_label(NodeId{99}, [](NodeId) {}), qm::InternalError);
     CHECK_THROWS_AS(atms.on_first_label(atms.add_node(DatumId{0}), nullptr), qm::InternalError);
+}
+
+TEST_CASE("atms/consumer: a consumer removed by another's callback gets no more events") {
+    // The consumer list is snapshotted per event; one removed (and destroyed) meanwhile must be
+    // skipped, not called through a dangling pointer.
+    Atms atms;
+    const NodeId a = atms.add_assumption(DatumId{0});
+    const NodeId x = atms.add_node(DatumId{0});
+    Recorder second;
+    second.atms = &atms;
+    struct Remover : Consumer {
+        Atms* atms = nullptr;
+        Consumer* victim = nullptr;
+        void label_became_nonempty(NodeId) override {
+            if (victim) atms->remove_consumer(*victim);
+            victim = nullptr;
+        }
+        void environment_became_nogood(EnvId) override {}
+    } first;
+    first.atms = &atms;
+    first.victim = &second;
+    atms.add_consumer(first);
+    atms.add_consumer(second);
+    atms.justify(InformantId{0}, {a}, x);
+    CHECK(second.filled.empty());
+}
+
+TEST_CASE("atms/consumer: a throwing on_first_label callback loses none of the others") {
+    Atms atms;
+    const NodeId a = atms.add_assumption(DatumId{0});
+    const NodeId x = atms.add_node(DatumId{0});
+    std::vector<int> ran;
+    atms.on_first_label(x, [&](NodeId) { ran.push_back(1); });
+    atms.on_first_label(x, [&](NodeId) {
+        ran.push_back(2);
+        throw std::runtime_error("callback failed");
+    });
+    atms.on_first_label(x, [&](NodeId) { ran.push_back(3); });
+    CHECK_THROWS_AS(atms.justify(InformantId{0}, {a}, x), std::runtime_error);
+    CHECK(ran == std::vector<int>{1, 2});
+    const NodeId b = atms.add_assumption(DatumId{0});  // any later call delivers the rest, once
+    (void)b;
+    atms.justify(InformantId{0}, {b}, x);
+    CHECK(ran == std::vector<int>{1, 2, 3});
 }

@@ -4,6 +4,7 @@
 
 #include "atms/atms.hpp"
 #include <algorithm>
+#include <bit>
 #include <cstdlib>
 #include <doctest/doctest.h>
 #include <random>
@@ -21,7 +22,13 @@ std::uint64_t mask_of(const Environment& e) {
 void brute_force(const std::vector<std::vector<AssumptionId>>& sets, std::size_t depth, std::uint64_t acc,
                  const std::vector<std::uint64_t>& nogoods, std::vector<std::uint64_t>& out) {
     if (depth == sets.size()) {
-        if (std::none_of(nogoods.begin(), nogoods.end(), [&](std::uint64_t n) { return (n & acc) == n; }) &&
+        // Exactly one member of every set, counting what the base holds.
+        const bool one_each = std::all_of(sets.begin(), sets.end(), [&](const std::vector<AssumptionId>& set) {
+            std::uint64_t mask = 0;
+            for (AssumptionId a : set) mask |= std::uint64_t{1} << a.value;
+            return std::popcount(acc & mask) == 1;
+        });
+        if (one_each && std::none_of(nogoods.begin(), nogoods.end(), [&](std::uint64_t n) { return (n & acc) == n; }) &&
             std::find(out.begin(), out.end(), acc) == out.end())
             out.push_back(acc);
         return;
@@ -206,4 +213,21 @@ TEST_CASE("atms/interpretations: enumerate_interpretations works on a bare nogoo
     });
     CHECK(n == 3);
     CHECK(seen == std::vector<std::uint64_t>{0b1001, 0b0110, 0b1010});
+}
+
+TEST_CASE("atms/interpretations: a base that picks from a set keeps that pick, and two picks give none") {
+    // Without the mutual-exclusion nogoods a rule engine would add, the search itself must keep
+    // exactly one member per set: base {a} over {a, b} is {a} alone, never {a, b}.
+    Atms atms;
+    std::vector<AssumptionId> ids;
+    for (std::uint32_t i = 0; i < 4; ++i) ids.push_back(*atms.assumption_of(atms.add_assumption(DatumId{i})));
+    const std::vector<std::vector<AssumptionId>> sets{{ids[0], ids[1]}, {ids[2], ids[3]}};
+    const auto with_a = atms.interpretations(sets, atms.environment({ids[0]}));
+    REQUIRE(with_a.size() == 2);
+    for (EnvId e : with_a) {
+        CHECK(atms.env(e).contains(ids[0]));
+        CHECK(!atms.env(e).contains(ids[1]));
+    }
+    CHECK(atms.interpretations(sets, atms.environment({ids[0], ids[1]})).empty());
+    CHECK(atms.interpretations(sets, atms.environment({ids[0], ids[3]})).size() == 1);
 }

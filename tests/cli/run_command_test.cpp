@@ -256,6 +256,11 @@ TEST_CASE("cli/run_command: --why prints the justification tree, or the nogoods 
     CHECK(none.status == 0);
     CHECK(none.out == "(ajar c) is not a fact of this program (no rule concludes it)\n");
     // The bundled polybox: (value f 12) is excluded by both of de Kleer and Williams' conflicts.
+    // The `not` conditions a firing relied on are shown after it, under its binding.
+    Result birds = qm_atms("run " + scenario("birds.rules") + " --why '(flies tweety)'");
+    CHECK(birds.status == 0);
+    CHECK(birds.out.find("    (flies tweety) <= rule birds-fly-unless-penguins at " + scenario("birds.rules") +
+                         ":16 {?b = tweety}: (bird tweety)\n      and not (penguin tweety)\n") != std::string::npos);
     Result poly = qm_atms("run " + scenario("polybox.rules") + " --why '(value f 12)'");
     CHECK(poly.status == 0);
     CHECK(poly.out.find("(value f 12) is ruled out") == 0);
@@ -321,12 +326,13 @@ std::string joined(const Json& list, const char* sep) {
 TEST_CASE("cli/run_command: --why with --json gives the explanation as JSON, step for step the text form") {
     std::string held = write_temp("cli_why_json.rules",
                                   "fact (edge a b)\nfact (edge b c)\nassume (open b)\nassume (shut b)\n\n"
+                                  "rule a-is-start\n  when (edge ?x ?y) not (edge ?w ?x)\n  then (start ?x)\n\n"
                                   "rule path-1\n  when (edge ?x ?y)\n  then (path ?x ?y)\n\n"
                                   "rule path-2\n  when (path ?x ?y) (edge ?y ?z) (open ?y)\n  then (path ?x ?z)\n\n"
                                   "rule path-3\n  when (path ?x ?y) (edge ?y ?z) (shut ?y)\n  then (path ?x ?z)\n\n"
                                   "rule door\n  when (open ?d) (shut ?d)\n  then (ajar ?d)\n\n"
                                   "rule exclusive\n  when (open ?d) (shut ?d)\n  then false\n");
-    for (const char* fact : {"(path a c)", "(ajar b)", "(path a b)"}) {
+    for (const char* fact : {"(path a c)", "(ajar b)", "(path a b)", "(start a)"}) {
         CAPTURE(fact);
         Result text = qm_atms("run " + held + " --why '" + fact + "'");
         Result json = qm_atms("run " + held + " --why '" + fact + "' --json");
@@ -346,11 +352,12 @@ TEST_CASE("cli/run_command: --why with --json gives the explanation as JSON, ste
             REQUIRE(d.keys == std::vector<std::string>{"environment", "steps"});
             rebuilt += std::string(status == "holds" ? "  in {" : "  nogood {") + joined(d.items[0], ", ") + "}:\n";
             for (const Json& step : d.items[1].items) {
-                REQUIRE(step.keys == std::vector<std::string>{"fact", "informant", "binding", "antecedents"});
+                REQUIRE(step.keys == std::vector<std::string>{"fact", "informant", "binding", "antecedents", "not"});
                 rebuilt += "    " + step.items[0].text + " <= " + step.items[1].text;
                 if (!step.items[2].items.empty()) rebuilt += " {" + joined(step.items[2], ", ") + "}";
                 if (!step.items[3].items.empty()) rebuilt += ": " + joined(step.items[3], ", ");
                 rebuilt += "\n";
+                for (const Json& absent : step.items[4].items) rebuilt += "      and not " + absent.text + "\n";
             }
         }
         CHECK(rebuilt == text.out);

@@ -319,8 +319,128 @@ TEST_CASE("cli/scene_command: interactive errors name the command, and whatif ch
     CHECK(r.err.find("--why") == std::string::npos);
     CHECK(r.err.find("whatif:1:1: error: expected a contact or force of situation 1 to take away, but it has no "
                      "force on 'driver'") != std::string::npos);
-    CHECK(r.err.find("whatif:1:1: error: expected 'Contact A B' or 'Force OBJ' to take away, but found "
+    CHECK(r.err.find("whatif:1:1: error: expected 'Contact A B' or 'Force OBJ [CAUSE]' to take away, but found "
                      "'Rotational-Motion (driver (+))'") != std::string::npos);
     CHECK(r.err.find("boost") == std::string::npos);
     CHECK(r.out.find("9 consistent combinations") != std::string::npos);  // the last whatif still answers
+}
+
+// Regressions found by audit 5 (--why's reasons and responsible sets, corner contacts, duplicate
+// motions, --without's note, whole JSON entries as queries).
+TEST_CASE("cli/scene_command: --why lists the argument's reasons, the same in text and JSON") {
+    const std::string args = scene("recoil_escapement.def") + " --situation 2 --why 'Rotational-Motion (gear (+))'";
+    Result text = qm_atms(args);
+    Result json = qm_atms(args + " --json");
+    REQUIRE(text.status == 0);
+    REQUIRE(json.status == 0);
+    auto w = Json::parse(json.out);
+    REQUIRE(w.has_value());
+    const auto& exclusions = (*w)["exclusions"].array();
+    // Before: 21 reasons, exclusions[0] a pin of the scape wheel's translation resting on nothing.
+    CHECK(exclusions.size() <= 6);
+    REQUIRE_FALSE(exclusions.empty());
+    REQUIRE(exclusions[0]["responsible"].array().size() == 1);
+    CHECK(exclusions[0]["responsible"].array()[0].string() == "Contact (s-w-b-3 gear-top-3)");
+    for (const auto& x : exclusions) CHECK_FALSE(x["responsible"].array().empty());
+    std::size_t reasons = 0;
+    for (std::size_t at = text.out.find("  Reason "); at != std::string::npos; at = text.out.find("  Reason ", at + 1)) ++reasons;
+    CHECK(reasons == exclusions.size());
+    CHECK(text.out.find("  Reason 1: resting on {Contact (s-w-b-3 gear-top-3)}") != std::string::npos);
+    CHECK(text.out.find("the scene's description alone (no contact") == std::string::npos);
+    CHECK(text.out.find("every translation of scape-wheel but (0 0)") != std::string::npos);
+    CHECK((*w)["responsible_minimal"].boolean());
+
+    Result given = qm_atms(scene("gears.def") + " --given 'driver (0 0) (-)' --why 'Rotational-Motion (follower (-))'");
+    CHECK(given.out.find("  Reason 3:") != std::string::npos);
+    CHECK(given.out.find("  Reason 4:") == std::string::npos);  // before: 11
+}
+
+TEST_CASE("cli/scene_command: --why's responsible sets are the minimal ones, and say so") {
+    Result r = qm_atms(scene("wedge_ramp.def") + " --why 'Translational-Motion (wedge (0 0))'");
+    REQUIRE(r.status == 0);
+    CHECK(r.out.find("  Responsible (contacts, forces and given motions; the minimal sets, each suffices):\n"
+                     "    {Force (wedge (0 -) (0 0))}\n"
+                     "    {Contact (bl-b-l w-t-l), Force (block (0 -) (0 0))}\n"
+                     "    {Contact (bl-b-r w-t-r), Force (block (0 -) (0 0))}\n") != std::string::npos);
+    // The audit's check: without the block's force and its left contact the wedge still slides.
+    Result without = qm_atms(scene("wedge_ramp.def") + " --without 'Force block' --without 'Contact bl-b-l w-t-l'");
+    CHECK(without.out.find("Translational-Motion (wedge (+ -))") != std::string::npos);
+}
+
+TEST_CASE("cli/scene_command: a contact the laws cannot use is warned about, located, and --why says so") {
+    const std::string bad = std::string(QM_BINARY_DIR) + "/scene_cli_corner_bad.def";
+    std::ofstream(bad) << "(Defscenario 2 cb\n"
+                          "  Individuals (upper lower)\n"
+                          "  Descriptions ((rigid-ob upper) (rigid-ob lower))\n"
+                          "  Surfaces ((upper (c (+ -) (- +)) (d (- -) (+ +))) (lower (a (- +) (+ -)) (b (- -) (+ +))))\n"
+                          "  Corners ((upper (tip c d (0 +))))\n"
+                          "  Translational-Constraints ((lower (?x ?y)))\n"
+                          "  Rotational-Constraints ((lower (?r)))\n"
+                          "  Forces ((upper (0 -) (0 0))))\n"
+                          "(Defstates ((Contact tip b)))\n";
+    Result r = qm_atms(bad);
+    CHECK(r.status == 0);
+    CHECK(r.err.find("scene_cli_corner_bad.def:9:14: warning: Contact (tip b) in situation 1 constrains and pushes "
+                     "nothing") != std::string::npos);
+    CHECK(r.err.find("Definition 25") != std::string::npos);
+    Result json = qm_atms(bad + " --json");
+    CHECK(json.err.find("warning: Contact (tip b)") != std::string::npos);
+    Result why = qm_atms(bad + " --why 'Translational-Motion (upper (0 -))'");
+    CHECK(why.out.find("scene_cli_corner_bad.def:9: Contact (tip b) in situation 1 constrains and pushes nothing") !=
+          std::string::npos);
+    // The thesis' corner scene has no such contact.
+    CHECK(qm_atms(scene("corner_contacts.def")).err.empty());
+}
+
+TEST_CASE("cli/scene_command: one given motion per object; --given replaces a scene's Motion") {
+    Result twice = qm_atms(scene("gears.def") + " --given 'driver (0 0) (-)' --given 'driver (0 0) (+)'");
+    CHECK(twice.status == 2);
+    CHECK(twice.err.find("--given:1:1: error: expected one --given per object, but 'driver' is given twice") == 0);
+    Result over = qm_atms(scene("recoil_escapement.def") + " --situation 2 --given 'pallet (0 0) (-)'");
+    CHECK(over.status == 0);
+    CHECK(over.err.find("recoil_escapement.def:16:64: note: --given 'pallet (0 0) (-)' replaces this Motion "
+                        "(pallet (0 0) (+)) in situation 2") != std::string::npos);
+    CHECK(over.out.find("Rotational-Motion (pallet (-))") != std::string::npos);
+    CHECK(over.out.find("Motions: 0") == std::string::npos);
+    // Interactive: the same replacement, said in a note.
+    Result i = qm_atms(scene("recoil_escapement.def") + " -i", "situation 2\ngiven pallet (0 0) (-)\n");
+    CHECK(i.out.find("Note: the given motion of pallet replaces Motion (pallet (0 0) (+))") != std::string::npos);
+}
+
+TEST_CASE("cli/scene_command: --without says what it took away; 'Force OBJ CAUSE' takes one cause's force") {
+    Result r = qm_atms(scene("wedge_ramp.def") + " --without 'Force block'");
+    CHECK(r.out.find("  Note: what-if: analysed without every force on 'block' (--without)\n") != std::string::npos);
+    const std::string wind = std::string(QM_BINARY_DIR) + "/scene_cli_wind.def";
+    std::ofstream(wind) << "(Defscenario 2 wind\n"
+                           "  Individuals (boulder table)\n"
+                           "  Surfaces ((boulder (bo-b (0 -) (0 +))) (table (tb (0 +) (0 0))))\n"
+                           "  Translational-Constraints ((table (?x ?y)))\n"
+                           "  Rotational-Constraints ((table (?r)))\n"
+                           "  Forces ((boulder (0 -) (0 0) gravity)))\n"
+                           "(Defstates ((Contact bo-b tb) (Force boulder (+ 0) (0 0) wind)))\n";
+    Result calm = qm_atms(wind + " --json --without 'Force boulder wind'");
+    REQUIRE(calm.status == 0);
+    auto doc = Json::parse(calm.out);
+    REQUIRE(doc.has_value());
+    // Gravity stays: the boulder rests on the table.
+    CHECK((*doc)["situations"].array()[0]["stable"].boolean());
+    CHECK(calm.err.find("without the force of cause 'wind' on 'boulder'") != std::string::npos);
+    Result none = qm_atms(wind + " --without 'Force boulder breeze'");
+    CHECK(none.status == 2);
+    CHECK(none.err.find("--without:1:15: error: no force on 'boulder' has the cause 'breeze'") == 0);
+}
+
+TEST_CASE("cli/scene_command: a whole motion entry of the JSON output as a query is refused helpfully") {
+    Result r = qm_atms(scene("block.def") + R"q( --why '{"block": {"translation": "(0 -)", "rotation": "(0)"}}')q");
+    CHECK(r.status == 2);
+    CHECK(r.err.find("--why:1:34: error: expected '}' but found ',': a query asks about one motion at a time, e.g. "
+                     "{\"block\": {\"translation\": \"(0 -)\"}}; ask about the rotation in a query of its own") == 0);
+}
+
+TEST_CASE("cli/scene_command: --why about a consistent motion the --limit cut off is an error, not 'ruled out'") {
+    // Gears: 6 consistent pairs; with --limit 1 only (driver +, follower +) is listed.
+    Result r = qm_atms(scene("gears.def") + " --limit 1 --why 'Rotational-Motion (follower (-))'");
+    CHECK(r.status == 2);
+    CHECK(r.err.find("--why:1:1: error: cannot tell whether Rotational-Motion (follower (-)) is predicted") == 0);
+    CHECK(qm_atms(scene("gears.def") + " --why 'Rotational-Motion (follower (-))'").out.find("holds") != std::string::npos);
 }

@@ -64,3 +64,27 @@ TEST_CASE("engine/builtin_registry: range generates a set; errors are reported, 
     // Comparison of different kinds follows the table's total order: integers before symbols.
     CHECK(apply(v, "<", {v.integer(9), v.symbol("a")}).holds);
 }
+
+TEST_CASE("engine/builtin_registry: range is exact at both ends of the 64-bit integers, and capped") {
+    ValueTable v;
+    // Stepping up to INT64_MAX used to overflow ++i (undefined; in practice a loop that never ends).
+    auto top = apply(v, "range", {v.integer(INT64_MAX - 2), v.integer(INT64_MAX)});
+    REQUIRE(top.value.has_value());
+    CHECK(v.print(*top.value) == "{9223372036854775805 9223372036854775806 9223372036854775807}");
+    auto one = apply(v, "range", {v.integer(INT64_MAX), v.integer(INT64_MAX)});
+    REQUIRE(one.value.has_value());
+    CHECK(v.value(*one.value).elements.size() == 1);
+    auto bottom = apply(v, "range", {v.integer(INT64_MIN), v.integer(INT64_MIN + 1)});
+    REQUIRE(bottom.value.has_value());
+    CHECK(v.value(*bottom.value).elements.size() == 2);
+    // hi - lo does not fit in 64 bits: refused, not wrapped.
+    CHECK(apply(v, "range", {v.integer(INT64_MIN), v.integer(INT64_MAX)}).error ==
+          "'range' would have more than 100000 elements");
+    CHECK(!apply(v, "range", {v.integer(-1), v.integer(INT64_MAX)}).error.empty());
+    CHECK(v.print(*apply(v, "range", {v.integer(INT64_MAX), v.integer(INT64_MIN)}).value) == "{}");
+    // The cap is exact: 100000 elements are fine, 100001 are not.
+    auto cap = apply(v, "range", {v.integer(INT64_MAX - 99999), v.integer(INT64_MAX)});
+    REQUIRE(cap.value.has_value());
+    CHECK(v.value(*cap.value).elements.size() == 100000);
+    CHECK(!apply(v, "range", {v.integer(INT64_MAX - 100000), v.integer(INT64_MAX)}).error.empty());
+}

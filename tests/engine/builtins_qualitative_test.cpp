@@ -4,6 +4,7 @@
 // signs), Open-Half-Plane is sound for real dot products, Rotate-90 agrees with the real rotation
 // matrix, nearness follows Def 38's classes.
 #include "engine/builtin_registry.hpp"
+#include <algorithm>
 #include <doctest/doctest.h>
 #include <random>
 #include <set>
@@ -151,9 +152,13 @@ TEST_CASE("engine/builtins_qualitative: vector sums, negation, direction sets, n
     CHECK(values.value(*apply("rotations", {values.integer(3)}).value).elements.size() == 27);
     CHECK(text(apply("zero-rotation", {values.integer(2)})) == "(0)");
     CHECK(text(apply("zero-translation", {values.integer(3)})) == "(0 0 0)");
-    CHECK(!apply("translations", {values.integer(4)}).error.empty());
+    CHECK(!apply("translations", {values.integer(9)}).error.empty());
     CHECK(apply("zero?", {dir("00")}).holds);
     CHECK(apply("nonzero?", {dir("0-")}).holds);
+    // An ambiguous component is not known to be 0: (?) is nonzero, as docs/RULES.md says.
+    CHECK(apply("nonzero?", {dir("?")}).holds);
+    CHECK(apply("nonzero?", {dir("?0")}).holds);
+    CHECK(!apply("zero?", {dir("?")}).holds);
     // Def 38 ranks relative to v = (+ 0).
     CHECK(text(apply("nearness", {dir("+0"), dir("+0")})) == "0");
     CHECK(text(apply("nearness", {dir("+0"), dir("++")})) == "1");
@@ -220,4 +225,116 @@ TEST_CASE("engine/builtins_qualitative: components of a direction") {
     CHECK(!apply("with-component", {dir("+0"), values.integer(1), dir("+-")}).error.empty());
     CHECK(!apply("with-component", {dir("+0"), values.integer(-1), dir("+")}).error.empty());
     CHECK(!apply("components", {values.integer(2)}).error.empty());
+}
+
+namespace {
+// The former implementation of nearness, kept as the oracle: Def 38 for a definite v, and for an
+// ambiguous v the minimum over the explicit list of its 3^k resolutions.
+std::string oracle_neg(std::string v) {
+    for (char& c : v) c = c == '+' ? '-' : c == '-' ? '+' : c;
+    return v;
+}
+char oracle_dot(const std::string& a, const std::string& b) {
+    auto sum = [](char x, char y) { return x == '0' ? y : y == '0' ? x : (x == '?' || y == '?') ? '?' : x == y ? x : '?'; };
+    auto product = [](char x, char y) { return (x == '0' || y == '0') ? '0' : (x == '?' || y == '?') ? '?' : x == y ? '+' : '-'; };
+    char s = '0';
+    for (std::size_t i = 0; i < a.size(); ++i) s = sum(s, product(a[i], b[i]));
+    return s;
+}
+int oracle_nearness(const std::string& v, const std::string& x) {
+    if (x == v) return 0;
+    if (x == oracle_neg(v)) return 5;
+    if (x.find_first_not_of('0') == std::string::npos) return 2;
+    if (oracle_dot(v, x) == '+') return 1;
+    if (oracle_dot(oracle_neg(v), x) == '+') return 4;
+    return 3;
+}
+int oracle_nearness_resolved(const std::string& v, const std::string& x) {
+    std::vector<std::string> resolutions{""};
+    for (char c : v) {
+        std::vector<std::string> next;
+        for (const auto& p : resolutions)
+            for (char s : {'+', '0', '-'})
+                if (c == '?' || c == s) next.push_back(p + s);
+        resolutions = std::move(next);
+    }
+    int best = 5;
+    for (const auto& r : resolutions) best = std::min(best, oracle_nearness(r, x));
+    return best;
+}
+std::vector<std::string> all_sign_strings(std::size_t n) {  // over + 0 - ?, both arguments may be ambiguous
+    std::vector<std::string> out{""};
+    for (std::size_t i = 0; i < n; ++i) {
+        std::vector<std::string> next;
+        for (const auto& p : out)
+            for (char c : {'+', '0', '-', '?'}) next.push_back(p + c);
+        out = std::move(next);
+    }
+    return out;
+}
+}  // namespace
+
+TEST_CASE("engine/builtins_qualitative: nearness equals the minimum over the listed resolutions, dimension <= 4") {
+    std::size_t pairs = 0;
+    for (std::size_t n = 1; n <= 4; ++n) {
+        const auto all = all_sign_strings(n);
+        for (const auto& v : all)
+            for (const auto& x : all) {
+                auto r = apply("nearness", {dir(v), dir(x)});
+                REQUIRE(r.value.has_value());
+                if (values.value(*r.value).integer != oracle_nearness_resolved(v, x)) {
+                    CAPTURE(v);
+                    CAPTURE(x);
+                    CHECK(values.value(*r.value).integer == oracle_nearness_resolved(v, x));
+                }
+                ++pairs;
+            }
+    }
+    CHECK(pairs == 16 + 256 + 4096 + 65536);
+}
+
+TEST_CASE("engine/builtins_qualitative: nearness of a direction with many `?` needs no enumeration") {
+    // 3^22 resolutions used to be listed (bad_alloc); every resolution of (? ... ?) includes x itself.
+    const std::string many(22, '?'), plus(22, '+'), minus(22, '-');
+    CHECK(text(apply("nearness", {dir(many), dir(plus)})) == "0");
+    CHECK(text(apply("nearness", {dir(many), dir(std::string(22, '0'))})) == "0");
+    // The first component makes the dot product - or ?: the nearest resolution is 3 (a ? dot product).
+    CHECK(text(apply("nearness", {dir("+" + std::string(40, '?')), dir("-" + std::string(40, '+'))})) == "3");
+    // An ambiguous x is never equal to a resolution; zeros elsewhere leave a + dot product: 1.
+    CHECK(text(apply("nearness", {dir("+" + std::string(40, '?')), dir("+" + std::string(40, '?'))})) == "1");
+    CHECK(text(apply("nearness", {dir(std::string(60, '?')), dir(std::string(59, '?') + "+")})) == "1");
+    CHECK(text(apply("nearness", {dir(minus), dir(plus)})) == "5");
+}
+
+TEST_CASE("engine/builtins_qualitative: translations of any dimension 1..8 (Defs 1, 3); rotations in 2-D and 3-D only") {
+    auto count = [](const char* name, std::int64_t n) {
+        auto r = apply(name, {values.integer(n)});
+        REQUIRE(r.value.has_value());
+        return values.value(*r.value).elements.size();
+    };
+    CHECK(count("translations", 1) == 3);
+    CHECK(text(apply("translations", {values.integer(1)})) == "{(+) (-) (0)}");
+    CHECK(count("translations", 2) == 9);
+    CHECK(count("translations", 4) == 81);
+    CHECK(count("translations", 8) == 6561);
+    CHECK(text(apply("zero-translation", {values.integer(1)})) == "(0)");
+    CHECK(text(apply("zero-translation", {values.integer(4)})) == "(0 0 0 0)");
+    // Every 4-D direction once, each of four signs from + 0 -.
+    auto four = apply("translations", {values.integer(4)});
+    std::set<std::string> seen;
+    for (ValueId d : values.value(*four.value).elements) {
+        CHECK(values.value(d).text.size() == 4);
+        seen.insert(values.value(d).text);
+    }
+    CHECK(seen.size() == 81);
+    for (std::int64_t bad : {0, -1, 9, 64})
+        for (const char* name : {"translations", "zero-translation"})
+            CHECK(apply(name, {values.integer(bad)}).error ==
+                  std::string("'") + name + "' expects a dimension from 1 to 8, not " + std::to_string(bad));
+    for (std::int64_t bad : {1, 4})
+        for (const char* name : {"rotations", "zero-rotation"})
+            CHECK(apply(name, {values.integer(bad)}).error ==
+                  std::string("'") + name + "' expects the dimension 2 or 3 (rotations are defined only in the plane "
+                                            "and in space), not " + std::to_string(bad));
+    CHECK(!apply("translations", {values.symbol("two")}).error.empty());
 }

@@ -1,9 +1,13 @@
 // tests/engine/rule_errors_test.cpp: golden diagnostics. Every tests/engine/errors/NAME.rules is
-// loaded with load_program() (reader, checker, compiler, stratifier: the path `qm-atms run` takes)
-// and the printed diagnostics, with the directory stripped from file names, must equal NAME.err
-// exactly. One case per error class of docs/RULES.md "## Error messages". Setting
-// QM_WRITE_GOLDEN=1 rewrites the .err files (review the diff before committing).
+// loaded with load_program() (reader, checker, compiler, stratifier: the path `qm-atms run` takes);
+// a case that loads without error is an error found when running, so it is run by an Engine as
+// `qm-atms run` does, and its diagnostics get their source lines as there. The printed diagnostics,
+// with the directory stripped from file names, must equal NAME.err exactly. One case per error
+// class of docs/RULES.md "## Error messages". Setting QM_WRITE_GOLDEN=1 rewrites the .err files
+// (review the diff before committing).
+#include "engine/engine.hpp"
 #include "engine/rule_compiler.hpp"
+#include "engine/rule_parser_source.hpp"
 #include <doctest/doctest.h>
 #include <cstdlib>
 #include <filesystem>
@@ -35,11 +39,22 @@ TEST_CASE("engine/rule_errors: every golden case gives exactly its expected diag
         CAPTURE(entry.path().filename().string());
         qm::Diagnostics d;
         std::optional<LoadedProgram> p;
-        CHECK_NOTHROW(p = load_program(entry.path().lexically_normal().string(), d));
-        CHECK(!p.has_value());  // every case is an erroneous program
-        CHECK(d.has_errors());
+        const std::string file = entry.path().lexically_normal().string();
+        CHECK_NOTHROW(p = load_program(file, d));
+        qm::Diagnostics shown;
+        if (p.has_value()) {  // an error of the run: the program itself reads, checks and compiles
+            CHECK(!d.has_errors());
+            Engine e(std::move(p->program), std::move(p->values));
+            CHECK_NOTHROW(e.run(d));
+            SourceTexts texts;
+            texts.add(SourceText(file, slurp(file)));
+            texts.attach_lines(d, shown);
+        } else {
+            shown = d;
+        }
+        CHECK(shown.has_errors());  // every case is an erroneous program
         std::ostringstream printed;
-        d.print(printed);
+        shown.print(printed);
         std::string actual = strip(printed.str(), dir.lexically_normal().string() + "/");
         std::filesystem::path golden = entry.path();
         golden.replace_extension(".err");

@@ -78,3 +78,36 @@ TEST_CASE("engine/json_writer: the report has exactly the agreed shape and order
     CHECK(json.back() == '}');
     CHECK(json_string("a\"b\\c\n") == "\"a\\\"b\\\\c\\n\"");
 }
+
+TEST_CASE("engine/why: a step shows the `not` conditions its firing relied on, under its binding") {
+    // flies(?b) <- bird(?b), not penguin(?b), not owns(?b, ?x): ?x is local to its `not`.
+    ValueTable v;
+    const BuiltinRegistry& b = default_builtins();
+    CompiledProgram p;
+    p.premises.push_back(ground(v, "bird", {v.symbol("tweety")}));
+    p.rules.push_back(rule("flies", 2,
+                           {match(atom(v, "bird", {var(0)})), negation(atom(v, "penguin", {var(0)})),
+                            negation(atom(v, "owns", {var(0), var(1)})),
+                            negation(atom(v, "heading", {var(0), call(b, "neg", {constant(v.direction("+0"))})}))},
+                           {assert_atom(atom(v, "flies", {var(0)}))}));
+    Engine e(std::move(p), std::move(v));
+    qm::Diagnostics d;
+    e.run(d);
+    REQUIRE(!d.has_errors());
+    Why w = why(e, *e.find(e.values().symbol("flies"), std::vector<ValueId>{e.values().symbol("tweety")}));
+    REQUIRE(w.status == Why::Status::holds);
+    REQUIRE(w.derivations.size() == 1);
+    const WhyStep& last = w.derivations[0].steps.back();
+    CHECK(last.antecedents == std::vector<std::string>{"(bird tweety)"});
+    CHECK(last.absent == std::vector<std::string>{"(penguin tweety)", "(owns tweety ?v1)", "(heading tweety (- 0))"});
+    CHECK(w.derivations[0].steps.front().absent.empty());  // the premise relied on nothing
+    CHECK(print_why(w) == "(flies tweety) holds\n"
+                          "  in {}:\n"
+                          "    (bird tweety) <= premise at test.rules:1\n"
+                          "    (flies tweety) <= rule flies at test.rules:1 {?v0 = tweety}: (bird tweety)\n"
+                          "      and not (penguin tweety)\n"
+                          "      and not (owns tweety ?v1)\n"
+                          "      and not (heading tweety (- 0))\n");
+    CHECK(to_json(w).find("\"antecedents\": [\"(bird tweety)\"], \"not\": [\"(penguin tweety)\", \"(owns tweety ?v1)\", "
+                          "\"(heading tweety (- 0))\"]}") != std::string::npos);
+}

@@ -1,12 +1,18 @@
 // tests/fuzz/engine_rules_fuzz.cpp: libFuzzer target for the rule language front end
-// (engine/rule_spec_reader.hpp over the X3 parser of engine/rule_parser.hpp), the checker and the
-// compiler, on arbitrary bytes read as a rule file. Properties checked (abort on violation):
-//   - no exception escapes reading, checking or compiling;
+// (engine/rule_spec_reader.hpp over the X3 parser of engine/rule_parser.hpp), the checker, the
+// compiler and the engine, on arbitrary bytes read as a rule file. Properties checked (abort on
+// violation):
+//   - no exception escapes reading, checking, compiling or running (an InternalError is a bug);
 //   - every diagnostic is located (line and column >= 1) and every syntax error reads
 //     `expected ... but found ...` with its source line;
 //   - a program that reads without error prints (rule_printer.hpp) to text that reads back to the
 //     same spec, and printing that is a fixed point;
 //   - compile_program() returns a program exactly when it reports no error;
+//   - a compiled program runs (Engine::run, bounded by RunOptions::max_steps, so it always ends)
+//     with located diagnostics only; after it, every fact that holds is explained by why() in each
+//     of its label environments (the ATMS's explain checks the derivation), the report is built
+//     and written as JSON (interpretations only when the choice sets have few combinations: their
+//     number can be exponential, which is the question asked, not a bug);
 //   - the same bytes as a `--why` fact (ground_atom_text.hpp): a result exactly when no error.
 // Includes are resolved in a sandbox directory made at start-up (a.rules, b.rules including a.rules,
 // c.rules including itself); inputs naming an absolute path or `..` are skipped, so the fuzzer never
@@ -19,14 +25,18 @@
 #define QM_ENABLE_ASSERTS 1
 #endif
 #include "engine/builtin_registry.hpp"
+#include "engine/engine.hpp"
 #include "engine/ground_atom_text.hpp"
+#include "engine/json_writer.hpp"
 #include "engine/rule_checker.hpp"
 #include "engine/rule_compiler.hpp"
 #include "engine/rule_printer.hpp"
 #include "engine/rule_spec_reader.hpp"
+#include "engine/run_report.hpp"
+#include "engine/why.hpp"
 
 // The fuzz build instruments only this target, not the qm_engine library it links, so libFuzzer
-// would be blind to the front end's branches. Compiling the front end's sources into this TU
+// would be blind to the engine's branches. Compiling the engine's sources into this TU
 // instruments them; the linker then takes no object from libqm_engine.a for these symbols.
 #include "engine/ground_atom_text.cpp"
 #include "engine/rule_checker.cpp"
@@ -37,6 +47,23 @@
 #include "engine/rule_printer.cpp"
 #include "engine/rule_spec_reader.cpp"
 #include "engine/stratify_rules.cpp"
+// The runtime: the engine, its matcher and agenda, the builtins, explanations and reports.
+#include "engine/agenda.cpp"
+#include "engine/binding.cpp"
+#include "engine/builtin_registry.cpp"
+#include "engine/builtins_comparison.cpp"
+#include "engine/builtins_integer.cpp"
+#include "engine/builtins_qualitative.cpp"
+#include "engine/engine.cpp"
+#include "engine/engine_closed_world.cpp"
+#include "engine/engine_consequents.cpp"
+#include "engine/engine_run.cpp"
+#include "engine/fact_store.cpp"
+#include "engine/json_writer.cpp"
+#include "engine/matcher.cpp"
+#include "engine/run_report.cpp"
+#include "engine/value_table.cpp"
+#include "engine/why.cpp"
 
 #include <cstdint>
 #include <cstdlib>
@@ -66,6 +93,43 @@ void check_located(const qm::Diagnostics& d) {
         if (x.message.rfind("expected ", 0) == 0 &&
             (x.message.find(" but found ") == std::string::npos || x.source_line.empty()))
             std::abort();
+    }
+}
+
+// Runs a compiled program with a bounded amount of work and checks what it gives. An escaping
+// exception (an InternalError is a failed precondition: a bug) reaches libFuzzer as a crash.
+void run_program(qm::engine::LoadedProgram loaded) {
+    using namespace qm::engine;
+    // Ample for the bundled programs (queens8 takes 5,984 steps, polybox 167), small enough that
+    // an input ends quickly.
+    constexpr std::size_t max_steps = 100000;
+    Engine e(std::move(loaded.program), std::move(loaded.values));
+    qm::Diagnostics ran;
+    RunOptions options;
+    options.max_steps = max_steps;
+    e.run(ran, options);
+    check_located(ran);
+    // Every fact that holds is derivable in each of its label environments (explain checks it).
+    std::size_t explained = 0;
+    for (FactId f : facts_in_order(e)) {
+        if (++explained > 16) break;
+        const Why w = why(e, f);
+        if ((w.status == Why::Status::holds) != !e.label(f).empty()) std::abort();
+        if (w.status == Why::Status::holds && w.derivations.size() != e.label(f).size()) std::abort();
+        (void)to_json(w);
+    }
+    // The interpretations are enumerated only when the choice sets allow few combinations.
+    double combinations = 1;
+    for (const auto& set : e.choice_sets()) combinations *= static_cast<double>(set.size());
+    if (combinations <= 4096) {
+        const RunReport report = make_report(e);
+        (void)to_json(report);
+        for (qm::atms::EnvId i : e.interpretations())
+            for (const auto& set : e.choice_sets()) {
+                std::size_t picked = 0;
+                for (qm::atms::AssumptionId a : set) picked += e.atms().env(i).contains(a) ? 1 : 0;
+                if (picked != 1) std::abort();  // exactly one of every choice set
+            }
     }
 }
 
@@ -106,6 +170,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     check_located(checked);
     check_located(compiled);
     if (program.has_value() == compiled.has_errors()) std::abort();
+
+    if (program) run_program(std::move(*program));
 
     ValueTable values;
     auto atom = parse_ground_atom(text.substr(0, 256), values);

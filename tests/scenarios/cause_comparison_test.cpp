@@ -33,7 +33,7 @@ TEST_CASE("scenarios/cause_comparison: squeezed blocks move together, or stay (s
     CHECK_FALSE(r.stable);
     // Without the wind the hand pushes both; without the hand the wind does.
     Diagnostics d;
-    alex::QueryFact no_wind{alex::QueryFact::Kind::force, object(scene, "b"), {}, std::nullopt, std::nullopt};
+    alex::QueryFact no_wind{alex::QueryFact::Kind::force, object(scene, "b"), {}, std::nullopt, std::nullopt, std::nullopt};
     auto w = a.what_if(1, std::span<const alex::QueryFact>(&no_wind, 1), d);
     REQUIRE(w.has_value());
     CHECK(combinations(scene, *w) == S{"a (+ 0) (0); b (+ 0) (0); table (0 0) (0)"});
@@ -57,20 +57,20 @@ TEST_CASE("scenarios/cause_comparison: why a squeezed block does not move apart"
     Diagnostics d;
     // b moving right is predicted (where the hand prevails); its explanation names a combination.
     alex::QueryFact right{alex::QueryFact::Kind::translational_motion, object(scene, "b"), {alex::Sign::plus, alex::Sign::zero},
-                          std::nullopt, std::nullopt};
+                          std::nullopt, std::nullopt, std::nullopt};
     auto w = a.why(right, 1, d);
     REQUIRE(w.has_value());
     CHECK(w->status == alex::WhyAnswer::Status::holds);
     // b moving up and right is consistent but never nearest: ruled out in every branch.
     alex::QueryFact up{alex::QueryFact::Kind::translational_motion, object(scene, "b"), {alex::Sign::plus, alex::Sign::plus},
-                       std::nullopt, std::nullopt};
+                       std::nullopt, std::nullopt, std::nullopt};
     auto u = a.why(up, 1, d);
     REQUIRE(u.has_value());
     CHECK(u->status == alex::WhyAnswer::Status::ruled_out);
     // a lifting off the table is past the zero threshold of its net force in every branch: excluded
     // by cases over the branches (with the nogoods that the other objects meet on the way).
     alex::QueryFact lift{alex::QueryFact::Kind::translational_motion, object(scene, "a"), {alex::Sign::zero, alex::Sign::plus},
-                         std::nullopt, std::nullopt};
+                         std::nullopt, std::nullopt, std::nullopt};
     auto l = a.why(lift, 1, d);
     REQUIRE(l.has_value());
     CHECK(l->status == alex::WhyAnswer::Status::ruled_out);

@@ -56,7 +56,7 @@ TEST_CASE("scenarios/chapter3: a block pushing a boulder moves it (Figure 3.4, T
                                       "block (+ 0) (0); boulder (+ +) (0); table (0 0) (0)"});
     // Without the contact the boulder stays where gravity and the table leave it.
     Diagnostics d;
-    alex::QueryFact without{alex::QueryFact::Kind::contact, std::nullopt, {}, scene.find_surface("bk-r"), scene.find_surface("bo-l")};
+    alex::QueryFact without{alex::QueryFact::Kind::contact, std::nullopt, {}, scene.find_surface("bk-r"), scene.find_surface("bo-l"), {}};
     auto w = a.what_if(1, std::span<const alex::QueryFact>(&without, 1), d);
     REQUIRE(w.has_value());
     CHECK(combinations(scene, *w) == S{"block (+ 0) (0); boulder (0 0) (0); table (0 0) (0)"});
