@@ -97,6 +97,7 @@ ChainOutcome solve_chain(atms::Atms& atms, std::span<const ObjectChoices> chain,
             }
             const atms::Environment full = join(env, atms.env(with));
             std::vector<ObjectMotion> combination;
+            combination.reserve(chain.size());
             for (const ObjectChoices& c : chain)
                 combination.push_back({c.trans_dirs[picked(full, c.trans)], c.rot_dirs[picked(full, c.rot)]});
             out.motions.combinations.push_back(std::move(combination));

@@ -100,7 +100,7 @@ void print_situation(std::ostream& os, const Scene& scene, const SituationResult
     for (const std::string& n : r.notes) os << "  Note: " << n << "\n";
 }
 
-void print_analysis(std::ostream& os, const Scene& scene, const std::vector<SituationResult>& results) {
+void print_analysis(std::ostream& os, const Scene& scene, std::span<const SituationResult> results) {
     // The header describes the scene; `--situation N` shows fewer results than it has situations.
     os << "Scene " << scene.name << " (" << scene.dimensions << "-D, " << plural(scene.objects.size(), "object") << ", "
        << plural(scene.situations.size(), "situation") << ")\n";
@@ -167,7 +167,7 @@ void write_situation_json(std::ostream& os, const Scene& scene, const SituationR
     os << "], \"stable\": " << (r.stable ? "true" : "false") << '}';
 }
 
-void write_analysis_json(std::ostream& os, const Scene& scene, const std::vector<SituationResult>& results) {
+void write_analysis_json(std::ostream& os, const Scene& scene, std::span<const SituationResult> results) {
     os << "{\"scene\": " << json_string(scene.name) << ", \"dimensions\": " << scene.dimensions << ", \"situations\": [";
     for (std::size_t i = 0; i < results.size(); ++i) {
         if (i) os << ", ";

@@ -7,16 +7,17 @@
 #pragma once
 #include "alex/analysis.hpp"
 #include <ostream>
+#include <span>
 
 namespace qm::alex {
 void print_situation(std::ostream& os, const Scene& scene, const SituationResult& r);
 void print_freedom(std::ostream& os, const Scene& scene, const SituationResult& r);  // its free directions
 void print_motions(std::ostream& os, const Scene& scene, const SituationResult& r);  // combinations, stability
-void print_analysis(std::ostream& os, const Scene& scene, const std::vector<SituationResult>& results);
+void print_analysis(std::ostream& os, const Scene& scene, std::span<const SituationResult> results);
 void print_why(std::ostream& os, const WhyAnswer& w);
 
 // {"scene": NAME, "dimensions": N, "situations": [SITUATION...]} (docs/OUTPUT.md).
-void write_analysis_json(std::ostream& os, const Scene& scene, const std::vector<SituationResult>& results);
+void write_analysis_json(std::ostream& os, const Scene& scene, std::span<const SituationResult> results);
 // One situation object: {"index", "freedom", "motions", "stable"}.
 void write_situation_json(std::ostream& os, const Scene& scene, const SituationResult& r);
 void write_why_json(std::ostream& os, const WhyAnswer& w);

@@ -415,18 +415,25 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
         options->json ? alex::write_why_json(out, *w) : alex::print_why(out, *w);
         return 0;
     }
-    std::vector<alex::SituationResult> shown = analysis->situations();
-    if (options->situation) shown = {shown[situation - 1]};
-    // A what-if says what it took away, as the interactive `whatif` does (docs/OUTPUT.md).
-    for (alex::SituationResult& r : shown) {
-        std::string taken;
-        for (const alex::QueryFact& q : ao.without)
-            if (has_item(analysis->scene(), r.index, q))
-                taken += (taken.empty() ? "" : ", ") +
-                         (q.kind == alex::QueryFact::Kind::contact ? item_text(analysis->scene(), q)
-                          : q.cause                                ? "the " + item_text(analysis->scene(), q)
-                                                                   : "every " + item_text(analysis->scene(), q));
-        if (!taken.empty()) r.notes.insert(r.notes.begin(), "what-if: analysed without " + taken + " (--without)");
+    // The results are printed where they are (a scene with many combinations holds them once);
+    // only a what-if, which adds a note, prints a copy.
+    std::span<const alex::SituationResult> shown = analysis->situations();
+    if (options->situation) shown = shown.subspan(situation - 1, 1);
+    std::vector<alex::SituationResult> noted;
+    if (!ao.without.empty()) {
+        noted.assign(shown.begin(), shown.end());
+        // A what-if says what it took away, as the interactive `whatif` does (docs/OUTPUT.md).
+        for (alex::SituationResult& r : noted) {
+            std::string taken;
+            for (const alex::QueryFact& q : ao.without)
+                if (has_item(analysis->scene(), r.index, q))
+                    taken += (taken.empty() ? "" : ", ") +
+                             (q.kind == alex::QueryFact::Kind::contact ? item_text(analysis->scene(), q)
+                              : q.cause                                ? "the " + item_text(analysis->scene(), q)
+                                                                       : "every " + item_text(analysis->scene(), q));
+            if (!taken.empty()) r.notes.insert(r.notes.begin(), "what-if: analysed without " + taken + " (--without)");
+        }
+        shown = noted;
     }
     // The JSON schema has no place for notes (docs/OUTPUT.md): a truncated enumeration is said on
     // standard error, so a program reading the JSON is not silently given a partial list.
