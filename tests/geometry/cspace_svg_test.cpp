@@ -7,6 +7,7 @@
 #include <doctest/doctest.h>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -141,5 +142,73 @@ TEST_CASE("geometry/cspace_svg: every division is drawn its whole length, the ri
         const auto cov = fsd_coverage(ss.str());
         for (double y : {0.15, 0.3}) CHECK(cov.along_y(480 - 40 - h * y) == doctest::Approx(w * 0.9).epsilon(0.01));
         for (double x : {0.1, 0.2}) CHECK(cov.along_x(40 + w * x) == doctest::Approx(h * 0.85).epsilon(0.01));
+    }
+}
+
+namespace {
+struct Label {
+    int id;
+    double x0, y0, x1, y1;  // the box the picture promises (cspace_svg.cpp: 5.5 px a digit, 9.5 px tall)
+};
+std::vector<Label> labels(const std::string& svg) {
+    std::vector<Label> out;
+    const std::string group = "<g font-size=\"9\" font-family=\"sans-serif\">\n";
+    const auto start = svg.find(group);
+    REQUIRE(start != std::string::npos);
+    std::istringstream in(svg.substr(start + group.size(), svg.find("</g>", start) - start - group.size()));
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.rfind("<text", 0) != 0) continue;
+        double x = 0, y = 0;
+        REQUIRE(std::sscanf(line.c_str(), "<text x=\"%lf\" y=\"%lf\"", &x, &y) == 2);
+        const auto gt = line.find('>'), end = line.find("</text>");
+        const std::string number = line.substr(gt + 1, end - gt - 1);
+        out.push_back({std::stoi(number), x, y - 8.5, x + 5.5 * static_cast<double>(number.size()), y + 1});
+    }
+    return out;
+}
+}  // namespace
+
+TEST_CASE("geometry/cspace_svg: place numbers do not overprint each other, moved ones have a leader") {
+    // Small pictures crowd the numbers: each must still be drawn once, inside the picture, apart
+    // from every other, and a number not at its place's default spot is tied to it by a line.
+    const auto cam = disk_cam_and_follower();
+    PlaceRequest req;
+    req.cspace.axes = cam.axes;
+    const auto res = build_place_vocabulary(cam.exact, req);
+    for (auto [width, height] : {std::pair{640, 480}, std::pair{320, 240}, std::pair{240, 180}}) {
+        CAPTURE(width);
+        std::stringstream ss;
+        write_cspace_svg(ss, res.space, res.vocabulary, {width, height, "cam & <follower>", true});
+        const std::string svg = ss.str();
+        CHECK(svg.find("cam &amp; &lt;follower&gt;") != std::string::npos);
+        const auto ls = labels(svg);
+        REQUIRE(ls.size() == res.vocabulary.places.size());
+        std::vector<int> ids;
+        for (const Label& l : ls) ids.push_back(l.id);
+        std::sort(ids.begin(), ids.end());
+        CHECK(std::adjacent_find(ids.begin(), ids.end()) == ids.end());
+        for (std::size_t i = 0; i < ls.size(); ++i) {
+            CHECK(ls[i].x0 >= 0);
+            CHECK(ls[i].x1 <= width);
+            for (std::size_t j = i + 1; j < ls.size(); ++j) {
+                const bool apart = ls[i].x1 <= ls[j].x0 || ls[j].x1 <= ls[i].x0 || ls[i].y1 <= ls[j].y0 || ls[j].y1 <= ls[i].y0;
+                if (!apart) {
+                    CAPTURE(ls[i].id);
+                    CAPTURE(ls[j].id);
+                    CHECK(apart);
+                }
+            }
+        }
+        // The smallest picture cannot hold every number at its place: the moving is exercised.
+        if (width == 240) CHECK(occurrences(svg, "<line ") > 0);
+        // Every leader ends on the box of some number.
+        for (auto p = svg.find("<line "); p != std::string::npos; p = svg.find("<line ", p + 1)) {
+            double x1 = 0, y1 = 0, x2 = 0, y2 = 0;
+            REQUIRE(std::sscanf(svg.c_str() + p, "<line x1=\"%lf\" y1=\"%lf\" x2=\"%lf\" y2=\"%lf\"", &x1, &y1, &x2, &y2) == 4);
+            CHECK(std::any_of(ls.begin(), ls.end(), [&](const Label& l) {
+                return x2 >= l.x0 - 1e-3 && x2 <= l.x1 + 1e-3 && y2 >= l.y0 - 1e-3 && y2 <= l.y1 + 1e-3;
+            }));
+        }
     }
 }
