@@ -111,6 +111,18 @@ CSpaceResult classify_cspace(const PairOracle& oracle, const CSpaceRequest& requ
                 }
                 n.normalize();
                 p.normal_contradicts_edge = n[axis] * along < -request.normal_zero_tolerance;
+                // The same test along the normal itself: one that agrees with its edge can still
+                // name the far surface across a sharp corner and point along the boundary into
+                // blocked space (the escapement's pallet corner at grid 256). Probes a fiftieth of
+                // a cell out find it so when the normal leads into blocked space and its opposite
+                // into free space; at a concave corner of free space, where a sound normal runs
+                // along the other wall, both probes are blocked.
+                if (!p.normal_contradicts_edge) {
+                    const double probe = std::min(request.axes[0].step(), request.axes[1].step()) / 50.0;
+                    out.oracle_calls += 2;
+                    p.normal_contradicts_edge = oracle.blocked(wrap(request, p.q + probe * n)) &&
+                                                !oracle.blocked(wrap(request, p.q - probe * n));
+                }
                 p.normal = n;
                 p.qual = qualitative(p.normal, request.normal_zero_tolerance);
                 out.boundary.push_back(p);

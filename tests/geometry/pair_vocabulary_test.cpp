@@ -3,7 +3,8 @@
 // FCL against the exact lines-and-arcs oracle, and the hard cases of issue item 7 (tangent
 // contact, edges sliding on each other, zero play, corner against corner, normals along an axis,
 // scales 1e-3 to 1e3, the scene moved, turned by 90 degrees and scaled, an all-free space, CSEGs
-// spanning the space parallel to an axis), and the ratchet's vocabulary settling as the grid is refined.
+// spanning the space parallel to an axis), and the ratchet's and the escapement's vocabularies
+// settling as the grid is refined.
 #include "geometry/closed_form_pairs.hpp"
 #include "geometry/contact_detection.hpp"
 #include "geometry/kinematic_pairs.hpp"
@@ -289,4 +290,26 @@ TEST_CASE("geometry/pair_vocabulary: the ratchet's place vocabulary settles as t
         CHECK(v.places.size() == base.places.size());
         check_same(signature(v), signature(base));
     }
+}
+
+TEST_CASE("geometry/pair_vocabulary: the escapement's place vocabulary settles as the grid is refined") {
+    // scenarios/metric/escapement.def with its own tolerances. Near the pallet's corner on a
+    // tooth, configurations found on the meshes overlap the exact arcs, and at grid 256 three
+    // boundary points there got the far surface's normal, (+ -) inside a (- -) CSEG: it agreed
+    // with each point's grid edge, but pointed along the boundary into blocked space. The run
+    // made two joins, a CSEG and their divisions (92 places instead of 49). 192 and 256 give one
+    // vocabulary (docs/ACCURACY.md: so does 384; 128 and 512 give the same 49 places, each with
+    // one adjacency of its own).
+    auto escapement_at = [](int n) {
+        return "(Defmechanism escapement Settings ((chordal-tolerance 1e-7) (contact-tolerance 1e-3) (boundary-tolerance 1e-8))"
+               " Parts ((scape-wheel (scape-wheel (teeth 15) (root-radius 0.85) (tip-radius 1.0) (lean 0.8) (root-land 0.2))"
+               " (turn 8) (rotation)) (pallets (anchor (span 0.45) (reach 0.5) (width 0.1) (top 0.1)) (at 0 1.4) (rotation)))"
+               " Pairs ((scape-wheel pallets (window pallets -20 20) (grid " + std::to_string(n) + " " + std::to_string(n) + ")))"
+               " Forces ((spring scape-wheel (torque -)) (gravity pallets (direction 0 -1) (at 0 1.0))))";
+    };
+    const auto base = build(read(escapement_at(192))).result.vocabulary;
+    CHECK(base.places.size() == 49);
+    const auto fine = build(read(escapement_at(256))).result.vocabulary;
+    CHECK(fine.places.size() == base.places.size());
+    check_same(signature(fine), signature(base));
 }
