@@ -10,6 +10,7 @@
 #include "geometry/place_vocabulary.hpp"
 #include "geometry/place_vocabulary_builder.hpp"
 #include "geometry/cspace_boundary.hpp"
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -63,11 +64,17 @@ struct Builder {
         return add(std::move(p));
     }
 
-    // Move q onto the boundary along direction n (cell-scaled), if the boundary is within a cell.
+    // Move q onto the boundary along direction n, if the boundary is within a cell diagonal (the
+    // reach is measured in cells, the direction is n's own). Scaling the direction by the cell
+    // tilted it on cells that are not square: at the tip of a thin blocked needle (the ratchet's
+    // pawl tip past a tooth tip) the tilted line left the needle's axis and met its side, a
+    // thousandth of a radian below the tip, at grids 64x512 and 128x1024 (their apex FSDs were
+    // not started: 33 and 44 places instead of 51). Along the sides' mean normal, the needle's
+    // axis, it meets the tip itself.
     Eigen::Vector2d project(const Eigen::Vector2d& q, Eigen::Vector2d n) {
-        n = n.cwiseProduct(cell());
-        if (n.norm() == 0) return q;
-        n = n.normalized() * cell().norm();
+        const double scaled = n.cwiseQuotient(cell()).norm();
+        if (!(scaled > 0)) return q;
+        n *= std::sqrt(2.0) / scaled;
         const bool lo = blocked(q - n), hi = blocked(q + n);
         if (lo == hi) return q;
         return bisect_contact(oracle, q - n, lo, q + n, r.boundary_tolerance, space.oracle_calls);

@@ -71,7 +71,7 @@ TEST_CASE("geometry/place_cache: damaged files are corrupt, foreign material is 
     std::filesystem::resize_file(cache.path_for(material), std::filesystem::file_size(cache.path_for(material)) / 2);
     CHECK(cache.load(material).status == CacheStatus::corrupt);
     // Same file name, different material (as after a hash collision): not used.
-    std::ofstream(cache.path_for(material)) << "qm-place-cache/4\n5 other\n0 0\n";
+    std::ofstream(cache.path_for(material)) << "qm-place-cache/5\n5 other\n0 0\n";
     CHECK(cache.load(material).status == CacheStatus::miss);
     const auto again = build_or_load(c.exact, req, cache);
     CHECK(!again.from_cache);
