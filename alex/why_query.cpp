@@ -238,6 +238,23 @@ std::optional<std::vector<std::vector<std::string>>> minimal_by_reanalysis(Analy
     return out;
 }
 
+// w's responsible sets: the exact minimal ones by re-analysis where the situation is small enough,
+// else `together` (the items `reasons` rest on), which suffices but is not reduced.
+void set_responsible(Analysis::State& st, WhyAnswer& w, const std::set<std::string>& together, std::size_t s,
+                     atms::EnvId base, ObjectId o, bool translational, const Direction& d, const std::string& reasons) {
+    if (st.facts->granularity() == Granularity::situation) {
+        w.responsible_sets.push_back({together.begin(), together.end()});
+    } else if (auto exact = minimal_by_reanalysis(st, s, base, o, translational, d)) {
+        w.responsible_sets = std::move(*exact);
+    } else {
+        w.responsible_sets.push_back({together.begin(), together.end()});
+        w.responsible_minimal = false;
+        w.notes.push_back("responsible: the items " + reasons + " rest on, which together suffice; not reduced to "
+                          "minimal sets (the situation has more than " + std::to_string(exact_item_limit) +
+                          " contacts, forces and given motions to re-analyse without)");
+    }
+}
+
 // A refutation of a motion by case analysis over the other choice sets of its kinematic chain
 // (Law 1): a search that picks, at each step, the choice set with the fewest choices left open by
 // the nogoods (so a forced motion is settled first), and backjumps: when the refutation below one
@@ -604,17 +621,7 @@ std::optional<WhyAnswer> Analysis::why(const QueryFact& query, std::size_t situa
                                           "situation") + in_every_branch + ", whatever this object does: these "
                               "nogoods exclude them all");
         if (!fixed.empty()) w.notes.push_back(description_alone_note(st, fixed));
-        if (st.facts->granularity() == Granularity::situation) {
-            w.responsible_sets.push_back({together.begin(), together.end()});
-        } else if (auto exact = minimal_by_reanalysis(st, situation, env, o, translational, query.direction)) {
-            w.responsible_sets = std::move(*exact);
-        } else {
-            w.responsible_sets.push_back({together.begin(), together.end()});
-            w.responsible_minimal = false;
-            w.notes.push_back("responsible: the items the reasons rest on, which together suffice; not reduced to "
-                              "minimal sets (the situation has more than " + std::to_string(exact_item_limit) +
-                              " contacts, forces and given motions to re-analyse without)");
-        }
+        set_responsible(st, w, together, situation, env, o, translational, query.direction, "the reasons");
         coarse_note(st, w);
         return w;
     }
@@ -672,17 +679,7 @@ std::optional<WhyAnswer> Analysis::why(const QueryFact& query, std::size_t situa
                           "(section 6.2, Definition 38) than those of a predicted combination, e.g." + predicted_example +
                           "; the reasons are the ranks of those motions");
     }
-    if (st.facts->granularity() == Granularity::situation) {
-        w.responsible_sets.push_back({together.begin(), together.end()});
-    } else if (auto exact = minimal_by_reanalysis(st, situation, env, o, translational, query.direction)) {
-        w.responsible_sets = std::move(*exact);
-    } else {
-        w.responsible_sets.push_back({together.begin(), together.end()});
-        w.responsible_minimal = false;
-        w.notes.push_back("responsible: the items the nearness ranks rest on, which together suffice; not reduced "
-                          "to minimal sets (the situation has more than " + std::to_string(exact_item_limit) +
-                          " contacts, forces and given motions to re-analyse without)");
-    }
+    set_responsible(st, w, together, situation, env, o, translational, query.direction, "the nearness ranks");
     coarse_note(st, w);
     return w;
 }

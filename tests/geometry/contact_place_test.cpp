@@ -3,6 +3,7 @@
 // abstraction gives the same gears with a little play (an independent construction from the sampled
 // space), a block resting on a table and sliding along it one place where it slides both ways,
 // and parts drawn overlapping no place.
+#include "mechanism_text.hpp"
 #include "geometry/contact_place.hpp"
 #include "geometry/kinematic_pairs.hpp"
 #include "geometry/metric_scene_parser.hpp"
@@ -12,18 +13,10 @@
 #include <sstream>
 
 using namespace qm::geometry;
+using qm::geometry::test::read;
 
 namespace {
 
-Mechanism read(const std::string& text) {
-    qm::Diagnostics d;
-    auto m = read_mechanism("v.def", text, d);
-    std::ostringstream os;
-    d.print(os);
-    INFO(os.str());
-    REQUIRE(m);
-    return *m;
-}
 
 std::optional<PlaceVocabulary> in_contact(const Mechanism& m) {
     const auto sel = kinematic_pairs(m);

@@ -2,6 +2,7 @@
 // (geometry/kinematic_pairs.hpp): Def 20 against brute force, axes from the degrees of freedom
 // (one period of a wheel's symmetry, windows, limits, a fixed part's dummy axis), and the
 // external place divisions of forces on either part's shaft.
+#include "mechanism_text.hpp"
 #include "geometry/kinematic_pairs.hpp"
 #include "geometry/metric_scene_parser.hpp"
 
@@ -12,15 +13,7 @@ using namespace qm::geometry;
 
 namespace {
 
-Mechanism read(const std::string& text) {
-    qm::Diagnostics d;
-    auto m = read_mechanism("k.def", text, d);
-    std::ostringstream os;
-    d.print(os);
-    INFO(os.str());
-    REQUIRE(m);
-    return *m;
-}
+Mechanism read(const std::string& text) { return test::read(text, "k.def"); }
 
 std::string names(const Mechanism& m, const std::vector<PairSpec>& pairs) {
     std::string out;

@@ -5,6 +5,7 @@
 // scales 1e-3 to 1e3, the scene moved, turned by 90 degrees and scaled, an all-free space, CSEGs
 // spanning the space parallel to an axis), and the ratchet's and the escapement's vocabularies
 // settling as the grid is refined.
+#include "mechanism_text.hpp"
 #include "geometry/closed_form_pairs.hpp"
 #include "geometry/contact_detection.hpp"
 #include "geometry/kinematic_pairs.hpp"
@@ -19,18 +20,10 @@
 #include <sstream>
 
 using namespace qm::geometry;
+using qm::geometry::test::read;
 
 namespace {
 
-Mechanism read(const std::string& text) {
-    qm::Diagnostics d;
-    auto m = read_mechanism("v.def", text, d);
-    std::ostringstream os;
-    d.print(os);
-    INFO(os.str());
-    REQUIRE(m);
-    return *m;
-}
 
 struct Built {
     PlaceResult result;
