@@ -1,6 +1,7 @@
 // cli/metric_command.cpp: metric scenes at the command line, and the conversion of the geometry's
 // contacts and forces at a configuration into an Alex scene (thesis 2.4, 3.1.1, 8.2.1).
 #include "metric_command.hpp"
+#include "place_cache_location.hpp"
 
 #include "alex/scene_parser.hpp"
 #include "alex/scene_printer.hpp"
@@ -227,13 +228,6 @@ std::optional<SceneText> scene_at(const std::string& path, const std::string& co
     return SceneText{std::move(*checked), std::move(text)};
 }
 
-std::filesystem::path default_cache() {
-    if (const char* p = std::getenv("QM_PLACE_CACHE"); p && *p) return p;
-    if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return std::filesystem::path(x) / "qm-atms" / "places";
-    if (const char* h = std::getenv("HOME"); h && *h) return std::filesystem::path(h) / ".cache" / "qm-atms" / "places";
-    return {};
-}
-
 std::string axis_text(const g::Mechanism& m, g::PartId p, const g::CSpaceAxis& axis) {
     const g::Part& part = m.parts[p];
     std::ostringstream os;
@@ -299,7 +293,7 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
         diags.print(err);
         return 2;
     }
-    if (!cache_dir && use_cache) cache_dir = default_cache();
+    if (!cache_dir && use_cache) cache_dir = default_place_cache();
     const std::optional<g::PlaceCache> cache = use_cache && cache_dir && !cache_dir->empty() ? std::optional<g::PlaceCache>(*cache_dir) : std::nullopt;
     if (svg_dir) {
         std::error_code ec;

@@ -1,0 +1,44 @@
+// bridge/clock_vocabulary.hpp
+// Provides:   the predicate and constant names through which the envisioner talks to its laws
+//             (rules/clock/*.rules): what the bridge asserts and what the driver reads back. The
+//             names are the rule files' own; the meaning of each is stated in bridge/place_facts.hpp
+//             (premises and assumptions) and in the rule file that concludes it (conclusions).
+// Knows nothing of any law: which fact follows from which is only in rules/clock/.
+#pragma once
+
+namespace qm::bridge::clock {
+// ---- premises (bridge/place_facts.hpp) ----
+inline constexpr const char* pair = "pair";                      // (pair P A B)
+inline constexpr const char* pair_places = "pair-places";        // (pair-places P SET)
+inline constexpr const char* axis = "axis";                      // (axis P I periodic|bounded)
+inline constexpr const char* clock_object = "clock-object";      // (clock-object O)
+inline constexpr const char* possible_motions = "possible-motions";  // (possible-motions O SET)
+inline constexpr const char* fixed_part = "fixed-part";          // (fixed-part O)
+inline constexpr const char* linkage = "linkage";                // (linkage A B)
+inline constexpr const char* cause = "cause";                    // (cause C)
+inline constexpr const char* place_kind = "place-kind";          // (place-kind P PLACE KIND)
+inline constexpr const char* join_kind = "join-kind";            // (join-kind P PLACE KIND)
+inline constexpr const char* place_normal = "place-normal";      // (place-normal P PLACE N)
+inline constexpr const char* place_normals = "place-normals";    // (place-normals P PLACE SET)
+inline constexpr const char* join_concave = "join-concave";      // (join-concave P PLACE)
+inline constexpr const char* join_convex = "join-convex";        // (join-convex P PLACE)
+inline constexpr const char* gap_place = "gap-place";            // (gap-place P PLACE)
+inline constexpr const char* adjacent = "adjacent";              // (adjacent P PLACE NEXT V DURATION)
+inline constexpr const char* force_sign_at = "force-sign-at";    // (force-sign-at P PLACE O S C)
+inline constexpr const char* constant_force = "constant-force";  // (constant-force O S C)
+inline constexpr const char* current_place = "current-place";    // (current-place P PLACE)
+inline constexpr const char* current_motion = "current-motion";  // (current-motion O M)
+// ---- assumptions ----
+inline constexpr const char* external_force = "external-force";  // (external-force O C)
+// ---- conclusions the driver reads ----
+inline constexpr const char* at = "at";                          // (at P PLACE): choice set, states.rules
+inline constexpr const char* motion = "motion";                  // (motion O M): choice set, states.rules
+inline constexpr const char* blocked_motion = "blocked-motion";  // (blocked-motion P PLACE V)
+inline constexpr const char* arrival = "arrival";                // (arrival P PLACE HOW V AFTER)
+inline constexpr const char* nearness_rank = "nearness-rank";    // (nearness-rank H M K)
+inline constexpr const char* step = "step";                      // (step S DURATION CAUSE)
+inline constexpr const char* place_option = "place-option";      // (place-option S P NEXT HOW)
+inline constexpr const char* motion_option = "motion-option";    // (motion-option S O M)
+inline constexpr const char* force_on = "force-on";              // (force-on O S C)
+inline constexpr const char* net_force = "net-force";            // (net-force O S)
+}  // namespace qm::bridge::clock

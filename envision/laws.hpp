@@ -1,0 +1,32 @@
+// envision/laws.hpp
+// Provides:   Laws, the envisioner's rule program (every *.rules file directly in a folder, by
+//             default rules/clock/, in name order), read and compiled once, and fresh engines over
+//             it: one for a chain's state space, one per state for its transitions.
+// Ownership:  Laws owns the compiled program and its pristine value table; each engine made gets
+//             its own copies, so engines are independent.
+// Errors:     a folder with no .rules file, or rule files with errors: located diagnostics, and
+//             load() returns nothing.
+// Knows nothing of any law: which laws there are is the folder's business.
+#pragma once
+#include "engine/engine.hpp"
+#include "engine/rule_compiler.hpp"
+#include "qm/diagnostics.hpp"
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+namespace qm::envision {
+
+class Laws {
+public:
+    [[nodiscard]] static std::optional<Laws> load(const std::filesystem::path& folder, Diagnostics& diagnostics);
+    [[nodiscard]] std::unique_ptr<engine::Engine> engine() const;
+    [[nodiscard]] const std::filesystem::path& folder() const noexcept { return folder_; }
+
+private:
+    Laws(engine::LoadedProgram program, std::filesystem::path folder) : program_(std::move(program)), folder_(std::move(folder)) {}
+    engine::LoadedProgram program_;
+    std::filesystem::path folder_;
+};
+
+}  // namespace qm::envision

@@ -1,0 +1,106 @@
+// envision/state_dynamics.cpp: one state's forces and possible steps (thesis Figure 8.5, 8.3.1-8.3.3).
+#include "envision/state_dynamics.hpp"
+#include "bridge/clock_vocabulary.hpp"
+#include "envision/fact_reader.hpp"
+
+#include <algorithm>
+#include <map>
+
+namespace qm::envision {
+namespace g = qm::geometry;
+namespace v = qm::bridge::clock;
+
+std::optional<StateEngine> run_state(const Laws& laws, const g::Mechanism& m, std::span<const bridge::PairPlaces> pairs,
+                                     const Chain& chain, const State& state, std::span<const bridge::ForceRef> without,
+                                     Diagnostics& diagnostics) {
+    StateEngine out{laws.engine(), {}};
+    engine::Engine& e = *out.engine;
+    bridge::assert_parts(e, m, chain.objects, /*choices=*/false);
+    bridge::assert_linkages(e, m, chain.objects);
+    for (std::size_t k = 0; k < chain.pairs.size(); ++k) {
+        const bridge::PairPlaces& pair = pairs[chain.pairs[k]];
+        const g::QualDirection motion{{state.motions[chain.object_index(pair.spec.a)], state.motions[chain.object_index(pair.spec.b)]}};
+        bridge::assert_pair(e, m, pair, {state.places[k], motion, /*choice=*/false});
+        bridge::assert_current_place(e, pair, state.places[k]);
+    }
+    for (std::size_t o = 0; o < chain.objects.size(); ++o) bridge::assert_current_motion(e, m, chain.objects[o], state.motions[o]);
+    const auto forces = bridge::assert_forces(e, m, chain.objects, /*assume=*/true, without);
+    std::vector<atms::AssumptionId> assumed;
+    for (const auto f : forces) assumed.push_back(*e.assumption(f));
+    const atms::EnvId context = e.atms().environment(assumed);
+    const std::size_t before = diagnostics.size();
+    out.environment = e.run_in_context(context, diagnostics).environment;
+    for (std::size_t i = before; i < diagnostics.size(); ++i)
+        if (diagnostics.items()[i].severity == Severity::error) return std::nullopt;
+    return out;
+}
+
+std::optional<StateDynamics> read_dynamics(StateEngine& run, const g::Mechanism& m, std::span<const bridge::PairPlaces> pairs,
+                                           const Chain& chain, Diagnostics& diagnostics) {
+    const FactReader read(*run.engine, run.environment);
+    std::map<std::string, std::size_t> pair_index, object_index;
+    for (std::size_t k = 0; k < chain.pairs.size(); ++k) pair_index[pairs[chain.pairs[k]].name] = k;
+    for (std::size_t k = 0; k < chain.objects.size(); ++k) object_index[m.parts[chain.objects[k]].name] = k;
+    auto fail = [&](const std::string& message) {
+        diagnostics.error({"<envision>", 1, 1}, message + " (rules/clock/)");
+        return std::nullopt;
+    };
+
+    StateDynamics out;
+    out.net_force.assign(chain.objects.size(), 0);
+    read.each(v::net_force, 2, [&](std::span<const engine::ValueId> a) {
+        if (const auto it = object_index.find(read.symbol(a[0])); it != object_index.end()) out.net_force[it->second] = read.sign(a[1]);
+    });
+    std::map<std::string, StepOptions> steps;
+    bool bad_step = false;
+    read.each(v::step, 3, [&](std::span<const engine::ValueId> a) {
+        StepOptions s;
+        s.name = read.symbol(a[0]);
+        const std::string& d = read.symbol(a[1]);
+        const std::string& c = read.symbol(a[2]);
+        if ((d != "instant" && d != "interval") || (c != "kinematic" && c != "dynamic")) bad_step = true;
+        s.duration = d == "instant" ? Duration::instant : Duration::interval;
+        s.cause = c == "kinematic" ? Cause::kinematic : Cause::dynamic;
+        s.places.resize(chain.pairs.size());
+        s.motions.resize(chain.objects.size());
+        steps.emplace(s.name, std::move(s));
+    });
+    if (bad_step) return fail("a step's duration must be instant or interval and its cause kinematic or dynamic");
+    bool bad_how = false;
+    read.each(v::place_option, 4, [&](std::span<const engine::ValueId> a) {
+        const auto s = steps.find(read.symbol(a[0]));
+        const auto p = pair_index.find(read.symbol(a[1]));
+        const auto how = how_of(read.symbol(a[3]));
+        if (s == steps.end() || p == pair_index.end()) return;
+        if (!how) {
+            bad_how = true;
+            return;
+        }
+        s->second.places[p->second].push_back({g::PlaceId{static_cast<std::uint32_t>(read.integer(a[2]))}, *how});
+    });
+    if (bad_how) return fail("a place option's last argument must be stay, move, wrap or limit");
+    read.each(v::motion_option, 3, [&](std::span<const engine::ValueId> a) {
+        const auto s = steps.find(read.symbol(a[0]));
+        const auto o = object_index.find(read.symbol(a[1]));
+        if (s == steps.end() || o == object_index.end()) return;
+        s->second.motions[o->second].push_back(read.sign(a[2]));
+    });
+    for (auto& [name, s] : steps) {
+        for (std::size_t k = 0; k < s.places.size(); ++k) {
+            if (s.places[k].empty()) return fail("the laws give pair " + pairs[chain.pairs[k]].name + " no place after step " + name);
+            std::sort(s.places[k].begin(), s.places[k].end(), [](const PlaceOption& x, const PlaceOption& y) {
+                return std::tie(x.place, x.how) < std::tie(y.place, y.how);
+            });
+        }
+        for (std::size_t o = 0; o < s.motions.size(); ++o) {
+            if (s.motions[o].empty()) return fail("the laws give part " + m.parts[chain.objects[o]].name + " no motion after step " + name);
+            for (const auto x : s.motions[o])
+                if (x == ambiguous_sign) return fail("the laws give part " + m.parts[chain.objects[o]].name + " the ambiguous motion (?) after step " + name);
+            std::sort(s.motions[o].begin(), s.motions[o].end());
+        }
+        out.steps.push_back(std::move(s));
+    }
+    return out;
+}
+
+}  // namespace qm::envision
