@@ -5,6 +5,8 @@
 
 #include "envision/envisionment.hpp"
 #include "envision/json_printer.hpp"
+#include "envision/state_query.hpp"
+#include "envision/state_report.hpp"
 #include "envision/table_printer.hpp"
 #include "envision/text_printer.hpp"
 #include "geometry/metric_scene_parser.hpp"
@@ -27,6 +29,7 @@ struct Options {
     std::size_t max_states = 1'000'000;
     std::optional<std::filesystem::path> cache, rules;
     std::vector<std::string> without;
+    std::optional<std::string> next, previous;
 };
 
 int usage_error(std::ostream& err, const std::string& what) {
@@ -106,7 +109,7 @@ private:
 
 const char* envision_usage() noexcept {
     return "       qm-atms envision METRIC-SCENE [--table | --json] [--max-states N] [--without 'Force PART [CAUSE]']...\n"
-           "                        [--cache DIR | --no-cache] [--rules DIR] [--stats]\n"
+           "                        [--next STATE] [--previous STATE] [--cache DIR | --no-cache] [--rules DIR] [--stats]\n"
            "                                                  the envisionment: states, transitions, cycles (docs/ENVISION.md)\n";
 }
 
@@ -124,6 +127,8 @@ int envision_command(std::span<const std::string> args, std::ostream& out, std::
         else if (a == "--cache" && has_value) o.cache = args[++i];
         else if (a == "--rules" && has_value) o.rules = args[++i];
         else if (a == "--without" && has_value) o.without.push_back(args[++i]);
+        else if (a == "--next" && has_value) o.next = args[++i];
+        else if (a == "--previous" && has_value) o.previous = args[++i];
         else if (a == "--max-states" && has_value) {
             const auto n = count_of(args[++i]);
             if (!n || *n == 0) return usage_error(err, "--max-states takes a positive whole number, not '" + args[i] + "'");
@@ -167,6 +172,22 @@ int envision_command(std::span<const std::string> args, std::ostream& out, std::
     diags.print(err);
     if (!e || diags.has_errors()) return 2;
     std::ostringstream text;
+    if (o.next || o.previous) {
+        for (const auto& [option, value] : {std::pair{"--next", o.next}, std::pair{"--previous", o.previous}}) {
+            if (!value) continue;
+            const auto s = ev::find_state(*e, *value, option, diags);
+            if (!s) continue;
+            if (std::string(option) == "--next") {
+                if (!ev::write_next(text, *m, *e, *s, options, diags)) break;
+            } else {
+                ev::write_previous(text, *e, *s);
+            }
+        }
+        diags.print(err);
+        if (diags.has_errors()) return 2;
+        out << text.str();
+        return 0;
+    }
     if (o.json) ev::write_json(text, *m, *e);
     else if (o.table) ev::write_table(text, *m, *e);
     else ev::write_text(text, *m, *e);

@@ -16,6 +16,10 @@ std::optional<Laws> Laws::load(const std::filesystem::path& folder, Diagnostics&
         return std::nullopt;
     }
     std::sort(files.begin(), files.end());
+    return load_files(files, folder, diagnostics);
+}
+
+std::optional<Laws> Laws::load_files(std::span<const std::string> files, const std::filesystem::path& folder, Diagnostics& diagnostics) {
     auto program = engine::load_programs(files, diagnostics);
     if (!program) return std::nullopt;
     return Laws(std::move(*program), folder);

@@ -14,12 +14,17 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <span>
+#include <string>
 
 namespace qm::envision {
 
 class Laws {
 public:
     [[nodiscard]] static std::optional<Laws> load(const std::filesystem::path& folder, Diagnostics& diagnostics);
+    // Exactly these files (e.g. a folder's files but one, to see what that law changes).
+    [[nodiscard]] static std::optional<Laws> load_files(std::span<const std::string> files, const std::filesystem::path& folder,
+                                                        Diagnostics& diagnostics);
     [[nodiscard]] std::unique_ptr<engine::Engine> engine() const;
     [[nodiscard]] const std::filesystem::path& folder() const noexcept { return folder_; }
 

@@ -1,5 +1,5 @@
 // envision/successors.cpp: hypothesised next states, collisions, consistency along the chain
-// (thesis Figure 8.5 step 1.4, 8.3.4, 8.3.5).
+// (thesis Figure 8.5 step 1.4, 8.3.3-8.3.5).
 #include "envision/successors.hpp"
 #include "atms/pareto_front.hpp"
 
@@ -11,9 +11,12 @@ namespace g = qm::geometry;
 
 namespace {
 
-struct Hypothesis {
-    std::vector<PlaceOption> places;   // per pair
-    std::vector<std::int8_t> motions;  // per object
+// A pair whose arrival changes its motion (a collision, the end of an axis): the motions its two
+// parts may have after, each a branch of its own (5.3.3: no two collisions at once, each outcome
+// its own history).
+struct Arrival {
+    std::size_t pair = 0;
+    std::vector<g::QualDirection> after;
 };
 
 class Builder {
@@ -26,18 +29,17 @@ public:
     }
 
     void step(const StepOptions& s) {
-        // A pair that may wrap may also stay: the two reach the same state, so keep the wrap.
+        // A pair that may wrap may also stay: both reach the same state, so keep the wrap.
         std::vector<std::vector<PlaceOption>> places = s.places;
         for (std::size_t k = 0; k < places.size(); ++k) {
             auto& opts = places[k];
-            const bool wraps = std::any_of(opts.begin(), opts.end(), [](const PlaceOption& o) { return o.how == How::wrap; });
-            if (wraps)
+            if (std::any_of(opts.begin(), opts.end(), [](const PlaceOption& o) { return o.how == How::wrap; }))
                 opts.erase(std::remove_if(opts.begin(), opts.end(),
                                           [&](const PlaceOption& o) { return o.how == How::stay && o.place == current_.places[k]; }),
                            opts.end());
         }
-        Hypothesis h{std::vector<PlaceOption>(places.size()), std::vector<std::int8_t>(s.motions.size())};
-        combine(s, places, 0, h);
+        std::vector<PlaceOption> chosen(places.size());
+        combine_places(s, places, 0, chosen);
     }
 
     [[nodiscard]] std::vector<Transition> transitions() const {
@@ -47,92 +49,101 @@ public:
     }
 
 private:
-    // Odometer over the pairs' options, then the objects'.
-    void combine(const StepOptions& s, const std::vector<std::vector<PlaceOption>>& places, std::size_t i, Hypothesis& h) {
-        if (i < places.size()) {
-            for (const auto& o : places[i]) {
-                h.places[i] = o;
-                combine(s, places, i + 1, h);
+    // One next place per pair (8.3.2: "all combinations of the changes in place").
+    void combine_places(const StepOptions& s, const std::vector<std::vector<PlaceOption>>& places, std::size_t k,
+                        std::vector<PlaceOption>& chosen) {
+        if (k < places.size()) {
+            for (const auto& o : places[k]) {
+                chosen[k] = o;
+                combine_places(s, places, k + 1, chosen);
             }
             return;
         }
-        const std::size_t o = i - places.size();
-        if (o < s.motions.size()) {
-            for (const auto m : s.motions[o]) {
-                h.motions[o] = m;
-                combine(s, places, i + 1, h);
-            }
-            return;
+        // Each pair's arrival with each motion the step allows its parts.
+        std::vector<Arrival> arrivals;
+        for (std::size_t p = 0; p < chosen.size(); ++p) {
+            Arrival a{p, {}};
+            bool unchanged = true;
+            for (const auto ma : s.motions[parts_[p].first])
+                for (const auto mb : s.motions[parts_[p].second]) {
+                    const g::QualDirection v{{ma, mb}};
+                    for (const auto after : tables_.arrival(p, chosen[p].place, chosen[p].how, v)) {
+                        unchanged = unchanged && after == v;
+                        if (std::find(a.after.begin(), a.after.end(), after) == a.after.end()) a.after.push_back(after);
+                    }
+                }
+            if (a.after.empty()) return;  // the laws give no way on: no such next state
+            if (!unchanged) arrivals.push_back(std::move(a));
         }
-        settle(s, h);
+        std::vector<g::QualDirection> branch(arrivals.size());
+        choose(s, chosen, arrivals, 0, branch);
     }
 
-    // Each pair's arrival (collision, end of axis), then the chain's consistency.
-    void settle(const StepOptions& s, const Hypothesis& h) {
-        std::vector<const std::vector<g::QualDirection>*> afters;
-        for (std::size_t k = 0; k < h.places.size(); ++k) {
-            const auto& list = tables_.arrival(k, h.places[k].place, h.places[k].how, pair_motion(k, h.motions));
-            if (list.empty()) return;  // the laws give no way on: no such next state
-            afters.push_back(&list);
-        }
-        std::vector<g::QualDirection> chosen(afters.size());
-        choose(s, h, afters, 0, chosen);
-    }
-
-    void choose(const StepOptions& s, const Hypothesis& h, const std::vector<const std::vector<g::QualDirection>*>& afters,
-                std::size_t k, std::vector<g::QualDirection>& chosen) {
-        if (k < afters.size()) {
-            for (const auto a : *afters[k]) {
-                chosen[k] = a;
-                choose(s, h, afters, k + 1, chosen);
+    void choose(const StepOptions& s, const std::vector<PlaceOption>& places, const std::vector<Arrival>& arrivals, std::size_t i,
+                std::vector<g::QualDirection>& branch) {
+        if (i < arrivals.size()) {
+            for (const auto after : arrivals[i].after) {
+                branch[i] = after;
+                choose(s, places, arrivals, i + 1, branch);
             }
             return;
         }
-        // Motions fixed by the step (a change of motion) and by arrivals (a collision).
-        std::vector<std::optional<std::int8_t>> fixed(h.motions.size());
-        for (std::size_t o = 0; o < h.motions.size(); ++o)
-            if (h.motions[o] != current_.motions[o]) fixed[o] = h.motions[o];
-        std::uint8_t causes = s.cause;
-        bool wraps = false, changes = false;
-        for (std::size_t k = 0; k < chosen.size(); ++k) {
-            const auto& opt = h.places[k];
-            wraps = wraps || opt.how == How::wrap;
-            if (opt.place != current_.places[k] || opt.how == How::wrap) causes |= Cause::kinematic;
-            changes = changes || opt.place != current_.places[k];
-            if (chosen[k] == pair_motion(k, h.motions)) continue;
-            causes |= Cause::collision;
-            const auto [a, b] = parts_[k];
-            for (const auto& [o, x] : {std::pair{a, chosen[k].s[0]}, std::pair{b, chosen[k].s[1]}}) {
+        settle(s, places, arrivals, branch);
+    }
+
+    // The chain made consistent (8.3.4): among the states with these places, those whose colliding
+    // pairs move as the branch says and whose objects that must change (the current motion is not
+    // among the step's options) take one of their options; of those, the ones no other beats in
+    // nearness to the step's options for every other object at once.
+    void settle(const StepOptions& s, const std::vector<PlaceOption>& places, const std::vector<Arrival>& arrivals,
+                const std::vector<g::QualDirection>& branch) {
+        const std::size_t n = current_.motions.size();
+        std::vector<std::optional<std::int8_t>> fixed(n);
+        for (std::size_t i = 0; i < arrivals.size(); ++i) {
+            const auto [a, b] = parts_[arrivals[i].pair];
+            for (const auto& [o, x] : {std::pair{a, branch[i].s[0]}, std::pair{b, branch[i].s[1]}}) {
                 if (fixed[o] && *fixed[o] != x) return;  // two collisions disagree (5.3.3: never at once)
                 fixed[o] = x;
             }
         }
-        for (std::size_t o = 0; o < fixed.size(); ++o) changes = changes || (fixed[o] && *fixed[o] != current_.motions[o]);
-        if (!changes && !wraps) return;  // nothing happens: no transition
-        std::vector<g::PlaceId> places;
-        for (const auto& opt : h.places) places.push_back(opt.place);
+        std::vector<bool> must(n, false);
+        for (std::size_t o = 0; o < n; ++o)
+            must[o] = std::find(s.motions[o].begin(), s.motions[o].end(), current_.motions[o]) == s.motions[o].end();
+        bool wraps = false;
+        std::uint8_t causes = s.cause | (arrivals.empty() ? 0 : Cause::collision);
+        std::vector<g::PlaceId> target;
+        for (std::size_t k = 0; k < places.size(); ++k) {
+            wraps = wraps || places[k].how == How::wrap;
+            if (places[k].place != current_.places[k] || places[k].how == How::wrap) causes |= Cause::kinematic;
+            target.push_back(places[k].place);
+        }
         std::vector<StateId> candidates;
         std::vector<std::vector<int>> ranks;
-        for (const StateId id : states_.with_places(places)) {
+        for (const StateId id : states_.with_places(target)) {
             const State& t = states_[id];
             bool ok = true;
             std::vector<int> r;
-            for (std::size_t o = 0; o < fixed.size() && ok; ++o) {
+            for (std::size_t o = 0; o < n && ok; ++o) {
+                const auto& options = s.motions[o];
                 if (fixed[o]) ok = t.motions[o] == *fixed[o];
-                else r.push_back(tables_.rank(h.motions[o], t.motions[o]));
+                else if (must[o]) ok = std::find(options.begin(), options.end(), t.motions[o]) != options.end();
+                else r.push_back(nearness(options, t.motions[o]));
             }
             if (!ok) continue;
             candidates.push_back(id);
             ranks.push_back(std::move(r));
         }
         for (const std::size_t i : atms::pareto_front(ranks)) {
-            if (candidates[i] == from_ && !wraps) continue;
+            if (candidates[i] == from_ && !wraps) continue;  // nothing happens: no transition
             found_[{candidates[i], s.duration}] |= causes;
         }
     }
 
-    g::QualDirection pair_motion(std::size_t k, const std::vector<std::int8_t>& motions) const {
-        return g::QualDirection{{motions[parts_[k].first], motions[parts_[k].second]}};
+    // Def 38 with 8.3.4's threshold: how near a motion is to the nearest of an object's options.
+    int nearness(const std::vector<std::int8_t>& options, std::int8_t m) const {
+        int best = 3;
+        for (const auto y : options) best = std::min(best, tables_.rank(y, m));
+        return best;
     }
 
     StateId from_;

@@ -1,0 +1,72 @@
+// envision/state_report.cpp: "what happens next", "what could have just happened" (11.2.1).
+#include "envision/state_report.hpp"
+#include "bridge/clock_vocabulary.hpp"
+#include "envision/fact_reader.hpp"
+#include "envision/state_dynamics.hpp"
+
+namespace qm::envision {
+
+namespace {
+
+std::string transition_text(const Envisionment& e, const ChainEnvisionment& c, const Transition& t, StateId other) {
+    std::string causes;
+    for (const auto& w : cause_words(t.causes)) causes += (causes.empty() ? "" : ", ") + w;
+    return "#" + std::to_string(other.value) + " " + state_name(e, c, other) + "  (" + to_string(t.duration) + "; " + causes + ")";
+}
+
+}  // namespace
+
+bool write_next(std::ostream& os, const geometry::Mechanism& m, const Envisionment& e, const StateRef& s, const EnvisionOptions& options,
+                Diagnostics& diagnostics) {
+    const ChainEnvisionment& c = e.chains[s.chain];
+    const auto laws = Laws::load(options.rules, diagnostics);
+    if (!laws) return false;
+    auto run = run_state(*laws, m, e.pairs, c.chain, c.states[s.state], options.without, diagnostics);
+    if (!run) return false;
+    const auto dynamics = read_dynamics(*run, m, e.pairs, c.chain, diagnostics);
+    if (!dynamics) return false;
+    os << "state #" << s.state.value << ' ' << state_name(e, c, s.state) << " (chain " << c.chain.index + 1 << ")\n";
+    const FactReader read(*run->engine, run->environment);
+    os << "  forces:";
+    bool any = false;
+    read.each(bridge::clock::force_on, 3, [&](std::span<const engine::ValueId> a) {
+        os << (any ? ";" : "") << ' ' << read.symbol(a[0]) << " (" << sign_word(read.sign(a[1])) << ") " << read.symbol(a[2]);
+        any = true;
+    });
+    os << (any ? "\n" : " none\n") << "  net force:";
+    for (std::size_t o = 0; o < c.chain.objects.size(); ++o)
+        os << (o ? "," : "") << ' ' << m.parts[c.chain.objects[o]].name << " (" << sign_word(dynamics->net_force[o]) << ')';
+    os << '\n';
+    for (const auto& step : dynamics->steps) {
+        os << "  step " << step.name << " (" << to_string(step.duration) << ", " << cause_words(step.cause).front() << "):";
+        for (std::size_t k = 0; k < step.places.size(); ++k) {
+            os << ' ' << e.pairs[c.chain.pairs[k]].name << " ->";
+            for (const auto& o : step.places[k]) os << ' ' << o.place.value << ' ' << to_string(o.how) << (&o == &step.places[k].back() ? "" : ",");
+            os << ';';
+        }
+        for (std::size_t o = 0; o < step.motions.size(); ++o) {
+            os << ' ' << m.parts[c.chain.objects[o]].name;
+            for (const auto x : step.motions[o]) os << ' ' << sign_word(x);
+            os << (o + 1 < step.motions.size() ? ";" : "");
+        }
+        os << '\n';
+    }
+    if (dynamics->steps.empty()) os << "  no step: nothing changes (a terminal state)\n";
+    std::size_t n = 0;
+    for (const auto& t : c.transitions) n += t.from == s.state;
+    os << "  next (" << n << "):\n";
+    for (const auto& t : c.transitions)
+        if (t.from == s.state) os << "    " << transition_text(e, c, t, t.to) << '\n';
+    return true;
+}
+
+void write_previous(std::ostream& os, const Envisionment& e, const StateRef& s) {
+    const ChainEnvisionment& c = e.chains[s.chain];
+    std::size_t n = 0;
+    for (const auto& t : c.transitions) n += t.to == s.state;
+    os << "state #" << s.state.value << ' ' << state_name(e, c, s.state) << " (chain " << c.chain.index + 1 << ")\n  previous (" << n << "):\n";
+    for (const auto& t : c.transitions)
+        if (t.to == s.state) os << "    " << transition_text(e, c, t, t.from) << '\n';
+}
+
+}  // namespace qm::envision
