@@ -6,6 +6,7 @@
 #include "geometry/metric_scene_parser.hpp"
 #include <doctest/doctest.h>
 #include <filesystem>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -43,9 +44,21 @@ inline Envisionment envisioned(const geometry::Mechanism& m, const EnvisionOptio
     if (o.rules.empty()) o.rules = rules_folder();
     if (!o.cache) o.cache = &test_cache();
     Diagnostics d;
-    auto e = envision(m, o, d);
+    auto e = qm::envision::envision(m, o, d);
     REQUIRE_MESSAGE(e.has_value(), printed(d));
     return std::move(*e);
+}
+
+// The envisionment of a bundled mechanism with the default laws, computed once per test program.
+inline const Envisionment& envisioned_once(const std::string& relative) {
+    static std::map<std::string, std::pair<geometry::Mechanism, Envisionment>> done;
+    auto it = done.find(relative);
+    if (it == done.end()) {
+        auto m = mechanism(relative);
+        auto e = envisioned(m);
+        it = done.emplace(relative, std::pair{std::move(m), std::move(e)}).first;
+    }
+    return it->second.second;
 }
 
 // The bundled metric mechanisms the envisioner is checked on.
