@@ -26,6 +26,7 @@ inline constexpr const char* gap_place = "gap-place";            // (gap-place P
 inline constexpr const char* adjacent = "adjacent";              // (adjacent P PLACE NEXT V DURATION)
 inline constexpr const char* force_sign_at = "force-sign-at";    // (force-sign-at P PLACE O S C)
 inline constexpr const char* constant_force = "constant-force";  // (constant-force O S C)
+inline constexpr const char* places_apart = "places-apart";      // (places-apart P PLACE Q PLACE2)
 inline constexpr const char* current_place = "current-place";    // (current-place P PLACE)
 inline constexpr const char* current_motion = "current-motion";  // (current-motion O M)
 // ---- assumptions ----

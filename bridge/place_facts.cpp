@@ -2,6 +2,7 @@
 // facts (the table in place_facts.hpp).
 #include "bridge/place_facts.hpp"
 #include "bridge/clock_vocabulary.hpp"
+#include "bridge/place_correlation.hpp"
 #include "geometry/external_force.hpp"
 
 #include <algorithm>
@@ -64,7 +65,7 @@ void assert_pair(engine::Engine& e, const g::Mechanism& m, const PairPlaces& pai
     const ValueId p = f.sym(pair.name);
     f.premise(clock::pair, {p, f.sym(m.parts[pair.spec.a].name), f.sym(m.parts[pair.spec.b].name)}, pair.spec.where);
     for (int k = 0; k < 2; ++k)
-        f.premise(clock::axis, {p, f.num(k + 1), f.sym(pair.periodic[static_cast<std::size_t>(k)] ? "periodic" : "bounded")});
+        f.premise(clock::axis, {p, f.num(k + 1), f.sym(pair.axes[static_cast<std::size_t>(k)].periodic ? "periodic" : "bounded")});
     if (options.choice) {
         std::vector<ValueId> ids;
         for (const auto& place : pair.vocabulary.places) ids.push_back(f.num(place.id.value));
@@ -83,6 +84,18 @@ void assert_pair(engine::Engine& e, const g::Mechanism& m, const PairPlaces& pai
         const char* duration = a.constrained ? "constrained" : a.instantaneous ? "instant" : "interval";
         f.premise(clock::adjacent, {p, f.num(a.from.value), f.num(a.to.value), f.dir(direction_text(a.motion)), f.sym(duration)});
     }
+}
+
+void assert_correlation(engine::Engine& e, const g::Mechanism& m, const PairPlaces& p, const PairPlaces& q) {
+    Facts f(e);
+    const g::PartId pp[2] = {p.spec.a, p.spec.b}, qq[2] = {q.spec.a, q.spec.b};
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) {
+            if (!m.same_shaft(pp[i], qq[j]) || m.parts[pp[i]].fixed()) continue;
+            for (const auto& [x, y] : places_apart(p.vocabulary, i, p.axes[static_cast<std::size_t>(i)], q.vocabulary, j,
+                                                   q.axes[static_cast<std::size_t>(j)]))
+                f.premise(clock::places_apart, {f.sym(p.name), f.num(x.value), f.sym(q.name), f.num(y.value)});
+        }
 }
 
 void assert_parts(engine::Engine& e, const g::Mechanism& m, std::span<const g::PartId> parts, bool choices) {

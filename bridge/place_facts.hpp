@@ -20,6 +20,9 @@
 //   a position-dependent force of CAUSE on part O    (force-sign-at P ID O S CAUSE), S its sign at
 //     at the place (place_forces.hpp)                 the place: (+), (0) or (-)
 //   a force not depending on position                (constant-force O S CAUSE)
+//   places of two pairs sharing a part's coordinate   (places-apart P PLACE Q PLACE2)
+//     that cover disjoint values of it (Def 34,       [states only; place_correlation.hpp]
+//     place_correlation.hpp)
 //   a part of the chain                              (clock-object O); a fixed one also (fixed-part O)
 //   the motions a part may have (8.2.2)              (possible-motions O {(+) (0) (-)}) [states only]
 //   two parts on one shaft (Def 21)                  (linkage A B)
@@ -38,6 +41,7 @@
 // Knows nothing of any law: rules/clock/ decides what the facts mean.
 #pragma once
 #include "bridge/place_forces.hpp"
+#include "geometry/cspace.hpp"
 #include "engine/engine.hpp"
 #include "geometry/mechanism.hpp"
 #include "geometry/place_vocabulary.hpp"
@@ -54,7 +58,7 @@ struct PairPlaces {
     std::string name;                       // "A/B": the pair's symbol in facts and output
     geometry::PairSpec spec;                // its parts (a: axis q0, b: axis q1) and declaration
     geometry::PlaceVocabulary vocabulary;
-    std::array<bool, 2> periodic{true, true};  // per axis
+    std::array<geometry::CSpaceAxis, 2> axes{};  // its configuration space's axes (q0, q1)
     PairForces forces;                      // position-dependent forces by place
     bool from_cache = false;
 };
@@ -71,6 +75,10 @@ struct PlaceFactOptions {
 
 // (pair ...), (axis ...), the places' kind, normals, concavity, gaps, adjacency and force signs.
 void assert_pair(engine::Engine& e, const geometry::Mechanism& m, const PairPlaces& pair, const PlaceFactOptions& options);
+
+// (places-apart P PLACE Q PLACE2) for every two places of pairs p and q (distinct, sharing a part's
+// coordinate) that cannot hold at once (place_correlation.hpp).
+void assert_correlation(engine::Engine& e, const geometry::Mechanism& m, const PairPlaces& p, const PairPlaces& q);
 
 // (clock-object O) for each part, (fixed-part O), and with `choices`, (possible-motions O ...).
 void assert_parts(engine::Engine& e, const geometry::Mechanism& m, std::span<const geometry::PartId> parts, bool choices);

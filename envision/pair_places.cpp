@@ -53,7 +53,7 @@ std::optional<std::vector<bridge::PairPlaces>> load_pair_places(const g::Mechani
         bridge::PairPlaces pair;
         pair.name = bridge::pair_symbol(m.parts[spec.a].name, m.parts[spec.b].name);
         pair.spec = spec;
-        pair.periodic = {request.cspace.axes[0].periodic, request.cspace.axes[1].periodic};
+        pair.axes = request.cspace.axes;
         pair.vocabulary = vocabulary_of(*oracle, request, cache, pair.from_cache);
         const std::string names = "'" + m.parts[spec.a].name + "' and '" + m.parts[spec.b].name + "'";
         if (pair.vocabulary.count(g::PlaceKind::face) == 0) {

@@ -119,6 +119,8 @@ std::optional<StateSpace> enumerate_states(const Laws& laws, const g::Mechanism&
     bridge::assert_parts(*e, m, chain.objects, /*choices=*/true);
     bridge::assert_linkages(*e, m, chain.objects);
     for (const std::size_t k : chain.pairs) bridge::assert_pair(*e, m, pairs[k], {std::nullopt, std::nullopt, /*choice=*/true});
+    for (std::size_t i = 0; i < chain.pairs.size(); ++i)
+        for (std::size_t j = i + 1; j < chain.pairs.size(); ++j) bridge::assert_correlation(*e, m, pairs[chain.pairs[i]], pairs[chain.pairs[j]]);
     const std::size_t before = diagnostics.size();
     e->run(diagnostics);
     for (std::size_t i = before; i < diagnostics.size(); ++i)

@@ -12,6 +12,7 @@
 //     with 8.3.4's threshold, Pareto over objects).
 // Plain C++ over the geometry's values; no engine, no rule.
 #pragma once
+#include "bridge/place_correlation.hpp"
 #include "bridge/place_facts.hpp"
 #include "envision/chain.hpp"
 #include "geometry/kinematic_pairs.hpp"
@@ -51,6 +52,19 @@ public:
             ends_.emplace_back(chain.object_index(all[k].spec.a), chain.object_index(all[k].spec.b));
             request_.push_back(g::place_request(m, all[k].spec));
         }
+        // Def 34: places of two pairs that hold one part's coordinate and cover disjoint values of
+        // it (the geometry's comparison of lines and joins, bridge/place_correlation.hpp).
+        for (std::size_t i = 0; i < pairs_.size(); ++i)
+            for (std::size_t j = i + 1; j < pairs_.size(); ++j) {
+                const g::PartId pi[2] = {pairs_[i]->spec.a, pairs_[i]->spec.b}, pj[2] = {pairs_[j]->spec.a, pairs_[j]->spec.b};
+                for (int x = 0; x < 2; ++x)
+                    for (int y = 0; y < 2; ++y) {
+                        if (!m.same_shaft(pi[x], pj[y]) || m.parts[pi[x]].fixed()) continue;
+                        for (const auto& [a, b] : bridge::places_apart(pairs_[i]->vocabulary, x, request_[i].cspace.axes[static_cast<std::size_t>(x)],
+                                                                       pairs_[j]->vocabulary, y, request_[j].cspace.axes[static_cast<std::size_t>(y)]))
+                            apart_.insert({i, a.value, j, b.value});
+                    }
+            }
     }
 
     // ---- Law 2 at a place: the normals (Defs 29-30) and the metric diagram (8.1.3) ----
@@ -88,6 +102,9 @@ public:
         }
         for (std::size_t k = 0; k < pairs_.size(); ++k)
             if (blocked(k, s.places[k], pair_motion(k, s.motions))) return false;
+        for (std::size_t i = 0; i < pairs_.size(); ++i)
+            for (std::size_t j = i + 1; j < pairs_.size(); ++j)
+                if (apart_.count({i, s.places[i], j, s.places[j]})) return false;
         // Def 34: a force has one sign where two pairs hold its part.
         std::map<std::pair<std::uint32_t, std::string>, int> sign;
         for (std::size_t k = 0; k < pairs_.size(); ++k)
@@ -188,6 +205,7 @@ private:
     std::vector<const bridge::PairPlaces*> pairs_;
     std::vector<std::pair<std::size_t, std::size_t>> ends_;
     std::vector<g::PlaceRequest> request_;
+    std::set<std::tuple<std::size_t, std::uint32_t, std::size_t, std::uint32_t>> apart_;
 };
 
 }  // namespace qm::envision::checker
