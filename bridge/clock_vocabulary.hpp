@@ -5,6 +5,7 @@
 //             (premises and assumptions) and in the rule file that concludes it (conclusions).
 // Knows nothing of any law: which fact follows from which is only in rules/clock/.
 #pragma once
+#include <initializer_list>
 
 namespace qm::bridge::clock {
 // ---- premises (bridge/place_facts.hpp) ----
@@ -42,4 +43,16 @@ inline constexpr const char* place_option = "place-option";      // (place-optio
 inline constexpr const char* motion_option = "motion-option";    // (motion-option S O M)
 inline constexpr const char* force_on = "force-on";              // (force-on O S C)
 inline constexpr const char* net_force = "net-force";            // (net-force O S)
+
+// What a chain's state-space engine is given and read for (envision/state_space.hpp), and what one
+// state's engine is (envision/state_dynamics.hpp): the envisioner gives each engine only the laws
+// that can matter for these (engine/program_slice.hpp).
+inline const std::initializer_list<const char*> state_space_inputs{
+    pair, pair_places, axis, clock_object, possible_motions, fixed_part, linkage, place_kind, join_kind, place_normal,
+    place_normals, join_concave, join_convex, gap_place, adjacent, force_sign_at, places_apart};
+inline const std::initializer_list<const char*> state_space_outputs{at, motion, arrival, nearness_rank};
+inline const std::initializer_list<const char*> state_inputs{
+    pair, axis, clock_object, fixed_part, linkage, cause, place_normal, place_normals, join_concave, join_convex, gap_place,
+    adjacent, force_sign_at, constant_force, current_place, current_motion, external_force};
+inline const std::initializer_list<const char*> state_outputs{step, place_option, motion_option, force_on, net_force};
 }  // namespace qm::bridge::clock

@@ -36,10 +36,10 @@ const char* kind_word(g::PlaceKind k) { return g::to_string(k); }
 
 char sign_char(int s) { return s > 0 ? '+' : s < 0 ? '-' : '0'; }
 
-void place_facts(Facts& f, const PairPlaces& pair, const g::Place& place) {
+void place_facts(Facts& f, const PairPlaces& pair, const g::Place& place, bool kinds) {
     const ValueId p = f.sym(pair.name), id = f.num(place.id.value);
-    f.premise(clock::place_kind, {p, id, f.sym(kind_word(place.kind))});
-    if (place.kind == g::PlaceKind::join) f.premise(clock::join_kind, {p, id, f.sym(g::to_string(place.join_kind))});
+    if (kinds) f.premise(clock::place_kind, {p, id, f.sym(kind_word(place.kind))});
+    if (kinds && place.kind == g::PlaceKind::join) f.premise(clock::join_kind, {p, id, f.sym(g::to_string(place.join_kind))});
     if (!place.normals.empty()) {
         std::vector<ValueId> normals;
         for (const auto n : place.normals) {
@@ -74,13 +74,14 @@ void assert_pair(engine::Engine& e, const g::Mechanism& m, const PairPlaces& pai
     auto wanted = [&](g::PlaceId id) { return !options.only || *options.only == id; };
     for (const auto& place : pair.vocabulary.places) {
         if (!wanted(place.id)) continue;
-        place_facts(f, pair, place);
+        place_facts(f, pair, place, options.kinds);
         for (const auto& force : pair.forces.by_place[place.id.value])
             f.premise(clock::force_sign_at, {p, f.num(place.id.value), f.sym(m.parts[force.part].name), f.dir(sign_text(force.sign)),
                                              f.sym(force.cause)});
     }
     for (const auto& a : pair.vocabulary.adjacency) {
         if (!wanted(a.from) || (options.motion && a.motion != *options.motion)) continue;
+        if (!options.motion && !options.motions.empty() && !options.motions.count(a.motion)) continue;
         const char* duration = a.constrained ? "constrained" : a.instantaneous ? "instant" : "interval";
         f.premise(clock::adjacent, {p, f.num(a.from.value), f.num(a.to.value), f.dir(direction_text(a.motion)), f.sym(duration)});
     }
@@ -155,6 +156,11 @@ void assert_current_place(engine::Engine& e, const PairPlaces& pair, g::PlaceId 
 void assert_current_motion(engine::Engine& e, const g::Mechanism& m, g::PartId part, int sign) {
     Facts f(e);
     f.premise(clock::current_motion, {f.sym(m.parts[part].name), f.dir(sign_text(sign))});
+}
+
+engine::FactId assume_current_motion(engine::Engine& e, const g::Mechanism& m, g::PartId part, int sign) {
+    Facts f(e);
+    return f.assumption(clock::current_motion, {f.sym(m.parts[part].name), f.dir(sign_text(sign))}, m.part_where[part.value]);
 }
 
 }  // namespace qm::bridge

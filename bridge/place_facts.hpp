@@ -30,7 +30,9 @@
 //   an external force of CAUSE acting on part O      ASSUMPTION (external-force O CAUSE), so that a
 //                                                     conclusion's label names the forces it rests on
 //                                                     and a force can be taken away (--without)
-//   the current state (one engine per state)         (current-place P ID), (current-motion O M)
+//   the current state                                (current-place P ID), (current-motion O M): premises,
+//                                                     or the motions as assumptions when one engine
+//                                                     holds the states of one place vector
 //
 //             Signs and directions are the rule language's: (+) counter-clockwise or along the
 //             axis. A place id is the place's index in the vocabulary, as `--places` prints it.
@@ -48,6 +50,7 @@
 #include "geometry/qualitative_sign.hpp"
 #include <array>
 #include <optional>
+#include <set>
 #include <span>
 #include <string>
 #include <vector>
@@ -71,6 +74,10 @@ struct PlaceFactOptions {
     std::optional<geometry::PlaceId> only;           // one place (the current one), else all
     std::optional<geometry::QualDirection> motion;   // only the adjacency under this motion
     bool choice = false;                             // also (pair-places P SET)
+    bool kinds = true;                               // (place-kind ...), (join-kind ...): what a
+                                                     // state's own engine does not need (the laws
+                                                     // of blocking and arrival read them once)
+    std::set<geometry::QualDirection> motions;       // with `motion` unset: only these (empty: all)
 };
 
 // (pair ...), (axis ...), the places' kind, normals, concavity, gaps, adjacency and force signs.
@@ -97,6 +104,8 @@ std::vector<engine::FactId> assert_forces(engine::Engine& e, const geometry::Mec
 // (current-place P ID) and (current-motion O M), M one of "+", "0", "-".
 void assert_current_place(engine::Engine& e, const PairPlaces& pair, geometry::PlaceId place);
 void assert_current_motion(engine::Engine& e, const geometry::Mechanism& m, geometry::PartId part, int sign);
+// (current-motion O M) as an assumption: one engine for several states (each a context).
+engine::FactId assume_current_motion(engine::Engine& e, const geometry::Mechanism& m, geometry::PartId part, int sign);
 
 // The rule language's one-sign direction for a sign (-1, 0, +1), and the pair direction.
 [[nodiscard]] std::string sign_text(int sign);

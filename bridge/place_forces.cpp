@@ -13,6 +13,7 @@ namespace {
 int sign_at(const g::Mechanism& m, const g::ExternalForce& f, double q) {
     const g::Part& part = m.parts[f.part];
     if (part.fixed() || !g::force_active(f, part, q)) return 0;
+    if (part.rotates() && f.kind == g::ExternalForce::Kind::torque) return f.torque_sign;  // (no arm to measure)
     if (part.rotates()) return g::torque_sign(f, part, q, m.settings.contact_tolerance * part.size());
     if (f.kind != g::ExternalForce::Kind::push) return 0;
     // A push on a sliding part: its projection on the axis (components within the normal zero

@@ -42,11 +42,15 @@ std::optional<Envisionment> envision(const geometry::Mechanism& m, const Envisio
         c.seconds_states = seconds_since(t0);
         t0 = std::chrono::steady_clock::now();
         const std::string phase = "chain " + std::to_string(c.chain.index + 1) + ": transitions";
+        // One engine per state (one per place vector, its states as contexts, measured slower:
+        // the contexts' labels cost more than the engines, docs/PERFORMANCE.md).
         for (std::uint32_t i = 0; i < c.states.size(); ++i) {
             const StateId id{i};
-            auto run = run_state(*laws, m, e.pairs, c.chain, c.states[id], options.without, diagnostics);
-            if (!run) return std::nullopt;
-            const auto dynamics = read_dynamics(*run, m, e.pairs, c.chain, diagnostics);
+            const State* const only[] = {&c.states[id]};
+            PlaceVectorEngine engine(*laws, m, e.pairs, c.chain, only, options.without);
+            const auto env = engine.run(0, diagnostics);
+            if (!env) return std::nullopt;
+            const auto dynamics = read_dynamics(engine.engine(), *env, m, e.pairs, c.chain, diagnostics);
             if (!dynamics) return std::nullopt;
             c.states[id].net_force = dynamics->net_force;
             auto out = successors(id, c.states, c.chain, e.pairs, space->tables, *dynamics);

@@ -11,16 +11,40 @@ namespace g = qm::geometry;
 
 namespace {
 
-g::PlaceVocabulary vocabulary_of(const g::PairOracle& oracle, const g::PlaceRequest& request, const g::PlaceCache* cache,
-                                 bool& from_cache) {
+// Only the cache key of a pair: its fingerprint, without the FCL meshes (building them costs more
+// than reading a cached vocabulary).
+class CacheKey final : public g::PairOracle {
+public:
+    explicit CacheKey(std::string fingerprint) : fingerprint_(std::move(fingerprint)) {}
+    [[nodiscard]] bool blocked(const Eigen::Vector2d&) const override { throw InternalError("CacheKey::blocked: only a cache key"); }
+    [[nodiscard]] Eigen::Vector2d free_normal(const Eigen::Vector2d&) const override {
+        throw InternalError("CacheKey::free_normal: only a cache key");
+    }
+    [[nodiscard]] std::string fingerprint() const override { return fingerprint_; }
+
+private:
+    std::string fingerprint_;
+};
+
+std::unique_ptr<g::FclPairOracle>& oracle_for(const g::Mechanism& m, const g::PairSpec& spec, std::unique_ptr<g::FclPairOracle>& oracle) {
+    if (!oracle) oracle = g::pair_oracle(m, spec);
+    return oracle;
+}
+
+g::PlaceVocabulary vocabulary_of(const g::Mechanism& m, const g::PairSpec& spec, const g::PlaceRequest& request,
+                                 const g::PlaceCache* cache, std::unique_ptr<g::FclPairOracle>& oracle, bool& from_cache) {
     from_cache = false;
     if (cache) {
-        auto loaded = g::build_or_load(oracle, request, *cache);
+        const CacheKey key(g::FclPairOracle::fingerprint_of(m.parts[spec.a], m.parts[spec.b], g::pair_chordal_tolerance(m, spec)));
+        if (auto hit = cache->load(g::place_cache_material(key, request)); hit.status == g::CacheStatus::hit) {
+            from_cache = true;
+            return std::move(hit.vocabulary);
+        }
+        auto loaded = g::build_or_load(*oracle_for(m, spec, oracle), request, *cache);
         if (loaded.status != g::PlaceStatus::ok) throw InternalError("place vocabulary: " + loaded.message);
-        from_cache = loaded.from_cache;
         return std::move(loaded.vocabulary);
     }
-    auto built = g::build_place_vocabulary(oracle, request);
+    auto built = g::build_place_vocabulary(*oracle_for(m, spec, oracle), request);
     if (built.status != g::PlaceStatus::ok) throw InternalError("place vocabulary: " + built.message);
     return std::move(built.vocabulary);
 }
@@ -48,17 +72,17 @@ std::optional<std::vector<bridge::PairPlaces>> load_pair_places(const g::Mechani
     }
     std::vector<bridge::PairPlaces> out;
     for (const auto& spec : selection.modelled) {
-        const auto oracle = g::pair_oracle(m, spec);
+        std::unique_ptr<g::FclPairOracle> oracle;  // built only when the cache cannot answer
         const auto request = g::place_request(m, spec);
         bridge::PairPlaces pair;
         pair.name = bridge::pair_symbol(m.parts[spec.a].name, m.parts[spec.b].name);
         pair.spec = spec;
         pair.axes = request.cspace.axes;
-        pair.vocabulary = vocabulary_of(*oracle, request, cache, pair.from_cache);
+        pair.vocabulary = vocabulary_of(m, spec, request, cache, oracle, pair.from_cache);
         const std::string names = "'" + m.parts[spec.a].name + "' and '" + m.parts[spec.b].name + "'";
         if (pair.vocabulary.count(g::PlaceKind::face) == 0) {
             const g::ContactRequest touching{m.settings.contact_tolerance, m.settings.normal_zero_tolerance};
-            if (auto in_contact = g::contact_place(*oracle, request, touching)) {
+            if (auto in_contact = g::contact_place(*oracle_for(m, spec, oracle), request, touching)) {
                 pair.vocabulary = std::move(*in_contact);
             } else {
                 m.error(diagnostics, spec.where,

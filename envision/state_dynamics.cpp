@@ -2,42 +2,71 @@
 #include "envision/state_dynamics.hpp"
 #include "bridge/clock_vocabulary.hpp"
 #include "envision/fact_reader.hpp"
+#include "qm/assert.hpp"
 
 #include <algorithm>
 #include <map>
+#include <set>
 
 namespace qm::envision {
 namespace g = qm::geometry;
 namespace v = qm::bridge::clock;
 
-std::optional<StateEngine> run_state(const Laws& laws, const g::Mechanism& m, std::span<const bridge::PairPlaces> pairs,
-                                     const Chain& chain, const State& state, std::span<const bridge::ForceRef> without,
-                                     Diagnostics& diagnostics) {
-    StateEngine out{laws.engine(), {}};
-    engine::Engine& e = *out.engine;
+PlaceVectorEngine::PlaceVectorEngine(const Laws& laws, const g::Mechanism& m, std::span<const bridge::PairPlaces> pairs,
+                                     const Chain& chain, std::span<const State* const> states, std::span<const bridge::ForceRef> without)
+    : engine_(laws.state_engine()) {
+    QM_REQUIRE(!states.empty(), "a place vector engine needs a state");
+    engine::Engine& e = *engine_;
     bridge::assert_parts(e, m, chain.objects, /*choices=*/false);
     bridge::assert_linkages(e, m, chain.objects);
     for (std::size_t k = 0; k < chain.pairs.size(); ++k) {
         const bridge::PairPlaces& pair = pairs[chain.pairs[k]];
-        const g::QualDirection motion{{state.motions[chain.object_index(pair.spec.a)], state.motions[chain.object_index(pair.spec.b)]}};
-        bridge::assert_pair(e, m, pair, {state.places[k], motion, /*choice=*/false});
-        bridge::assert_current_place(e, pair, state.places[k]);
+        // The adjacency under the motions of this place vector's states only.
+        std::set<g::QualDirection> motions;
+        for (const State* s : states) {
+            QM_REQUIRE(s->places == states.front()->places, "the states of a place vector engine share their places");
+            motions.insert(g::QualDirection{{s->motions[chain.object_index(pair.spec.a)], s->motions[chain.object_index(pair.spec.b)]}});
+        }
+        bridge::assert_pair(e, m, pair, {states.front()->places[k], std::nullopt, /*choice=*/false, /*kinds=*/false, motions});
+        bridge::assert_current_place(e, pair, states.front()->places[k]);
     }
-    for (std::size_t o = 0; o < chain.objects.size(); ++o) bridge::assert_current_motion(e, m, chain.objects[o], state.motions[o]);
-    const auto forces = bridge::assert_forces(e, m, chain.objects, /*assume=*/true, without);
-    std::vector<atms::AssumptionId> assumed;
-    for (const auto f : forces) assumed.push_back(*e.assumption(f));
-    const atms::EnvId context = e.atms().environment(assumed);
+    for (const auto f : bridge::assert_forces(e, m, chain.objects, /*assume=*/true, without)) forces_.push_back(*e.assumption(f));
+    if (states.size() == 1) {  // one state: its motions are premises, the context is its forces
+        for (std::size_t o = 0; o < chain.objects.size(); ++o) bridge::assert_current_motion(e, m, chain.objects[o], states.front()->motions[o]);
+        motions_.emplace_back();
+        return;
+    }
+    std::map<std::pair<std::size_t, std::int8_t>, atms::AssumptionId> assumed;
+    for (const State* s : states) {
+        std::vector<atms::AssumptionId> mine;
+        for (std::size_t o = 0; o < chain.objects.size(); ++o) {
+            auto it = assumed.find({o, s->motions[o]});
+            if (it == assumed.end()) {
+                const auto f = bridge::assume_current_motion(e, m, chain.objects[o], s->motions[o]);
+                it = assumed.emplace(std::pair{o, s->motions[o]}, *e.assumption(f)).first;
+            }
+            mine.push_back(it->second);
+        }
+        motions_.push_back(std::move(mine));
+    }
+}
+
+std::optional<atms::EnvId> PlaceVectorEngine::run(std::size_t i, Diagnostics& diagnostics) {
+    QM_REQUIRE(i < motions_.size(), "no such state in this place vector engine");
+    std::vector<atms::AssumptionId> context = forces_;
+    context.insert(context.end(), motions_[i].begin(), motions_[i].end());
+    engine::Engine& e = *engine_;
+    const atms::EnvId env = e.atms().environment(context);
     const std::size_t before = diagnostics.size();
-    out.environment = e.run_in_context(context, diagnostics).environment;
-    for (std::size_t i = before; i < diagnostics.size(); ++i)
-        if (diagnostics.items()[i].severity == Severity::error) return std::nullopt;
+    const atms::EnvId out = e.run_in_context(env, diagnostics).environment;
+    for (std::size_t k = before; k < diagnostics.size(); ++k)
+        if (diagnostics.items()[k].severity == Severity::error) return std::nullopt;
     return out;
 }
 
-std::optional<StateDynamics> read_dynamics(StateEngine& run, const g::Mechanism& m, std::span<const bridge::PairPlaces> pairs,
-                                           const Chain& chain, Diagnostics& diagnostics) {
-    const FactReader read(*run.engine, run.environment);
+std::optional<StateDynamics> read_dynamics(engine::Engine& e, atms::EnvId environment, const g::Mechanism& m,
+                                           std::span<const bridge::PairPlaces> pairs, const Chain& chain, Diagnostics& diagnostics) {
+    const FactReader read(e, environment);
     std::map<std::string, std::size_t> pair_index, object_index;
     for (std::size_t k = 0; k < chain.pairs.size(); ++k) pair_index[pairs[chain.pairs[k]].name] = k;
     for (std::size_t k = 0; k < chain.objects.size(); ++k) object_index[m.parts[chain.objects[k]].name] = k;

@@ -3,11 +3,13 @@
 //             steps 1.1-1.3): the net force on each object (8.3.1: forces gathered, propagated
 //             through contact and linkage, added with Law 5) and the steps the state may take, each
 //             with every pair's possible next places and every object's possible next motions
-//             (rules/clock/transition_order.rules). One engine per state: the state is its premises
-//             (current-place, current-motion), the chain's description those of the current places
-//             only (place kind, normals, the adjacency under the current motion, the forces there),
-//             and the external forces are assumptions; the laws run in the context of those forces
-//             (docs/RULES.md, "Semantics": `not` and aggregates are decided in it).
+//             (rules/clock/transition_order.rules). One engine per place vector: its places are
+//             premises (current-place), with the chain's description at those places only (normals,
+//             concavity, the adjacency from them, the forces there); the external forces and the
+//             motions of the place vector's states (current-motion) are assumptions, and each state
+//             is run as a context of the engine (its forces and its motions; docs/RULES.md,
+//             "Semantics": `not` and aggregates are decided in it), so what does not depend on
+//             the motions (forces passing through contacts) is derived once for all of them.
 // Ownership:  value types out; the engine lives during the call (or is handed back for questions).
 // Errors:     laws that give a pair or an object no option in a step, or a step no duration or
 //             cause the envisioner knows: located diagnostics (the rule files are input too).
@@ -43,18 +45,25 @@ struct StateDynamics {
     std::vector<StepOptions> steps;      // in name order
 };
 
-// The engine of one state, run: for reading more of what the laws concluded there.
-struct StateEngine {
-    std::unique_ptr<engine::Engine> engine;
-    atms::EnvId environment{};  // where the state's conclusions hold (forces + closed world)
+// The engine of one place vector and its states.
+class PlaceVectorEngine {
+public:
+    // Pre: every state belongs to chain and has the same places; without names forces of m.
+    PlaceVectorEngine(const Laws& laws, const geometry::Mechanism& m, std::span<const bridge::PairPlaces> pairs,
+                      const Chain& chain, std::span<const State* const> states, std::span<const bridge::ForceRef> without);
+    // Runs the laws in the context of states[i]: the environment where its conclusions hold, or
+    // nothing after errors (reported into diagnostics).
+    [[nodiscard]] std::optional<atms::EnvId> run(std::size_t i, Diagnostics& diagnostics);
+    [[nodiscard]] engine::Engine& engine() noexcept { return *engine_; }
+
+private:
+    std::unique_ptr<engine::Engine> engine_;
+    std::vector<atms::AssumptionId> forces_;
+    std::vector<std::vector<atms::AssumptionId>> motions_;  // per state: its parts' motions
 };
 
-// Pre: state belongs to chain; without names forces of the mechanism.
-[[nodiscard]] std::optional<StateEngine> run_state(const Laws& laws, const geometry::Mechanism& m,
-                                                   std::span<const bridge::PairPlaces> pairs, const Chain& chain,
-                                                   const State& state, std::span<const bridge::ForceRef> without,
-                                                   Diagnostics& diagnostics);
-[[nodiscard]] std::optional<StateDynamics> read_dynamics(StateEngine& run, const geometry::Mechanism& m,
+// What the laws concluded for one state, read in the environment its context run returned.
+[[nodiscard]] std::optional<StateDynamics> read_dynamics(engine::Engine& e, atms::EnvId environment, const geometry::Mechanism& m,
                                                          std::span<const bridge::PairPlaces> pairs, const Chain& chain,
                                                          Diagnostics& diagnostics);
 

@@ -21,12 +21,14 @@ bool write_next(std::ostream& os, const geometry::Mechanism& m, const Envisionme
     const ChainEnvisionment& c = e.chains[s.chain];
     const auto laws = Laws::load(options.rules, diagnostics);
     if (!laws) return false;
-    auto run = run_state(*laws, m, e.pairs, c.chain, c.states[s.state], options.without, diagnostics);
-    if (!run) return false;
-    const auto dynamics = read_dynamics(*run, m, e.pairs, c.chain, diagnostics);
+    const State* const only[] = {&c.states[s.state]};
+    PlaceVectorEngine engine(*laws, m, e.pairs, c.chain, only, options.without);
+    const auto env = engine.run(0, diagnostics);
+    if (!env) return false;
+    const auto dynamics = read_dynamics(engine.engine(), *env, m, e.pairs, c.chain, diagnostics);
     if (!dynamics) return false;
     os << "state #" << s.state.value << ' ' << state_name(e, c, s.state) << " (chain " << c.chain.index + 1 << ")\n";
-    const FactReader read(*run->engine, run->environment);
+    const FactReader read(engine.engine(), *env);
     os << "  forces:";
     bool any = false;
     read.each(bridge::clock::force_on, 3, [&](std::span<const engine::ValueId> a) {

@@ -115,10 +115,12 @@ bool state_less(const State& x, const State& y) {
 std::optional<StateSpace> enumerate_states(const Laws& laws, const g::Mechanism& m, std::span<const bridge::PairPlaces> pairs,
                                            const Chain& chain, std::size_t max_states, const ProgressFn& progress,
                                            Diagnostics& diagnostics) {
-    auto e = laws.engine();
+    auto e = laws.state_space_engine();
     bridge::assert_parts(*e, m, chain.objects, /*choices=*/true);
     bridge::assert_linkages(*e, m, chain.objects);
-    for (const std::size_t k : chain.pairs) bridge::assert_pair(*e, m, pairs[k], {std::nullopt, std::nullopt, /*choice=*/true});
+    bridge::PlaceFactOptions all;
+    all.choice = true;
+    for (const std::size_t k : chain.pairs) bridge::assert_pair(*e, m, pairs[k], all);
     for (std::size_t i = 0; i < chain.pairs.size(); ++i)
         for (std::size_t j = i + 1; j < chain.pairs.size(); ++j) bridge::assert_correlation(*e, m, pairs[chain.pairs[i]], pairs[chain.pairs[j]]);
     const std::size_t before = diagnostics.size();

@@ -53,7 +53,9 @@ TEST_CASE("bridge/place_facts: a pair's places and adjacency as facts") {
     const auto pair = pair_of(m);
     const auto& v = pair.vocabulary;
     auto e = empty_engine();
-    bridge::assert_pair(*e, m, pair, {std::nullopt, std::nullopt, true});
+    bridge::PlaceFactOptions all;
+    all.choice = true;
+    bridge::assert_pair(*e, m, pair, all);
     CHECK(count(*e, c::pair) == 1);
     CHECK(count(*e, c::axis) == 2);
     CHECK(count(*e, c::pair_places) == 1);
@@ -93,7 +95,10 @@ TEST_CASE("bridge/place_facts: one place and one motion; parts, shafts, forces")
     const auto pair = pair_of(m);
     const g::QualDirection motion{{1, -1}};
     auto e = empty_engine();
-    bridge::assert_pair(*e, m, pair, {g::PlaceId{12}, motion, false});
+    bridge::PlaceFactOptions one;
+    one.only = g::PlaceId{12};
+    one.motion = motion;
+    bridge::assert_pair(*e, m, pair, one);
     CHECK(count(*e, c::pair_places) == 0);
     CHECK(count(*e, c::place_kind) == 1);
     std::size_t expected = 0;
