@@ -26,7 +26,7 @@ constexpr double arrow_length = 26;
 // A world coordinate: enough digits that the outline is the geometry, not a rounding of it.
 std::string wn(double v) {
     char buf[40];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
+    std::snprintf(buf, sizeof buf, "%.10g", v == 0.0 ? 0.0 : v);  // never "-0"
     return buf;
 }
 
