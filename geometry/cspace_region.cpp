@@ -55,17 +55,19 @@ std::vector<Polygon> blocked_region(const PairOracle& oracle, const CSpaceResult
     const EdgePoints edges(space);
     std::vector<Polygon> out;
     for (int j = 0; j < c1; ++j) {
-        const double y = a1.sample(j), y1 = y + a1.step();
+        // Cell sides from sample(i) alone, so neighbouring pieces share their sides exactly (a
+        // side computed two ways would differ in the last bit and show as a seam in a picture).
+        const double y = a1.sample(j), y1 = a1.sample(j + 1);
         int run = -1;  // first cell of the current run of wholly blocked cells
         auto flush = [&](int end) {  // the run covers cells [run, end)
             if (run < 0) return;
-            const double x = a0.sample(run), x1 = a0.sample(end - 1) + a0.step();
+            const double x = a0.sample(run), x1 = a0.sample(end);
             out.push_back({{x, y}, {x1, y}, {x1, y1}, {x, y1}});
             run = -1;
         };
         for (int i = 0; i < c0; ++i) {
             const int i1 = (i + 1) % n0, j1 = (j + 1) % n1;
-            const double x = a0.sample(i), x1 = x + a0.step();
+            const double x = a0.sample(i), x1 = a0.sample(i + 1);
             // Corners counter-clockwise; edge k runs from corner k to corner k + 1.
             const std::array<bool, 4> b{space.is_blocked(i, j), space.is_blocked(i1, j), space.is_blocked(i1, j1), space.is_blocked(i, j1)};
             const std::array<Eigen::Vector2d, 4> corner{Eigen::Vector2d(x, y), Eigen::Vector2d(x1, y), Eigen::Vector2d(x1, y1), Eigen::Vector2d(x, y1)};
