@@ -71,6 +71,15 @@ std::string value_text(const g::Part& p, double q) {
     return p.name + "=" + os.str();
 }
 
+// "cseg, normal (- -)", "join (fsd-end), normals (- -) (0 +)", "face".
+std::string place_text(const g::Place& p) {
+    std::string out = g::to_string(p.kind);
+    if (p.kind == g::PlaceKind::join) out += std::string(" (") + g::to_string(p.join_kind) + (p.concave ? *p.concave ? ", concave" : ", convex" : "") + ")";
+    if (!p.normals.empty()) out += p.normals.size() == 1 ? ", normal" : ", normals";
+    for (const auto& n : p.normals) out += " " + g::to_string(n);
+    return out;
+}
+
 // The pair's parts at the sample configuration of place `text` ("A--B:ID").
 int draw_place(const g::Mechanism& m, const DrawArgs& a, std::ostream& os, std::ostream& err, std::string& title) {
     const auto colon = a.place.rfind(':');
@@ -93,7 +102,7 @@ int draw_place(const g::Mechanism& m, const DrawArgs& a, std::ostream& os, std::
     const std::vector<g::PartId> drawn{pair->a, pair->b};
     const g::ContactRequest request{m.settings.contact_tolerance, m.settings.normal_zero_tolerance};
     const auto contacts = g::detect_contacts(*places.oracle, {q.at(pair->a), q.at(pair->b)}, request);
-    title = m.name + ": " + a.place.substr(0, colon) + " place " + std::to_string(id) + " (" + g::to_string(place.kind) + ") at " +
+    title = m.name + ": " + a.place.substr(0, colon) + " place " + std::to_string(id) + " (" + place_text(place) + ") at " +
             value_text(m.parts[pair->a], q.at(pair->a)) + ", " + value_text(m.parts[pair->b], q.at(pair->b));
     const auto marks = contacts.status == g::ContactStatus::ok ? g::contact_marks(m, *pair, contacts, 0, 1) : std::vector<g::ContactMark>{};
     g::write_parts_svg(os, g::drawn_parts(m, q, drawn), marks, {a.width, a.height, title, true, m.settings.normal_zero_tolerance});

@@ -38,7 +38,8 @@ struct Frame {
 
 Frame frame_for(const CSpaceRequest& r, const SvgOptions& o) {
     const double right = o.width - 12 - (o.legend ? legend_width : 0);
-    const double left = 64, top = o.title.empty() ? 12 : 30, bottom = o.height - 44;
+    std::ostringstream title;  // only its height matters here
+    const double left = 64, top = detail::write_title(title, o.title, left, o.width - left - 12, 6) + 6, bottom = o.height - 44;
     return {r, left, top, std::max(right, left + 40), std::max(bottom, top + 40)};
 }
 
@@ -223,10 +224,7 @@ void write_cspace_svg(std::ostream& os, const PairOracle& oracle, const CSpaceRe
     const Frame f = frame_for(space.request, o);
     std::vector<Box> reserved, markers;
     std::ostringstream body;
-    if (!o.title.empty()) {
-        body << "<text x=\"" << px(f.left) << "\" y=\"20\" font-size=\"13\" font-family=\"sans-serif\">" << xml_text(o.title) << "</text>\n";
-        reserved.push_back({f.left, 8, f.left + 7.0 * static_cast<double>(o.title.size()), 24});
-    }
+    if (!o.title.empty()) reserved.push_back({f.left, 6, o.width - 12.0, detail::write_title(body, o.title, f.left, o.width - f.left - 12, 6)});
     // Everything drawn in the configuration space is clipped to its frame: a line crossing a
     // periodic seam is drawn on past it.
     body << "<clipPath id=\"frame\"><rect x=\"" << px(f.left) << "\" y=\"" << px(f.top) << "\" width=\"" << px(f.right - f.left)

@@ -146,7 +146,8 @@ DrawingFrame parts_frame(const std::vector<DrawnPart>& parts, const DrawingOptio
     Eigen::Vector2d lo(big, big), hi(-big, -big);
     for (const auto& d : parts) extend_motion_bounds(*d.part, lo, hi);
     if (!(lo.x() <= hi.x())) lo = hi = Eigen::Vector2d::Zero();
-    const double left = 12, top = o.title.empty() ? 12 : 32, right = o.width - 12 - (o.legend ? legend_width : 0), bottom = o.height - 12;
+    std::ostringstream title;  // only its height matters here
+    const double left = 12, top = detail::write_title(title, o.title, 12, o.width - 24, 4) + 8, right = o.width - 12 - (o.legend ? legend_width : 0), bottom = o.height - 12;
     const Eigen::Vector2d size = (hi - lo).cwiseMax(1e-300);
     DrawingFrame f;
     f.centre = 0.5 * (lo + hi);
@@ -189,7 +190,7 @@ void write_parts_svg(std::ostream& os, const std::vector<DrawnPart>& parts, cons
     const DrawingFrame f = parts_frame(parts, o);
     os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << o.width << "\" height=\"" << o.height << "\" viewBox=\"0 0 " << o.width << ' '
        << o.height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
-    if (!o.title.empty()) os << "<text x=\"12\" y=\"20\" font-size=\"13\" font-family=\"sans-serif\">" << xml_text(o.title) << "</text>\n";
+    const double below_title = detail::write_title(os, o.title, 12, o.width - 24, 4) + 8;
     os << "<g class=\"world\" transform=\"" << f.world_transform() << "\">\n";
     for (std::size_t k = 0; k < parts.size(); ++k) {
         const Part& p = *parts[k].part;
@@ -215,7 +216,7 @@ void write_parts_svg(std::ostream& os, const std::vector<DrawnPart>& parts, cons
     }
     os << "</g>\n";
     write_contact_marks(os, f, parts, contacts, o);
-    if (o.legend) (void)detail::write_legend(os, legend_rows(parts), o.width - legend_width, o.title.empty() ? 12 : 32, "Legend");
+    if (o.legend) (void)detail::write_legend(os, legend_rows(parts), o.width - legend_width, below_title, "Legend");
     os << "</svg>\n";
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
 namespace qm::geometry::detail {
 
@@ -66,6 +67,21 @@ std::vector<Tick> axis_ticks(double lo, double hi, int max_count, bool degrees) 
         return out;
     }
     return out;
+}
+
+double write_title(std::ostream& os, const std::string& title, double x, double width, double none) {
+    if (title.empty()) return none;
+    const auto fits = static_cast<std::size_t>(std::max(10.0, width / 7));
+    std::vector<std::string> lines{""};
+    std::istringstream words(title);
+    for (std::string w; words >> w;) {
+        if (!lines.back().empty() && lines.back().size() + 1 + w.size() > fits) lines.emplace_back();
+        lines.back() += (lines.back().empty() ? "" : " ") + w;
+    }
+    for (std::size_t k = 0; k < lines.size(); ++k)
+        os << "<text class=\"title\" x=\"" << px(x) << "\" y=\"" << px(20 + 17.0 * static_cast<double>(k))
+           << "\" font-size=\"13\" font-family=\"sans-serif\">" << xml_text(lines[k]) << "</text>\n";
+    return 24 + 17.0 * static_cast<double>(lines.size() - 1);
 }
 
 double write_legend(std::ostream& os, const std::vector<LegendRow>& rows, double x, double y, const std::string& heading) {

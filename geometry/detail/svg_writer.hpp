@@ -31,6 +31,11 @@ struct Tick {
 };
 [[nodiscard]] std::vector<Tick> axis_ticks(double lo, double hi, int max_count, bool degrees);
 
+// A picture's title in 13 px sans-serif, broken at spaces into lines that fit `width` pixels
+// (about 7 px a character), written from (x, 20) one line every 17 px. Returns the title's bottom
+// (y), or `none` when there is no title.
+double write_title(std::ostream& os, const std::string& title, double x, double width, double none);
+
 // Rows of a legend, drawn top-down from (x, y) under a heading: a swatch (an SVG fragment drawn
 // in the box (0, 0)-(24, 10), moved into place) and a text.
 struct LegendRow {

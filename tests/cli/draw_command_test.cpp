@@ -80,7 +80,7 @@ TEST_CASE("cli/draw_command: a pair's parts at the sample configuration of a pla
         CAPTURE(id);
         REQUIRE(r.status == 0);
         const std::string svg = slurp(file);
-        CHECK(svg.find("place " + std::to_string(id) + " (" + kind + ")") != std::string::npos);
+        CHECK(svg.find("place " + std::to_string(id) + " (" + kind) != std::string::npos);
         for (auto [part, value] : {std::pair{"scape-wheel", q[0].number()}, std::pair{"pallets", q[1].number()}}) {
             const std::string t = transform_of(svg, part);
             CHECK(std::stod(t.substr(7)) == doctest::Approx(value * 180 / std::numbers::pi).epsilon(1e-9));
