@@ -85,7 +85,7 @@ function showPair(index) {
   byId('cspace').innerHTML = pair.cspace_svg;
   byId('drawing').innerHTML = pair.drawing_svg;
   byId('place-select').innerHTML = '<option value="">as drawn</option>' + pair.vocabulary.places.map((p) =>
-    '<option value="' + p.id + '">' + p.id + ': ' + escape(kindText(p)) + '</option>').join('');
+    '<option value="' + p.id + '">' + p.id + ': ' + escape(kindText(p)) + ' ' + p.normals.map(direction).join(' ') + '</option>').join('');
   select(null);
 }
 

@@ -406,7 +406,8 @@ TEST_CASE("geometry/cspace_svg: the escapement's crowded corners, at the size of
     std::stringstream ss;
     write_cspace_svg(ss, *oracle, res.space, res.vocabulary, base);
     std::set<std::string> ticks;
-    for (const auto* t : parse_svg(ss.str())->all([](const SvgElement& e) { return e.has_class("tick") && e.attr("text-anchor") == "end"; }))
+    const auto tree = parse_svg(ss.str());  // (a temporary tree would die before the loop)
+    for (const auto* t : tree->all([](const SvgElement& e) { return e.has_class("tick") && e.attr("text-anchor") == "end"; }))
         ticks.insert(t->text);
     CHECK(ticks.count("-20\u00b0") == 1);
     CHECK(ticks.count("0\u00b0") == 1);
