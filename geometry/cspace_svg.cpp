@@ -157,6 +157,7 @@ void write_cspace_svg(std::ostream& os, const CSpaceResult& space, const PlaceVo
         // A division on a periodic axis carries points a quarter period apart at most
         // (place_vocabulary.hpp), so the seam test above breaks it where it wraps.
         if (p.kind == PlaceKind::fsd) polyline(p.points, "stroke=\"#3050c0\" stroke-dasharray=\"5,3\"");
+        if (p.kind == PlaceKind::stop) polyline(p.points, "stroke=\"black\" stroke-width=\"4\"");
         if (p.kind == PlaceKind::external_division) polyline(p.points, "stroke=\"#c03030\" stroke-dasharray=\"2,2\"");
         if (p.kind == PlaceKind::join)
             os << "<circle cx=\"" << X(p.points.front().x()) << "\" cy=\"" << Y(p.points.front().y())
