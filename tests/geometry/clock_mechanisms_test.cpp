@@ -19,6 +19,7 @@
 #include <map>
 #include <numbers>
 #include <numeric>
+#include <set>
 #include <sstream>
 
 using namespace qm::geometry;
@@ -28,6 +29,22 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 constexpr double degree = pi / 180;
+
+// The six gear pairs at chordal 1e-7 take 2.3 s of the test's 5 s in Release and most of its
+// four minutes under ASan+UBSan (Debug): there, the gear train is checked on its first two pairs
+// (a 10/30 and the 10/40 pair, each kind of pair but the 12/36 once), the rest in Release.
+#if defined(__SANITIZE_ADDRESS__)
+#define QM_CLOCK_TEST_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define QM_CLOCK_TEST_SANITIZED 1
+#endif
+#endif
+#if defined(NDEBUG) && !defined(QM_CLOCK_TEST_SANITIZED)
+constexpr std::size_t gear_pairs_checked = 6;
+#else
+constexpr std::size_t gear_pairs_checked = 2;
+#endif
 
 Mechanism load(const std::string& name) {
     qm::Diagnostics d;
@@ -45,13 +62,17 @@ struct Pair {
     const PlaceVocabulary* vocabulary = nullptr;
 };
 
-// The vocabulary of every modelled pair, each distinct one built once.
+// The vocabulary of every modelled pair, each distinct one built once; of gear pairs (both parts
+// spur gears) only the first `gear_pairs_checked`.
 std::vector<Pair> pairs_of(const Mechanism& m) {
     static std::map<std::string, PlaceVocabulary> built;
     const auto sel = kinematic_pairs(m);
     CHECK(sel.skipped.empty());
     std::vector<Pair> out;
+    std::size_t gears = 0;
     for (const auto& spec : sel.modelled) {
+        const bool gear_pair = m.parts[spec.a].name.starts_with("gear-") && m.parts[spec.b].name.starts_with("gear-");
+        if (gear_pair && ++gears > gear_pairs_checked) continue;
         const auto oracle = pair_oracle(m, spec);
         const auto request = place_request(m, spec);
         Pair p{m.parts[spec.a].name, m.parts[spec.b].name, place_cache_material(*oracle, request), nullptr};
@@ -139,8 +160,9 @@ TEST_CASE("geometry/clock_mechanisms: a gear pair and the clock's gear train are
     REQUIRE(pair.size() == 1);
     check_one_gear_place(pair[0]);
     const auto m = load("gear_train.def");
+    CHECK(kinematic_pairs(m).modelled.size() == 6);
     const auto train = pairs_of(m);
-    REQUIRE(train.size() == 6);
+    REQUIRE(train.size() == gear_pairs_checked);
     for (const auto& p : train) check_one_gear_place(p);
     CHECK(m.linkages.size() == 4);
 }
@@ -267,14 +289,16 @@ TEST_CASE("geometry/clock_mechanisms: the cam's follower stops at the top of its
 
 TEST_CASE("geometry/clock_mechanisms: the QRG clock is two kinematic chains of its parts' own vocabularies") {
     const auto m = load("clock.def");
+    const auto all = kinematic_pairs(m).modelled;
+    REQUIRE(all.size() == 8);
     const auto pairs = pairs_of(m);
-    REQUIRE(pairs.size() == 8);
+    REQUIRE(pairs.size() == 2 + gear_pairs_checked);
     // Kinematic chains (9.1.3): transitive closure of pairs and linkages.
     std::vector<std::size_t> root(m.parts.size());
     std::iota(root.begin(), root.end(), 0);
     std::function<std::size_t(std::size_t)> find = [&](std::size_t x) { return root[x] == x ? x : root[x] = find(root[x]); };
     auto join = [&](const std::string& a, const std::string& b) { root[find(m.find_part(a)->value)] = find(m.find_part(b)->value); };
-    for (const auto& p : pairs) join(p.a, p.b);
+    for (const auto& p : all) join(m.parts[p.a].name, m.parts[p.b].name);
     for (const auto& l : m.linkages)
         for (const auto& q : l.parts) join(m.parts[l.parts[0]].name, m.parts[q].name);
     std::set<std::size_t> chains;
