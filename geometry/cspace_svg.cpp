@@ -27,6 +27,7 @@ constexpr double legend_width = 170;
 constexpr const char* blocked_fill = "#c8c8c8";
 constexpr const char* fsd_style = "stroke=\"#3050c0\" stroke-width=\"1.2\" stroke-dasharray=\"5,3\"";
 constexpr const char* external_style = "stroke=\"#000000\" stroke-width=\"1.2\" stroke-dasharray=\"1.5,2.5\"";
+constexpr const char* stop_style = "stroke=\"#000000\" stroke-width=\"4\"";  // contact with the frame: a heavier solid line
 
 // Where the configuration space is drawn: the frame's pixel box and the map into it.
 struct Frame {
@@ -90,6 +91,8 @@ std::vector<detail::LegendRow> legend_rows(const PlaceVocabulary& v) {
     }
     rows.push_back({"<line x1=\"0\" y1=\"5\" x2=\"24\" y2=\"5\" " + std::string(fsd_style) + "/>", "free space division"});
     rows.push_back({"<line x1=\"0\" y1=\"5\" x2=\"24\" y2=\"5\" " + std::string(external_style) + "/>", "external division"});
+    if (v.count(PlaceKind::stop) > 0)
+        rows.push_back({"<line x1=\"0\" y1=\"5\" x2=\"24\" y2=\"5\" " + std::string(stop_style) + "/>", "stop (end of an axis)"});
     rows.push_back({"<text x=\"6\" y=\"9\" font-size=\"9\" fill=\"#006000\">12</text>", "face number"});
     rows.push_back({"<text x=\"6\" y=\"9\" font-size=\"9\" fill=\"#800000\">7</text>", "join number"});
     rows.push_back({"<text x=\"6\" y=\"9\" font-size=\"9\">3</text>", "CSEG or division number"});
@@ -190,6 +193,7 @@ void write_places(std::ostream& os, const Frame& f, const PlaceVocabulary& v, st
                                          "\" stroke-width=\"2.5\" stroke-linecap=\"round\"");
         if (p.kind == PlaceKind::fsd) write_polyline(os, f, p, fsd_style);
         if (p.kind == PlaceKind::external_division) write_polyline(os, f, p, external_style);
+        if (p.kind == PlaceKind::stop) write_polyline(os, f, p, stop_style);
     }
     for (const Place& p : v.places)  // joins on top of the lines
         if (p.kind == PlaceKind::join && !p.points.empty()) {
