@@ -52,7 +52,7 @@ inline const std::initializer_list<const char*> state_space_inputs{
     place_normals, join_concave, join_convex, gap_place, adjacent, force_sign_at, places_apart};
 inline const std::initializer_list<const char*> state_space_outputs{at, motion, arrival, nearness_rank};
 inline const std::initializer_list<const char*> state_inputs{
-    pair, axis, clock_object, fixed_part, linkage, cause, place_normal, place_normals, join_concave, join_convex, gap_place,
+    pair, axis, place_kind, join_kind, clock_object, fixed_part, linkage, cause, place_normal, place_normals, join_concave, join_convex, gap_place,
     adjacent, force_sign_at, constant_force, current_place, current_motion, external_force};
 inline const std::initializer_list<const char*> state_outputs{step, place_option, motion_option, force_on, net_force};
 }  // namespace qm::bridge::clock

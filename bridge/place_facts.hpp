@@ -10,7 +10,8 @@
 //                                                     (a rotation's period, or a translation's
 //                                                     limits / a window)
 //   the ids of its places (choice set source)        (pair-places P {0 1 ...})        [states only]
-//   a place's kind (Defs 28-32, 8.1.2)               (place-kind P ID cseg|join|fsd|external-division|face)
+//   a place's kind (Defs 28-32, 8.1.2; a stop: the   (place-kind P ID cseg|join|fsd|external-division|face|stop)
+//     end of an axis, docs/PLACES.md)
 //   a join's kind                                    (join-kind P ID normal-change|fsd-end|crossing|limit)
 //   each normal into free space (CSEG, join, gap)    (place-normal P ID N), and all of them as
 //                                                     (place-normals P ID {N ...})
@@ -74,9 +75,7 @@ struct PlaceFactOptions {
     std::optional<geometry::PlaceId> only;           // one place (the current one), else all
     std::optional<geometry::QualDirection> motion;   // only the adjacency under this motion
     bool choice = false;                             // also (pair-places P SET)
-    bool kinds = true;                               // (place-kind ...), (join-kind ...): what a
-                                                     // state's own engine does not need (the laws
-                                                     // of blocking and arrival read them once)
+    bool kinds = true;                               // (place-kind ...), (join-kind ...)
     std::set<geometry::QualDirection> motions;       // with `motion` unset: only these (empty: all)
 };
 

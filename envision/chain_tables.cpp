@@ -8,7 +8,6 @@ std::optional<How> how_of(std::string_view word) noexcept {
     if (word == "stay") return How::stay;
     if (word == "move") return How::move;
     if (word == "wrap") return How::wrap;
-    if (word == "limit") return How::limit;
     return std::nullopt;
 }
 
@@ -17,7 +16,6 @@ const char* to_string(How h) noexcept {
         case How::stay: return "stay";
         case How::move: return "move";
         case How::wrap: return "wrap";
-        case How::limit: return "limit";
     }
     return "?";
 }

@@ -1,7 +1,7 @@
 // envision/chain_tables.hpp
 // Provides:   ChainTables, what the laws conclude for a chain independently of any state, read
 //             once from the chain's state-space engine: how a pair's motion goes on when it arrives
-//             at a place (rules/clock/collision.rules, stroke_limits.rules: `arrival`) and the
+//             at a place (rules/clock/arrival.rules, collision.rules: `arrival`) and the
 //             nearness ranks of motions (rules/clock/nearness.rules: `nearness-rank`).
 // Ownership:  a value type.
 // Invariants: arrival(pair, place, how, v) lists the motions after, without repeats, in a fixed
@@ -19,7 +19,7 @@
 namespace qm::envision {
 
 // How a pair reaches its next place (rules/clock/place_transitions.rules, transition_order.rules).
-enum class How : std::uint8_t { stay, move, wrap, limit };
+enum class How : std::uint8_t { stay, move, wrap };
 [[nodiscard]] std::optional<How> how_of(std::string_view word) noexcept;
 [[nodiscard]] const char* to_string(How h) noexcept;
 

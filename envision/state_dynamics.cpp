@@ -27,7 +27,7 @@ PlaceVectorEngine::PlaceVectorEngine(const Laws& laws, const g::Mechanism& m, st
             QM_REQUIRE(s->places == states.front()->places, "the states of a place vector engine share their places");
             motions.insert(g::QualDirection{{s->motions[chain.object_index(pair.spec.a)], s->motions[chain.object_index(pair.spec.b)]}});
         }
-        bridge::assert_pair(e, m, pair, {states.front()->places[k], std::nullopt, /*choice=*/false, /*kinds=*/false, motions});
+        bridge::assert_pair(e, m, pair, {states.front()->places[k], std::nullopt, /*choice=*/false, /*kinds=*/true, motions});
         bridge::assert_current_place(e, pair, states.front()->places[k]);
     }
     for (const auto f : bridge::assert_forces(e, m, chain.objects, /*assume=*/true, without)) forces_.push_back(*e.assumption(f));
@@ -107,7 +107,7 @@ std::optional<StateDynamics> read_dynamics(engine::Engine& e, atms::EnvId enviro
         }
         s->second.places[p->second].push_back({g::PlaceId{static_cast<std::uint32_t>(read.integer(a[2]))}, *how});
     });
-    if (bad_how) return fail("a place option's last argument must be stay, move, wrap or limit");
+    if (bad_how) return fail("a place option's last argument must be stay, move or wrap");
     read.each(v::motion_option, 3, [&](std::span<const engine::ValueId> a) {
         const auto s = steps.find(read.symbol(a[0]));
         const auto o = object_index.find(read.symbol(a[1]));

@@ -3,7 +3,7 @@
 //             combination of one option per pair and per object of each step the laws allow
 //             (state_dynamics.hpp) is a hypothesised next state; each pair's motion is carried
 //             through its arrival at its next place (a collision or the end of an axis may change
-//             it: collision.rules, stroke_limits.rules); the motions the step or an arrival fixed
+//             it: collision.rules, a stop at the end of an axis too); the motions the step or an arrival fixed
 //             stay, and the chain is made consistent (8.3.4) by keeping, among the generated states
 //             with the hypothesised places and those motions, the ones no other such state beats in
 //             nearness (nearness.rules) for every other object at once (atms/pareto_front.hpp); a

@@ -58,7 +58,7 @@ TEST_CASE("cli/envision: the text summary names the chain, its pairs, states, tr
     REQUIRE(r.status == 0);
     CHECK(r.out.find("mechanism cam: 1 kinematic pair, 1 kinematic chain\n") == 0);
     CHECK(r.out.find("  objects: cam follower\n") != std::string::npos);
-    CHECK(r.out.find("  pairs: cam/follower (16 places") != std::string::npos);
+    CHECK(r.out.find("  pairs: cam/follower (") != std::string::npos);
     CHECK(r.out.find("  states: ") != std::string::npos);
     CHECK(r.out.find("summary: 1 chain, ") != std::string::npos);
 }

@@ -7,7 +7,7 @@ namespace detail {
 
 struct PlaceOption {
     std::uint32_t place;
-    int how;  // 0 stay, 1 move, 2 wrap, 3 limit
+    int how;  // 0 stay, 1 move, 2 wrap
 };
 struct Step {
     bool instant = false;
@@ -67,7 +67,7 @@ inline std::set<Edge> Checker::successors(const Key& s, const std::set<Key>& all
             } else {
                 bool bounded = false;
                 for (int i = 0; i < 2; ++i) bounded = bounded || (!request_[k].cspace.axes[static_cast<std::size_t>(i)].periodic && v.s[static_cast<std::size_t>(i)] != 0);
-                later[k].push_back({a.to.value, bounded ? 3 : 2});
+                if (!bounded) later[k].push_back({a.to.value, 2});  // no wrapping along a bounded axis
             }
         }
         place_instant = place_instant || !instant[k].empty();
@@ -127,22 +127,6 @@ inline std::set<Edge> Checker::successors(const Key& s, const std::set<Key>& all
         std::vector<g::QualDirection> out;
         const g::Place& p = pairs_[k]->vocabulary.places[q.place];
         if (q.how == 0 || q.how == 2) return std::vector<g::QualDirection>{v};
-        if (q.how == 3) {
-            if (p.kind != g::PlaceKind::face) return out;
-            bool both = true;
-            for (int i = 0; i < 2; ++i) {
-                const auto u = static_cast<std::size_t>(i);
-                if (!request_[k].cspace.axes[u].periodic && v.s[u] != 0) {
-                    g::QualDirection x = v;
-                    x.s[u] = 0;
-                    out.push_back(x);
-                } else {
-                    both = false;
-                }
-            }
-            if (both) out.push_back(g::QualDirection{});
-            return out;
-        }
         if (!blocked(k, q.place, v)) return std::vector<g::QualDirection>{v};
         std::vector<std::array<std::int8_t, 2>> pushes;
         std::array<std::int8_t, 2> sum{0, 0};

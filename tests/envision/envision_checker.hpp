@@ -7,8 +7,8 @@
 //     and a force on a part has one sign at the places of all pairs holding it (Def 34);
 //   - transitions recomputed: forces by place (8.2.1) passed through contacts along the reverse
 //     normal and over shafts to a fixed point, summed per cause with Law 5 then over causes (Def 11);
-//     Table 5.1; next places from the adjacency (8.1.3, 8.3.2); the order of Laws 3-4; arrivals,
-//     collisions (5.3.3) and the ends of bounded axes; the chain made consistent by nearness (Def 38
+//     Table 5.1; next places from the adjacency (8.1.3, 8.3.2); the order of Laws 3-4; arrivals and
+//     collisions (5.3.3), at stops too; the chain made consistent by nearness (Def 38
 //     with 8.3.4's threshold, Pareto over objects).
 // Plain C++ over the geometry's values; no engine, no rule.
 #pragma once
@@ -73,7 +73,7 @@ public:
         bool by_normals = false;
         if (p.kind == g::PlaceKind::join && p.concave == false && !p.normals.empty()) {
             by_normals = std::all_of(p.normals.begin(), p.normals.end(), [&](auto n) { return neg_dot(n, v); });
-        } else if (p.kind == g::PlaceKind::cseg || p.kind == g::PlaceKind::join || p.gap) {
+        } else if (p.kind == g::PlaceKind::cseg || p.kind == g::PlaceKind::join || p.kind == g::PlaceKind::stop || p.gap) {
             by_normals = std::any_of(p.normals.begin(), p.normals.end(), [&](auto n) { return neg_dot(n, v); });
         }
         if (by_normals) return true;
@@ -136,7 +136,7 @@ public:
                     if (q != o && m_.same_shaft(chain_.objects[o], chain_.objects[q])) grew |= forces.insert({q, sign, cause}).second;
                 for (std::size_t k = 0; k < pairs_.size(); ++k) {
                     const g::Place& p = pairs_[k]->vocabulary.places[s.places[k]];
-                    if (p.normals.empty()) continue;
+                    if (p.normals.empty() || p.kind == g::PlaceKind::stop) continue;  // no force passes to the frame
                     for (int side = 0; side < 2; ++side) {
                         const std::size_t from = side == 0 ? ends_[k].first : ends_[k].second;
                         const std::size_t to = side == 0 ? ends_[k].second : ends_[k].first;
