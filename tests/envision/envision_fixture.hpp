@@ -65,8 +65,11 @@ inline const Envisionment& envisioned_once(const std::string& relative) {
 inline const std::vector<std::string>& bundled() {
     static const std::vector<std::string> all{"scenarios/metric/escapement.def", "scenarios/metric/ratchet.def",
                                               "scenarios/metric/scotch_yoke.def", "scenarios/metric/cam.def",
-                                              "scenarios/metric/gear_train.def", "tests/envision/scenes/pendulum_stops.def",
-                                              "tests/envision/scenes/two_chains.def"};
+                                              "scenarios/metric/gear_train.def", "scenarios/clock/escapement.def",
+                                              "scenarios/clock/ratchet.def", "scenarios/clock/scotch_yoke.def",
+                                              "scenarios/clock/cam.def", "scenarios/clock/cam_free.def",
+                                              "scenarios/clock/gear_pair.def", "scenarios/clock/gear_train.def",
+                                              "tests/envision/scenes/pendulum_stops.def", "tests/envision/scenes/two_chains.def"};
     return all;
 }
 
