@@ -41,6 +41,7 @@ inline constexpr const char* nearness_rank = "nearness-rank";    // (nearness-ra
 inline constexpr const char* step = "step";                      // (step S DURATION CAUSE)
 inline constexpr const char* place_option = "place-option";      // (place-option S P NEXT HOW)
 inline constexpr const char* motion_option = "motion-option";    // (motion-option S O M)
+inline constexpr const char* preempts = "preempts";              // (preempts S T)
 inline constexpr const char* force_on = "force-on";              // (force-on O S C)
 inline constexpr const char* net_force = "net-force";            // (net-force O S)
 
@@ -54,5 +55,5 @@ inline const std::initializer_list<const char*> state_space_outputs{at, motion, 
 inline const std::initializer_list<const char*> state_inputs{
     pair, axis, place_kind, join_kind, clock_object, fixed_part, linkage, cause, place_normal, place_normals, join_concave, join_convex, gap_place,
     adjacent, force_sign_at, constant_force, current_place, current_motion, external_force};
-inline const std::initializer_list<const char*> state_outputs{step, place_option, motion_option, force_on, net_force};
+inline const std::initializer_list<const char*> state_outputs{step, place_option, motion_option, preempts, force_on, net_force};
 }  // namespace qm::bridge::clock

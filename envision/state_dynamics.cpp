@@ -114,6 +114,8 @@ std::optional<StateDynamics> read_dynamics(engine::Engine& e, atms::EnvId enviro
         if (s == steps.end() || o == object_index.end()) return;
         s->second.motions[o->second].push_back(read.sign(a[2]));
     });
+    std::vector<std::pair<std::string, std::string>> preempts;
+    read.each(v::preempts, 2, [&](std::span<const engine::ValueId> a) { preempts.emplace_back(read.symbol(a[0]), read.symbol(a[1])); });
     for (auto& [name, s] : steps) {
         for (std::size_t k = 0; k < s.places.size(); ++k) {
             if (s.places[k].empty()) return fail("the laws give pair " + pairs[chain.pairs[k]].name + " no place after step " + name);
@@ -128,6 +130,17 @@ std::optional<StateDynamics> read_dynamics(engine::Engine& e, atms::EnvId enviro
             std::sort(s.motions[o].begin(), s.motions[o].end());
         }
         out.steps.push_back(std::move(s));
+    }
+    auto index = [&](const std::string& name) -> std::optional<std::size_t> {
+        for (std::size_t i = 0; i < out.steps.size(); ++i)
+            if (out.steps[i].name == name) return i;
+        return std::nullopt;
+    };
+    for (const auto& [first, then] : preempts) {
+        const auto a = index(first), b = index(then);
+        if (!a || !b) return fail("(preempts " + first + " " + then + ") names a step the laws did not give");
+        if (a == b) return fail("a step cannot preempt itself: " + first);
+        out.preempts.emplace_back(*a, *b);
     }
     return out;
 }

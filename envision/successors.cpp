@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <map>
+#include <utility>
+#include "qm/assert.hpp"
 
 namespace qm::envision {
 namespace g = qm::geometry;
@@ -42,11 +44,8 @@ public:
         combine_places(s, places, 0, chosen);
     }
 
-    [[nodiscard]] std::vector<Transition> transitions() const {
-        std::vector<Transition> out;
-        for (const auto& [key, causes] : found_) out.push_back({from_, key.first, key.second, causes});
-        return out;
-    }
+    // The transitions one step found (and forgets them).
+    [[nodiscard]] std::map<std::pair<StateId, Duration>, std::uint8_t> take() { return std::exchange(found_, {}); }
 
 private:
     // One next place per pair (8.3.2: "all combinations of the changes in place").
@@ -160,8 +159,37 @@ std::vector<Transition> successors(StateId from, const StateIndex& states, const
                                    std::span<const bridge::PairPlaces> pairs, const ChainTables& tables,
                                    const StateDynamics& dynamics) {
     Builder b(from, states, chain, pairs, tables);
-    for (const auto& s : dynamics.steps) b.step(s);
-    return b.transitions();
+    const std::size_t n = dynamics.steps.size();
+    std::vector<std::map<std::pair<StateId, Duration>, std::uint8_t>> found(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        b.step(dynamics.steps[i]);
+        found[i] = b.take();
+    }
+    // A step happens only if no step that preempts it can (Law 4, as the laws order them). The
+    // preemptions form no cycle (steps that preempt come first), so one pass in that order settles it.
+    std::vector<bool> kept(n, false), settled(n, false);
+    for (std::size_t round = 0; round < n; ++round)
+        for (std::size_t i = 0; i < n; ++i) {
+            if (settled[i]) continue;
+            bool ready = true, preempted = false;
+            for (const auto& [s, t] : dynamics.preempts)
+                if (t == i) {
+                    ready = ready && settled[s];
+                    preempted = preempted || (settled[s] && kept[s]);
+                }
+            if (!ready) continue;
+            settled[i] = true;
+            kept[i] = !preempted && !found[i].empty();
+        }
+    for (std::size_t i = 0; i < n; ++i)
+        if (!settled[i]) throw InternalError("the laws' preemptions between steps form a cycle");
+    std::map<std::pair<StateId, Duration>, std::uint8_t> merged;
+    for (std::size_t i = 0; i < n; ++i)
+        if (kept[i])
+            for (const auto& [key, causes] : found[i]) merged[key] |= causes;
+    std::vector<Transition> out;
+    for (const auto& [key, causes] : merged) out.push_back({from, key.first, key.second, causes});
+    return out;
 }
 
 }  // namespace qm::envision

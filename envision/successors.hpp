@@ -9,7 +9,8 @@
 //             nearness (nearness.rules) for every other object at once (atms/pareto_front.hpp); a
 //             hypothesis that matches no generated state is dropped (8.3.5). The combination that
 //             changes nothing is no transition, unless some pair wraps round a periodic axis: then
-//             the state has a transition to itself over an interval.
+//             the state has a transition to itself over an interval. A step that another preempts
+//             (Law 4: the laws' `preempts`) gives its transitions only if that one gives none.
 // Ownership:  value types.
 // Invariants: one transition per (target, duration), its causes the union of those found; sorted
 //             by target, then duration.

@@ -74,10 +74,13 @@ inline std::set<Edge> Checker::successors(const Key& s, const std::set<Key>& all
         place_due = place_due || (!instant[k].empty() && later[k].empty());
         place_later = place_later || !later[k].empty();
     }
-    // Laws 3-4: the steps.
+    // Laws 3-4: the steps, each with the steps that come before it (a step happens only if none of
+    // those can: the held changes of docs/LAWS.md).
     std::vector<Step> steps;
     auto stay = [&](std::size_t k) { return PlaceOption{s.places[k], 0}; };
     auto persist = [&](std::size_t o) { return std::vector<std::int8_t>{s.motions[o]}; };
+    const bool due = place_due || motion_due;
+    int ik = -1, id = -1, intk = -1, intd = -1;
     if (place_instant) {
         Step st{true, 1, {}, {}};
         for (std::size_t k = 0; k < pairs_.size(); ++k) {
@@ -86,9 +89,10 @@ inline std::set<Edge> Checker::successors(const Key& s, const std::set<Key>& all
             st.places.push_back(opts);
         }
         for (std::size_t o = 0; o < n; ++o) st.motions.push_back(persist(o));
+        ik = static_cast<int>(steps.size());
         steps.push_back(st);
     }
-    if (!place_instant && motion_instant) {
+    if (motion_instant) {
         Step st{true, 2, {}, {}};
         for (std::size_t k = 0; k < pairs_.size(); ++k) st.places.push_back({stay(k)});
         for (std::size_t o = 0; o < n; ++o) {
@@ -97,10 +101,10 @@ inline std::set<Edge> Checker::successors(const Key& s, const std::set<Key>& all
                 if (how == 0 || how == 1) opts.push_back(next);
             st.motions.push_back(opts);
         }
+        id = static_cast<int>(steps.size());
         steps.push_back(st);
     }
-    const bool due = place_due || motion_due;
-    if (!due && place_later) {
+    if (place_later) {
         Step st{false, 1, {}, {}};
         for (std::size_t k = 0; k < pairs_.size(); ++k) {
             auto opts = later[k];
@@ -108,19 +112,31 @@ inline std::set<Edge> Checker::successors(const Key& s, const std::set<Key>& all
             st.places.push_back(opts);
         }
         for (std::size_t o = 0; o < n; ++o) st.motions.push_back(persist(o));
+        intk = static_cast<int>(steps.size());
         steps.push_back(st);
     }
-    if (!due && motion_interval) {
+    if (motion_interval) {
         Step st{false, 2, {}, {}};
         for (std::size_t k = 0; k < pairs_.size(); ++k) st.places.push_back({stay(k)});
         for (std::size_t o = 0; o < n; ++o) {
             std::vector<std::int8_t> opts;
-            for (const auto& [next, how] : table[o])
+            bool persists = false;
+            for (const auto& [next, how] : table[o]) {
                 if (how == 0 || how == 2) opts.push_back(next);
+                persists = persists || how == 0;
+            }
+            if (!persists) opts.push_back(s.motions[o]);  // a change due in an instant that could not happen
             st.motions.push_back(opts);
         }
+        intd = static_cast<int>(steps.size());
         steps.push_back(st);
     }
+    std::vector<std::vector<int>> before(steps.size());  // the steps that preempt each
+    if (ik >= 0 && id >= 0) before[static_cast<std::size_t>(id)].push_back(ik);
+    if (due)
+        for (const int later_step : {intk, intd})
+            for (const int first : {ik, id})
+                if (later_step >= 0 && first >= 0) before[static_cast<std::size_t>(later_step)].push_back(first);
 
     // Arrivals: persistence, collisions (5.3.3), the ends of bounded axes.
     auto arrival = [&](std::size_t k, PlaceOption q, g::QualDirection v) {
@@ -143,8 +159,10 @@ inline std::set<Edge> Checker::successors(const Key& s, const std::set<Key>& all
         return out;
     };
 
-    std::map<std::pair<Key, bool>, std::uint8_t> found;
-    for (const Step& st : steps) {
+    std::vector<std::map<std::pair<Key, bool>, std::uint8_t>> found_by(steps.size());
+    for (std::size_t step_index = 0; step_index < steps.size(); ++step_index) {
+        const Step& st = steps[step_index];
+        auto& found = found_by[step_index];
         std::vector<PlaceOption> q(pairs_.size());
         // Each combination of next places, then each collision branch, then the chain made consistent.
         std::function<void(std::size_t)> places = [&](std::size_t k) {
@@ -237,8 +255,18 @@ inline std::set<Edge> Checker::successors(const Key& s, const std::set<Key>& all
         };
         places(0);
     }
+    // Steps are listed so that those that preempt come first.
+    std::vector<bool> kept(steps.size(), false);
+    std::map<std::pair<Key, bool>, std::uint8_t> merged;
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        bool preempted = false;
+        for (const int first : before[i]) preempted = preempted || kept[static_cast<std::size_t>(first)];
+        kept[i] = !preempted && !found_by[i].empty();
+        if (kept[i])
+            for (const auto& [key, causes] : found_by[i]) merged[key] |= causes;
+    }
     std::set<Edge> out;
-    for (const auto& [key, causes] : found) out.insert({key.first, key.second, causes});
+    for (const auto& [key, causes] : merged) out.insert({key.first, key.second, causes});
     return out;
 }
 
