@@ -124,7 +124,7 @@ void assert_linkages(engine::Engine& e, const g::Mechanism& m, std::span<const g
 }
 
 std::vector<engine::FactId> assert_forces(engine::Engine& e, const g::Mechanism& m, std::span<const g::PartId> parts,
-                                          bool assume, std::span<const ForceRef> without) {
+                                          ForceFacts how, std::span<const ForceRef> without) {
     Facts f(e);
     auto in_chain = [&](g::PartId p) { return std::find(parts.begin(), parts.end(), p) != parts.end(); };
     std::set<std::string> causes;
@@ -135,7 +135,7 @@ std::vector<engine::FactId> assert_forces(engine::Engine& e, const g::Mechanism&
         if (in_chain(force.part))
             f.premise(clock::constant_force, {f.sym(m.parts[force.part].name), f.dir(sign_text(force.sign)), f.sym(force.cause)});
     std::vector<engine::FactId> assumed;
-    if (!assume) return assumed;
+    if (how == ForceFacts::none) return assumed;
     std::set<std::pair<std::uint32_t, std::string>> done;
     for (const auto& force : m.forces) {
         if (!in_chain(force.part) || !done.insert({force.part.value, force.cause}).second) continue;
@@ -143,7 +143,9 @@ std::vector<engine::FactId> assert_forces(engine::Engine& e, const g::Mechanism&
             return w.part == force.part && (!w.cause || *w.cause == force.cause);
         });
         if (removed) continue;
-        assumed.push_back(f.assumption(clock::external_force, {f.sym(m.parts[force.part].name), f.sym(force.cause)}, force.where));
+        const std::vector<ValueId> args{f.sym(m.parts[force.part].name), f.sym(force.cause)};
+        if (how == ForceFacts::assumptions) assumed.push_back(f.assumption(clock::external_force, args, force.where));
+        else assumed.push_back(e.add_premise(f.sym(clock::external_force), args, force.where));
     }
     return assumed;
 }

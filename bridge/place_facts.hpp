@@ -91,14 +91,17 @@ void assert_parts(engine::Engine& e, const geometry::Mechanism& m, std::span<con
 // (linkage A B) for consecutive parts of each shaft among `parts`.
 void assert_linkages(engine::Engine& e, const geometry::Mechanism& m, std::span<const geometry::PartId> parts);
 // (cause C) for every cause of a force on one of `parts`; (constant-force ...) for those forces;
-// and with `assume`, the assumption (external-force O C) for every force on one of `parts` whose
-// (part, cause) is not in `without`. Returns the facts assumed.
+// and (external-force O C) for every force on one of `parts` whose (part, cause) is not in `without`:
+// an assumption (so that labels name the forces a conclusion rests on), or a premise when only the
+// conclusions are wanted (an engine of premises alone runs without contexts), or not at all.
+// Returns the facts asserted.
+enum class ForceFacts { none, premises, assumptions };
 struct ForceRef {
     geometry::PartId part{0};
     std::optional<std::string> cause;  // empty: every cause on the part
 };
 std::vector<engine::FactId> assert_forces(engine::Engine& e, const geometry::Mechanism& m,
-                                          std::span<const geometry::PartId> parts, bool assume,
+                                          std::span<const geometry::PartId> parts, ForceFacts how,
                                           std::span<const ForceRef> without);
 // (current-place P ID) and (current-motion O M), M one of "+", "0", "-".
 void assert_current_place(engine::Engine& e, const PairPlaces& pair, geometry::PlaceId place);

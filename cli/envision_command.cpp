@@ -4,14 +4,20 @@
 #include "rules_location.hpp"
 
 #include "envision/envisionment.hpp"
+#include "envision/behaviour_query.hpp"
+#include "envision/dot_printer.hpp"
 #include "envision/json_printer.hpp"
 #include "envision/state_query.hpp"
 #include "envision/state_report.hpp"
 #include "envision/table_printer.hpp"
 #include "envision/text_printer.hpp"
+#include "envision/why_not.hpp"
 #include "geometry/metric_scene_parser.hpp"
 
 #include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <cstdio>
 #include <optional>
 #include <sstream>
@@ -29,7 +35,9 @@ struct Options {
     std::size_t max_states = 1'000'000;
     std::optional<std::filesystem::path> cache, rules;
     std::vector<std::string> without;
-    std::optional<std::string> next, previous;
+    std::optional<std::string> next, previous, from, path, why_not;
+    std::vector<std::string> avoid;
+    std::optional<std::filesystem::path> dot, svg;
 };
 
 int usage_error(std::ostream& err, const std::string& what) {
@@ -105,11 +113,74 @@ private:
     bool on_ = false, drawn_ = false;
 };
 
+// Writes text to path whole, or not at all (a file beside it, renamed).
+bool write_whole(const std::filesystem::path& path, const std::string& text, std::ostream& err) {
+    const std::filesystem::path part = path.string() + ".part";
+    {
+        std::ofstream os(part);
+        os << text;
+        if (!os) {
+            err << "qm-atms: cannot write '" << path.string() << "'\n";
+            return false;
+        }
+    }
+    std::error_code ec;
+    std::filesystem::rename(part, path, ec);
+    if (ec) err << "qm-atms: cannot write '" << path.string() << "': " << ec.message() << '\n';
+    return !ec;
+}
+
+// The graph rendered by Graphviz's `dot`, when it is installed.
+bool render_svg(const std::filesystem::path& path, const std::string& graph, std::ostream& err) {
+    if (std::system("command -v dot >/dev/null 2>&1") != 0) {
+        err << "qm-atms: --svg needs Graphviz's `dot`, which is not installed: write the graph with --dot FILE and render it with "
+               "`dot -Tsvg FILE -o OUT.svg` where Graphviz is\n";
+        return false;
+    }
+    const std::filesystem::path input = path.string() + ".dot.part", output = path.string() + ".part";
+    if (!write_whole(input, graph, err)) return false;
+    const std::string command = "dot -Tsvg '" + input.string() + "' -o '" + output.string() + "'";
+    const int status = std::system(command.c_str());
+    std::filesystem::remove(input);
+    if (status != 0) {
+        err << "qm-atms: `dot` failed to render '" << path.string() << "'\n";
+        std::filesystem::remove(output);
+        return false;
+    }
+    std::error_code ec;
+    std::filesystem::rename(output, path, ec);
+    return !ec;
+}
+
+// --next, --previous, --path, --why-not: each answered in turn; 2 after a bad question.
+int answer_questions(const Options& o, const g::Mechanism& m, const ev::Envisionment& e, const ev::EnvisionOptions& options,
+                     std::ostream& text, Diagnostics& diags) {
+    for (const auto& [option, value] : {std::pair{"--next", o.next}, std::pair{"--previous", o.previous}}) {
+        if (!value) continue;
+        const auto s = ev::find_state(e, *value, option, diags);
+        if (!s) return 2;
+        if (std::string(option) == "--next") {
+            if (!ev::write_next(text, m, e, *s, options, diags)) return 2;
+        } else {
+            ev::write_previous(text, e, *s);
+        }
+    }
+    if (o.path) {
+        const auto b = ev::parse_behaviour(e, *o.path, "--path", o.avoid, diags);
+        if (!b) return 2;
+        ev::write_behaviour(text, e, *b, ev::find_behaviour(e, *b));
+    }
+    if (o.why_not && !ev::write_why_not(text, m, e, options, *o.why_not, diags)) return 2;
+    return 0;
+}
+
 }  // namespace
 
 const char* envision_usage() noexcept {
     return "       qm-atms envision METRIC-SCENE [--table | --json] [--max-states N] [--without 'Force PART [CAUSE]']...\n"
-           "                        [--next STATE] [--previous STATE] [--cache DIR | --no-cache] [--rules DIR] [--stats]\n"
+           "                        [--from STATE] [--next STATE] [--previous STATE] [--path 'DESC; DESC; ...' [--avoid 'DESC']...]\n"
+           "                        [--why-not 'STATE -> STATE'] [--dot FILE] [--svg FILE]\n"
+           "                        [--cache DIR | --no-cache] [--rules DIR] [--stats]\n"
            "                                                  the envisionment: states, transitions, cycles (docs/ENVISION.md)\n";
 }
 
@@ -129,6 +200,12 @@ int envision_command(std::span<const std::string> args, std::ostream& out, std::
         else if (a == "--without" && has_value) o.without.push_back(args[++i]);
         else if (a == "--next" && has_value) o.next = args[++i];
         else if (a == "--previous" && has_value) o.previous = args[++i];
+        else if (a == "--from" && has_value) o.from = args[++i];
+        else if (a == "--path" && has_value) o.path = args[++i];
+        else if (a == "--avoid" && has_value) o.avoid.push_back(args[++i]);
+        else if (a == "--why-not" && has_value) o.why_not = args[++i];
+        else if (a == "--dot" && has_value) o.dot = args[++i];
+        else if (a == "--svg" && has_value) o.svg = args[++i];
         else if (a == "--max-states" && has_value) {
             const auto n = count_of(args[++i]);
             if (!n || *n == 0) return usage_error(err, "--max-states takes a positive whole number, not '" + args[i] + "'");
@@ -138,6 +215,7 @@ int envision_command(std::span<const std::string> args, std::ostream& out, std::
         }
     }
     if (o.table && o.json) return usage_error(err, "--table and --json are two different outputs: give one");
+    if (!o.avoid.empty() && !o.path) return usage_error(err, "--avoid goes with --path");
     Diagnostics diags;
     const auto m = g::read_mechanism_file(o.scene, diags);
     if (!m) {
@@ -170,21 +248,26 @@ int envision_command(std::span<const std::string> args, std::ostream& out, std::
     diags.print(err);
     if (!e || diags.has_errors()) return 2;
     std::ostringstream text;
-    if (o.next || o.previous) {
-        for (const auto& [option, value] : {std::pair{"--next", o.next}, std::pair{"--previous", o.previous}}) {
-            if (!value) continue;
-            const auto s = ev::find_state(*e, *value, option, diags);
-            if (!s) continue;
-            if (std::string(option) == "--next") {
-                if (!ev::write_next(text, *m, *e, *s, options, diags)) break;
-            } else {
-                ev::write_previous(text, *e, *s);
-            }
-        }
+    if (o.next || o.previous || o.path || o.why_not) {
+        const int status = answer_questions(o, *m, *e, options, text, diags);
         diags.print(err);
-        if (diags.has_errors()) return 2;
+        if (status != 0) return status;
         out << text.str();
         return 0;
+    }
+    if (o.from) {
+        const auto s = ev::find_state(*e, *o.from, "--from", diags);
+        if (!s) {
+            diags.print(err);
+            return 2;
+        }
+        ev::restrict_to_reachable(*e, s->chain, s->state);
+    }
+    if (o.dot || o.svg) {
+        std::ostringstream graph;
+        ev::write_dot(graph, *e);
+        if (o.dot && !write_whole(*o.dot, graph.str(), err)) return 2;
+        if (o.svg && !render_svg(*o.svg, graph.str(), err)) return 2;
     }
     if (o.json) ev::write_json(text, *m, *e);
     else if (o.table) ev::write_table(text, *m, *e);

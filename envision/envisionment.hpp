@@ -14,6 +14,7 @@
 #include "bridge/place_facts.hpp"
 #include "envision/behaviour_graph.hpp"
 #include "envision/chain.hpp"
+#include "envision/chain_tables.hpp"
 #include "envision/laws.hpp"
 #include "envision/progress.hpp"
 #include "envision/state_index.hpp"
@@ -29,13 +30,18 @@ struct ChainEnvisionment {
     Chain chain;
     StateIndex states{{}};
     std::vector<Transition> transitions;  // sorted by from, to, duration
+    ChainTables tables;                   // the laws' arrivals and nearness ranks (for questions)
     BehaviourGraph graph;
     std::size_t nogoods = 0;              // minimal nogoods of the state space (Law 2, linkage, ...)
+    std::vector<bool> shown;              // empty: every state; else the states to print (--from)
+    [[nodiscard]] bool is_shown(StateId s) const { return shown.empty() || shown[s.value]; }
+    [[nodiscard]] std::size_t shown_count() const;
     double seconds_states = 0, seconds_transitions = 0;
 };
 
 struct Envisionment {
     std::string mechanism;
+    std::vector<std::string> parts;         // the mechanism's part names, by PartId
     std::vector<bridge::PairPlaces> pairs;  // every modelled pair
     std::vector<ChainEnvisionment> chains;
     double seconds_places = 0;
@@ -51,6 +57,10 @@ struct EnvisionOptions {
 
 [[nodiscard]] std::optional<Envisionment> envision(const geometry::Mechanism& m, const EnvisionOptions& options,
                                                    Diagnostics& diagnostics);
+
+// Only what `from` leads to (thesis 11.2.1, `--from`): that chain alone, its states and transitions
+// reachable from the state, and the cycles and terminal states among them. Ids are kept.
+void restrict_to_reachable(Envisionment& e, std::size_t chain, StateId from);
 
 // The state's name in the thesis' style (Figure 5.1, Appendix A): each pair's place as PAIR-PLACE,
 // then each object's motion, e.g. `scape-wheel/pallets-36 - -`.

@@ -37,9 +37,12 @@ void chain_json(std::ostream& os, const geometry::Mechanism& m, const Envisionme
         os << (k ? "," : "") << "{\"parts\":" << parts_json(m, p) << ",\"places\":" << p.vocabulary.places.size() << '}';
     }
     os << "],\"states\":[";
+    bool first = true;
     for (std::uint32_t i = 0; i < c.states.size(); ++i) {
+        if (!c.is_shown(StateId{i})) continue;
         const State& s = c.states[StateId{i}];
-        os << (i ? "," : "") << "{\"id\":" << i << ",\"places\":[";
+        os << (first ? "" : ",") << "{\"id\":" << i << ",\"places\":[";
+        first = false;
         for (std::size_t k = 0; k < c.chain.pairs.size(); ++k)
             os << (k ? "," : "") << "{\"parts\":" << parts_json(m, e.pairs[c.chain.pairs[k]]) << ",\"place\":" << s.places[k].value << '}';
         os << "],\"motions\":" << signs_json(m, c.chain, s.motions) << ",\"net_force\":" << signs_json(m, c.chain, s.net_force) << '}';

@@ -13,8 +13,9 @@ namespace g = qm::geometry;
 namespace v = qm::bridge::clock;
 
 PlaceVectorEngine::PlaceVectorEngine(const Laws& laws, const g::Mechanism& m, std::span<const bridge::PairPlaces> pairs,
-                                     const Chain& chain, std::span<const State* const> states, std::span<const bridge::ForceRef> without)
-    : engine_(laws.state_engine()) {
+                                     const Chain& chain, std::span<const State* const> states, std::span<const bridge::ForceRef> without,
+                                     bool labelled)
+    : engine_(laws.state_engine()), contexts_(labelled || states.size() > 1) {
     QM_REQUIRE(!states.empty(), "a place vector engine needs a state");
     engine::Engine& e = *engine_;
     bridge::assert_parts(e, m, chain.objects, /*choices=*/false);
@@ -30,7 +31,9 @@ PlaceVectorEngine::PlaceVectorEngine(const Laws& laws, const g::Mechanism& m, st
         bridge::assert_pair(e, m, pair, {states.front()->places[k], std::nullopt, /*choice=*/false, /*kinds=*/true, motions});
         bridge::assert_current_place(e, pair, states.front()->places[k]);
     }
-    for (const auto f : bridge::assert_forces(e, m, chain.objects, /*assume=*/true, without)) forces_.push_back(*e.assumption(f));
+    const auto how = contexts_ ? bridge::ForceFacts::assumptions : bridge::ForceFacts::premises;
+    for (const auto f : bridge::assert_forces(e, m, chain.objects, how, without))
+        if (contexts_) forces_.push_back(*e.assumption(f));
     if (states.size() == 1) {  // one state: its motions are premises, the context is its forces
         for (std::size_t o = 0; o < chain.objects.size(); ++o) bridge::assert_current_motion(e, m, chain.objects[o], states.front()->motions[o]);
         motions_.emplace_back();
@@ -53,12 +56,16 @@ PlaceVectorEngine::PlaceVectorEngine(const Laws& laws, const g::Mechanism& m, st
 
 std::optional<atms::EnvId> PlaceVectorEngine::run(std::size_t i, Diagnostics& diagnostics) {
     QM_REQUIRE(i < motions_.size(), "no such state in this place vector engine");
-    std::vector<atms::AssumptionId> context = forces_;
-    context.insert(context.end(), motions_[i].begin(), motions_[i].end());
     engine::Engine& e = *engine_;
-    const atms::EnvId env = e.atms().environment(context);
     const std::size_t before = diagnostics.size();
-    const atms::EnvId out = e.run_in_context(env, diagnostics).environment;
+    atms::EnvId out = e.atms().empty_environment();
+    if (contexts_) {
+        std::vector<atms::AssumptionId> context = forces_;
+        context.insert(context.end(), motions_[i].begin(), motions_[i].end());
+        out = e.run_in_context(e.atms().environment(context), diagnostics).environment;
+    } else {
+        e.run(diagnostics);  // premises only: `not` and aggregates are decided generically
+    }
     for (std::size_t k = before; k < diagnostics.size(); ++k)
         if (diagnostics.items()[k].severity == Severity::error) return std::nullopt;
     return out;

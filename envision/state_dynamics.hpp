@@ -50,8 +50,11 @@ struct StateDynamics {
 class PlaceVectorEngine {
 public:
     // Pre: every state belongs to chain and has the same places; without names forces of m.
+    // labelled: the external forces as assumptions, so that labels name them (for questions);
+    // else premises (the conclusions alone, faster: no context is needed for a single state).
     PlaceVectorEngine(const Laws& laws, const geometry::Mechanism& m, std::span<const bridge::PairPlaces> pairs,
-                      const Chain& chain, std::span<const State* const> states, std::span<const bridge::ForceRef> without);
+                      const Chain& chain, std::span<const State* const> states, std::span<const bridge::ForceRef> without,
+                      bool labelled = true);
     // Runs the laws in the context of states[i]: the environment where its conclusions hold, or
     // nothing after errors (reported into diagnostics).
     [[nodiscard]] std::optional<atms::EnvId> run(std::size_t i, Diagnostics& diagnostics);
@@ -61,6 +64,7 @@ private:
     std::unique_ptr<engine::Engine> engine_;
     std::vector<atms::AssumptionId> forces_;
     std::vector<std::vector<atms::AssumptionId>> motions_;  // per state: its parts' motions
+    bool contexts_ = true;  // run each state as a context (else once, generically)
 };
 
 // What the laws concluded for one state, read in the environment its context run returned.

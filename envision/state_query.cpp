@@ -37,8 +37,19 @@ std::optional<std::uint64_t> number(std::string_view s) {
 }  // namespace
 
 std::optional<StateRef> find_state(const Envisionment& e, const std::string& text, const std::string& option, Diagnostics& diagnostics) {
+    const auto named = parse_state(e, text, option, diagnostics);
+    if (!named) return std::nullopt;
+    if (!named->id) {
+        diagnostics.error({option, 1, 1}, "'" + text + "' is not a state of the envisionment: its motions are not consistent with its places", text);
+        return std::nullopt;
+    }
+    return StateRef{named->chain, *named->id};
+}
+
+std::optional<NamedState> parse_state(const Envisionment& e, const std::string& text, const std::string& option, Diagnostics& diagnostics,
+                                      const std::string& whole, std::uint32_t offset) {
     auto error = [&](std::uint32_t column, const std::string& message) {
-        diagnostics.error({option, 1, column}, message, text);
+        diagnostics.error({option, 1, column + offset - 1}, message, whole.empty() ? text : whole);
         return std::nullopt;
     };
     const auto words = words_of(text);
@@ -62,7 +73,8 @@ std::optional<StateRef> find_state(const Envisionment& e, const std::string& tex
         if (*id >= e.chains[chain].states.size())
             return error(words[0].column, "no state " + std::to_string(*id) + ": chain " + std::to_string(chain + 1) + " has " +
                                               std::to_string(e.chains[chain].states.size()) + " states (ids from 0)");
-        return StateRef{chain, StateId{static_cast<std::uint32_t>(*id)}};
+        const StateId sid{static_cast<std::uint32_t>(*id)};
+        return NamedState{chain, e.chains[chain].states[sid], sid};
     }
     // A name: PAIR-PLACE for each pair of one chain, then a motion for each of its objects.
     std::optional<std::size_t> chain;
@@ -105,9 +117,7 @@ std::optional<StateRef> find_state(const Envisionment& e, const std::string& tex
     if (wanted.motions.size() != c.chain.objects.size())
         return error(words.back().column, "expected " + std::to_string(c.chain.objects.size()) + " motions (one per part of the chain) after the places, found " +
                                               std::to_string(wanted.motions.size()));
-    const auto id = c.states.find(wanted);
-    if (!id) return error(words[0].column, "'" + text + "' is not a state of the envisionment: its motions are not consistent with its places");
-    return StateRef{*chain, *id};
+    return NamedState{*chain, wanted, c.states.find(wanted)};
 }
 
 }  // namespace qm::envision

@@ -21,4 +21,15 @@ struct StateRef {
 [[nodiscard]] std::optional<StateRef> find_state(const Envisionment& e, const std::string& text, const std::string& option,
                                                  Diagnostics& diagnostics);
 
+// A state as named, whether or not it is consistent (for "why is this not a state?"): its chain and
+// its places and motions. An id names a generated state.
+struct NamedState {
+    std::size_t chain = 0;
+    State state;
+    std::optional<StateId> id;  // when it is a state of the envisionment
+};
+// column: where text starts within the option's text (for locating errors in a part of it).
+[[nodiscard]] std::optional<NamedState> parse_state(const Envisionment& e, const std::string& text, const std::string& option,
+                                                    Diagnostics& diagnostics, const std::string& whole = {}, std::uint32_t column = 1);
+
 }  // namespace qm::envision

@@ -72,3 +72,34 @@ void write_previous(std::ostream& os, const Envisionment& e, const StateRef& s) 
 }
 
 }  // namespace qm::envision
+
+namespace qm::envision {
+
+void write_behaviour(std::ostream& os, const Envisionment& e, const Behaviour& b, const BehaviourAnswer& answer) {
+    const ChainEnvisionment& c = e.chains[b.chain];
+    os << "behaviour (chain " << c.chain.index + 1 << "):";
+    for (std::size_t i = 0; i < b.steps.size(); ++i) os << (i ? " ;" : "") << ' ' << b.steps[i].text;
+    for (const auto& d : b.avoid) os << "  avoiding: " << d.text;
+    os << '\n';
+    if (!answer.path.empty()) {
+        os << "path (" << answer.path.size() << (answer.path.size() == 1 ? " state" : " states") << "):\n";
+        for (std::size_t i = 0; i < answer.path.size(); ++i) {
+            os << "  #" << answer.path[i].value << ' ' << state_name(e, c, answer.path[i]);
+            std::string marks;
+            for (std::size_t d = 0; d < answer.matched_at.size(); ++d)
+                if (answer.matched_at[d] == i) marks += (marks.empty() ? "" : ", ") + std::to_string(d + 1) + ": " + b.steps[d].text;
+            if (!marks.empty()) os << "   <- " << marks;
+            os << '\n';
+        }
+        return;
+    }
+    if (answer.matched == 0) {
+        os << "no path: no state matches description 1 ('" << b.steps.front().text << "')" << (b.avoid.empty() ? "" : " that is not avoided") << '\n';
+        return;
+    }
+    os << "no path: descriptions 1.." << answer.matched << " are matched (the last at #" << answer.farthest->value << ' '
+       << state_name(e, c, *answer.farthest) << "), but no path goes on to a state matching description " << answer.matched + 1 << " ('"
+       << b.steps[answer.matched].text << "')\n";
+}
+
+}  // namespace qm::envision

@@ -112,9 +112,10 @@ bool state_less(const State& x, const State& y) {
 
 }  // namespace
 
-std::optional<StateSpace> enumerate_states(const Laws& laws, const g::Mechanism& m, std::span<const bridge::PairPlaces> pairs,
-                                           const Chain& chain, std::size_t max_states, const ProgressFn& progress,
-                                           Diagnostics& diagnostics) {
+namespace {
+
+std::unique_ptr<engine::Engine> run_laws(const Laws& laws, const g::Mechanism& m, std::span<const bridge::PairPlaces> pairs,
+                                         const Chain& chain, Diagnostics& diagnostics) {
     auto e = laws.state_space_engine();
     bridge::assert_parts(*e, m, chain.objects, /*choices=*/true);
     bridge::assert_linkages(*e, m, chain.objects);
@@ -126,7 +127,34 @@ std::optional<StateSpace> enumerate_states(const Laws& laws, const g::Mechanism&
     const std::size_t before = diagnostics.size();
     e->run(diagnostics);
     for (std::size_t i = before; i < diagnostics.size(); ++i)
-        if (diagnostics.items()[i].severity == Severity::error) return std::nullopt;
+        if (diagnostics.items()[i].severity == Severity::error) return nullptr;
+    return e;
+}
+
+}  // namespace
+
+std::optional<StateSpaceEngine> state_space_engine(const Laws& laws, const g::Mechanism& m, std::span<const bridge::PairPlaces> pairs,
+                                                   const Chain& chain, Diagnostics& diagnostics) {
+    auto e = run_laws(laws, m, pairs, chain, diagnostics);
+    if (!e) return std::nullopt;
+    const auto ordered = order_choice_sets(*e, m, pairs, chain, diagnostics);
+    if (!ordered) return std::nullopt;
+    StateSpaceEngine out{std::move(e), std::vector<std::map<std::uint32_t, atms::AssumptionId>>(chain.pairs.size()),
+                         std::vector<std::map<std::int8_t, atms::AssumptionId>>(chain.objects.size())};
+    for (std::size_t k = 0; k < ordered->sets.size(); ++k)
+        for (std::size_t i = 0; i < ordered->sets[k].size(); ++i) {
+            const Choice& c = ordered->meaning[k][i];
+            if (c.is_place) out.place[c.index][c.value] = ordered->sets[k][i];
+            else out.motion[c.index][c.motion] = ordered->sets[k][i];
+        }
+    return out;
+}
+
+std::optional<StateSpace> enumerate_states(const Laws& laws, const g::Mechanism& m, std::span<const bridge::PairPlaces> pairs,
+                                           const Chain& chain, std::size_t max_states, const ProgressFn& progress,
+                                           Diagnostics& diagnostics) {
+    auto e = run_laws(laws, m, pairs, chain, diagnostics);
+    if (!e) return std::nullopt;
     const auto ordered = order_choice_sets(*e, m, pairs, chain, diagnostics);
     if (!ordered) return std::nullopt;
 

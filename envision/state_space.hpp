@@ -21,6 +21,8 @@
 #include "envision/laws.hpp"
 #include "envision/progress.hpp"
 #include "envision/state.hpp"
+#include <map>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -32,6 +34,18 @@ struct StateSpace {
     ChainTables tables;
     std::size_t nogoods = 0;  // minimal nogoods of the state-space engine (for --stats)
 };
+
+// The state-space engine of a chain, run: the laws over the chain's places, with the assumptions
+// that stand for each pair's places and each part's motions (for questions: which nogoods exclude
+// a combination).
+struct StateSpaceEngine {
+    std::unique_ptr<engine::Engine> engine;
+    std::vector<std::map<std::uint32_t, atms::AssumptionId>> place;  // per pair: place id -> (at P PLACE)
+    std::vector<std::map<std::int8_t, atms::AssumptionId>> motion;   // per object: motion -> (motion O M)
+};
+[[nodiscard]] std::optional<StateSpaceEngine> state_space_engine(const Laws& laws, const geometry::Mechanism& m,
+                                                                 std::span<const bridge::PairPlaces> pairs, const Chain& chain,
+                                                                 Diagnostics& diagnostics);
 
 [[nodiscard]] std::optional<StateSpace> enumerate_states(const Laws& laws, const geometry::Mechanism& m,
                                                          std::span<const bridge::PairPlaces> pairs, const Chain& chain,

@@ -30,9 +30,33 @@ public:
             parts_.emplace_back(chain.object_index(pairs[k].spec.a), chain.object_index(pairs[k].spec.b));
     }
 
+    // Only the hypotheses that lead to `target`, and why each fails (for --why-not).
+    void explain(StateId target, const std::vector<std::string>& pair_names, const std::vector<std::string>& object_names) {
+        target_ = target;
+        pair_names_ = pair_names;
+        object_names_ = object_names;
+    }
+    [[nodiscard]] std::vector<std::string> reasons() { return std::exchange(reasons_, {}); }
+
     void step(const StepOptions& s) {
         // A pair that may wrap may also stay: both reach the same state, so keep the wrap.
         std::vector<std::vector<PlaceOption>> places = s.places;
+        if (target_) {
+            const State& t = states_[*target_];
+            for (std::size_t k = 0; k < places.size(); ++k) {
+                std::vector<PlaceOption> to;
+                for (const auto& o : places[k])
+                    if (o.place == t.places[k]) to.push_back(o);
+                if (to.empty()) {
+                    std::string options;
+                    for (const auto& o : places[k]) options += (options.empty() ? "" : ", ") + std::to_string(o.place.value);
+                    reasons_.push_back("pair " + pair_names_[k] + " cannot be at place " + std::to_string(t.places[k].value) +
+                                       " after this step: its next places are " + options);
+                    return;
+                }
+                places[k] = std::move(to);
+            }
+        }
         for (std::size_t k = 0; k < places.size(); ++k) {
             auto& opts = places[k];
             if (std::any_of(opts.begin(), opts.end(), [](const PlaceOption& o) { return o.how == How::wrap; }))
@@ -71,7 +95,12 @@ private:
                         if (std::find(a.after.begin(), a.after.end(), after) == a.after.end()) a.after.push_back(after);
                     }
                 }
-            if (a.after.empty()) return;  // the laws give no way on: no such next state
+            if (a.after.empty()) {  // the laws give no way on: no such next state
+                if (target_)
+                    reasons_.push_back("pair " + pair_names_[p] + " arriving at place " + std::to_string(chosen[p].place.value) +
+                                       " has no motion to go on with (the laws give no arrival there)");
+                return;
+            }
             if (!unchanged) arrivals.push_back(std::move(a));
         }
         std::vector<g::QualDirection> branch(arrivals.size());
@@ -105,6 +134,18 @@ private:
                 fixed[o] = x;
             }
         }
+        if (target_) {
+            const State& t = states_[*target_];
+            for (std::size_t i = 0; i < arrivals.size(); ++i) {
+                const auto [a, b] = parts_[arrivals[i].pair];
+                if (t.motions[a] != branch[i].s[0] || t.motions[b] != branch[i].s[1]) {
+                    reasons_.push_back("arriving at place " + std::to_string(places[arrivals[i].pair].place.value) + ", pair " +
+                                       pair_names_[arrivals[i].pair] + " moves on with " + g::to_string(branch[i]) +
+                                       " in this outcome, not with the target's motions");
+                    return;
+                }
+            }
+        }
         std::vector<bool> must(n, false);
         for (std::size_t o = 0; o < n; ++o)
             must[o] = std::find(s.motions[o].begin(), s.motions[o].end(), current_.motions[o]) == s.motions[o].end();
@@ -132,10 +173,48 @@ private:
             candidates.push_back(id);
             ranks.push_back(std::move(r));
         }
+        if (target_) {
+            explain_target(s, candidates, ranks, must, fixed);
+            return;
+        }
         for (const std::size_t i : atms::pareto_front(ranks)) {
             if (candidates[i] == from_ && !wraps) continue;  // nothing happens: no transition
             found_[{candidates[i], s.duration}] |= causes;
         }
+    }
+
+    void explain_target(const StepOptions& s, const std::vector<StateId>& candidates, const std::vector<std::vector<int>>& ranks,
+                        const std::vector<bool>& must, const std::vector<std::optional<std::int8_t>>& fixed) {
+        const State& t = states_[*target_];
+        const auto it = std::find(candidates.begin(), candidates.end(), *target_);
+        if (it == candidates.end()) {
+            for (std::size_t o = 0; o < t.motions.size(); ++o) {
+                if (fixed[o] || !must[o]) continue;
+                std::string options;
+                for (const auto x : s.motions[o]) options += std::string(options.empty() ? "" : " ") + sign_word(x);
+                if (std::find(s.motions[o].begin(), s.motions[o].end(), t.motions[o]) == s.motions[o].end())
+                    reasons_.push_back("part " + object_names_[o] + " must change its motion in this step, to one of " + options +
+                                       " (Table 5.1 with its net force), not " + sign_word(t.motions[o]));
+            }
+            return;
+        }
+        const auto& mine = ranks[static_cast<std::size_t>(it - candidates.begin())];
+        for (std::size_t i = 0; i < candidates.size(); ++i) {
+            const auto& other = ranks[i];
+            bool le = true, lt = false;
+            for (std::size_t k = 0; k < mine.size(); ++k) {
+                le = le && other[k] <= mine[k];
+                lt = lt || other[k] < mine[k];
+            }
+            if (le && lt) {
+                reasons_.push_back("state #" + std::to_string(candidates[i].value) +
+                                   " has these places too and is nearer to what the step allows for every part (Def 38: the chain is made consistent by nearness, 8.3.4)");
+                return;
+            }
+        }
+        reasons_.push_back(candidates[static_cast<std::size_t>(it - candidates.begin())] == from_
+                               ? "this step changes nothing that would lead back to the state itself"
+                               : "this step allows it");
     }
 
     // Def 38 with 8.3.4's threshold: how near a motion is to the nearest of an object's options.
@@ -151,9 +230,30 @@ private:
     const ChainTables& tables_;
     std::vector<std::pair<std::size_t, std::size_t>> parts_;  // per pair: its parts' object indices
     std::map<std::pair<StateId, Duration>, std::uint8_t> found_;
+    std::optional<StateId> target_;
+    std::vector<std::string> pair_names_, object_names_, reasons_;
 };
 
 }  // namespace
+
+std::vector<std::pair<std::string, std::vector<std::string>>> why_no_transition(StateId from, StateId to, const StateIndex& states,
+                                                                                const Chain& chain, std::span<const bridge::PairPlaces> pairs,
+                                                                                const std::vector<std::string>& object_names,
+                                                                                const ChainTables& tables, const StateDynamics& dynamics) {
+    Builder b(from, states, chain, pairs, tables);
+    std::vector<std::string> pair_names;
+    for (const std::size_t k : chain.pairs) pair_names.push_back(pairs[k].name);
+    b.explain(to, pair_names, object_names);
+    std::vector<std::pair<std::string, std::vector<std::string>>> out;
+    for (const auto& s : dynamics.steps) {
+        b.step(s);
+        auto reasons = b.reasons();
+        std::sort(reasons.begin(), reasons.end());
+        reasons.erase(std::unique(reasons.begin(), reasons.end()), reasons.end());
+        out.emplace_back(s.name, std::move(reasons));
+    }
+    return out;
+}
 
 std::vector<Transition> successors(StateId from, const StateIndex& states, const Chain& chain,
                                    std::span<const bridge::PairPlaces> pairs, const ChainTables& tables,

@@ -19,6 +19,8 @@
 #include "envision/chain_tables.hpp"
 #include "envision/state_dynamics.hpp"
 #include "envision/state_index.hpp"
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace qm::envision {
@@ -26,5 +28,12 @@ namespace qm::envision {
 [[nodiscard]] std::vector<Transition> successors(StateId from, const StateIndex& states, const Chain& chain,
                                                  std::span<const bridge::PairPlaces> pairs, const ChainTables& tables,
                                                  const StateDynamics& dynamics);
+
+// Why `from` has no transition to `to` (--why-not): per step of the state, the reasons its
+// hypotheses do not give `to` (a pair that cannot reach the place, a collision's outcome, a part
+// that must change, a nearer state, or "this step allows it" when only a preemption stops it).
+[[nodiscard]] std::vector<std::pair<std::string, std::vector<std::string>>> why_no_transition(
+    StateId from, StateId to, const StateIndex& states, const Chain& chain, std::span<const bridge::PairPlaces> pairs,
+    const std::vector<std::string>& object_names, const ChainTables& tables, const StateDynamics& dynamics);
 
 }  // namespace qm::envision

@@ -29,17 +29,15 @@ public:
            << m_.parts[pair.spec.a].name << " / " << m_.parts[pair.spec.b].name << '\n';
         // Cells by row (place vector) and column.
         std::map<std::vector<std::uint32_t>, std::array<std::vector<std::string>, 9>> rows;
+        std::vector<std::vector<const Transition*>> out(c_.states.size());
+        for (const auto& t : c_.transitions) out[t.from.value].push_back(&t);
         for (std::uint32_t i = 0; i < c_.states.size(); ++i) {
+            if (!c_.is_shown(StateId{i})) continue;
             const State& s = c_.states[StateId{i}];
             auto& cell = rows[place_key(s)][column(s)];
             if (several_per_cell()) cell.push_back("[" + others(s) + "]");
-            bool any = false;
-            for (const auto& t : c_.transitions) {
-                if (t.from.value != i) continue;
-                any = true;
-                cell.push_back(entry(c_.states[t.to]) + (t.duration == Duration::instant ? " i" : ""));
-            }
-            if (!any) cell.push_back(".");
+            for (const Transition* t : out[i]) cell.push_back(entry(c_.states[t->to]) + (t->duration == Duration::instant ? " i" : ""));
+            if (out[i].empty()) cell.push_back(".");
         }
         std::vector<std::string> header{"place"};
         for (int x = -1; x <= 1; ++x)

@@ -5,6 +5,9 @@ namespace qm::envision {
 
 namespace {
 
+// A summary, not a listing: the first states of each list (the JSON has them all).
+constexpr std::size_t shown_per_list = 12;
+
 std::string plural(std::size_t n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); }
 
 }  // namespace
@@ -22,16 +25,19 @@ void write_text(std::ostream& os, const geometry::Mechanism& m, const Envisionme
             os << (k ? ", " : " ") << pair.name << " (" << plural(pair.vocabulary.places.size(), "place", "places")
                << (pair.from_cache ? ", from cache" : "") << ')';
         }
-        os << "\n  states: " << c.states.size() << ", transitions: " << c.transitions.size() << ", cycles: " << c.graph.cycles.size()
+        os << "\n  states: " << c.shown_count() << ", transitions: " << c.transitions.size() << ", cycles: " << c.graph.cycles.size()
            << ", terminal states: " << c.graph.terminal.size() << '\n';
         for (std::size_t i = 0; i < c.graph.cycles.size(); ++i) {
             const auto& cycle = c.graph.cycles[i];
             os << "  cycle " << i + 1 << " (" << plural(cycle.size(), "state", "states") << "):\n";
-            for (const StateId s : cycle) os << "    #" << s.value << ' ' << state_name(e, c, s) << '\n';
+            for (std::size_t k = 0; k < cycle.size() && k < shown_per_list; ++k) os << "    #" << cycle[k].value << ' ' << state_name(e, c, cycle[k]) << '\n';
+            if (cycle.size() > shown_per_list) os << "    ... and " << cycle.size() - shown_per_list << " more (--json lists them all)\n";
         }
         if (!c.graph.terminal.empty()) os << "  terminal states:\n";
-        for (const StateId s : c.graph.terminal) os << "    #" << s.value << ' ' << state_name(e, c, s) << '\n';
-        states += c.states.size();
+        for (std::size_t k = 0; k < c.graph.terminal.size() && k < shown_per_list; ++k)
+            os << "    #" << c.graph.terminal[k].value << ' ' << state_name(e, c, c.graph.terminal[k]) << '\n';
+        if (c.graph.terminal.size() > shown_per_list) os << "    ... and " << c.graph.terminal.size() - shown_per_list << " more (--json lists them all)\n";
+        states += c.shown_count();
         transitions += c.transitions.size();
         cycles += c.graph.cycles.size();
         terminal += c.graph.terminal.size();

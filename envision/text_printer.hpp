@@ -2,7 +2,7 @@
 // Provides:   write_text(), the envisionment as `qm-atms envision` prints it by default (docs/
 //             ENVISION.md): per kinematic chain its objects, its pairs with their place counts, the
 //             numbers of states and transitions, the behavioural cycles and the terminal states, each
-//             state as `#ID NAME`; then a summary line.
+//             state as `#ID NAME` (the first 12 of each list, then how many more); then a summary line.
 // Ownership:  writes to the stream given; keeps nothing.
 #pragma once
 #include "envision/envisionment.hpp"

@@ -109,12 +109,12 @@ TEST_CASE("bridge/place_facts: one place and one motion; parts, shafts, forces")
     CHECK(count(*e, c::clock_object) == 2);
     CHECK(count(*e, c::possible_motions) == 2);
     CHECK(count(*e, c::fixed_part) == 0);
-    const auto assumed = bridge::assert_forces(*e, m, parts, true, {});
+    const auto assumed = bridge::assert_forces(*e, m, parts, bridge::ForceFacts::assumptions, {});
     CHECK(assumed.size() == 2);  // the spring on the wheel, gravity on the pallets
     for (const auto f : assumed) CHECK(e->assumption(f).has_value());
     CHECK(count(*e, c::cause) == 2);
     CHECK(count(*e, c::constant_force) == 1);  // the spring's torque
     const bridge::ForceRef without[] = {{pair.spec.b, std::nullopt}};
     auto e2 = empty_engine();
-    CHECK(bridge::assert_forces(*e2, m, parts, true, without).size() == 1);
+    CHECK(bridge::assert_forces(*e2, m, parts, bridge::ForceFacts::assumptions, without).size() == 1);
 }
