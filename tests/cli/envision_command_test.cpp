@@ -137,6 +137,58 @@ TEST_CASE("cli/envision: --next, --previous and --without") {
     CHECK(without.out.find("gravity") == std::string::npos);
 }
 
+TEST_CASE("cli/envision: --from, --path, --why-not, --dot and --svg") {
+    const std::string ratchet = std::string(QM_SOURCE_DIR) + "/scenarios/clock/ratchet.def";
+    const auto all = envision(ratchet + " --json");
+    REQUIRE(all.status == 0);
+    const auto j = Json::parse(all.out);
+    REQUIRE(j.has_value());
+    const auto& c = (*j)["chains"].array()[0];
+    REQUIRE(c["terminal"].array().size() == 1);
+    const std::string jam = "#" + std::to_string(static_cast<int>(c["terminal"].array()[0].number()));
+    // What the jammed state leads to: itself alone.
+    const auto from = envision(ratchet + " --from '" + jam + "' --json");
+    REQUIRE(from.status == 0);
+    const auto f = Json::parse(from.out);
+    REQUIRE(f.has_value());
+    CHECK((*f)["chains"].array()[0]["states"].array().size() == 1);
+    CHECK((*f)["chains"].array()[0]["transitions"].array().empty());
+    // From rest in free space to the jam (9.2.3, Figure 9.27).
+    const auto path = envision(ratchet + " --path 'ratchet-wheel/pawl:free ratchet-wheel=0 pawl=0 ; " + jam + "'");
+    REQUIRE(path.status == 0);
+    CHECK(path.out.find("path (") != std::string::npos);
+    CHECK(path.out.find("<- 2: " + jam) != std::string::npos);
+    const auto none = envision(ratchet + " --path '" + jam + " ; ratchet-wheel=+'");
+    REQUIRE(none.status == 0);
+    CHECK(none.out.find("no path: descriptions 1..1 are matched") != std::string::npos);
+    // Why not: a combination the jam's corner blocks, and a transition that is not there.
+    const auto blocked = envision(ratchet + " --why-not '" + jam + " -> ratchet-wheel/pawl-2 + 0'");
+    REQUIRE(blocked.status == 0);
+    CHECK(blocked.out.find("is not a state") != std::string::npos);
+    CHECK(blocked.out.find("false <= rule motion-into-blocked-space") != std::string::npos);
+    const auto stuck = envision(ratchet + " --why-not '" + jam + " -> #0'");
+    REQUIRE(stuck.status == 0);
+    CHECK(stuck.out.find("no transition " + jam) == 0);
+    CHECK(stuck.out.find("the laws in the first state:") != std::string::npos);
+    // Graphviz: the graph written whole; --svg needs `dot`.
+    const std::string dot = std::string(QM_BINARY_DIR) + "/envision_test.dot";
+    std::remove(dot.c_str());
+    const auto d = envision(ratchet + " --dot " + dot);
+    REQUIRE(d.status == 0);
+    std::ifstream in(dot);
+    std::stringstream graph;
+    graph << in.rdbuf();
+    CHECK(graph.str().find("digraph \"ratchet\"") == 0);
+    CHECK(graph.str().find("peripheries=2") != std::string::npos);  // the terminal state
+    const auto svg = envision(ratchet + " --svg " + std::string(QM_BINARY_DIR) + "/envision_test.svg");
+    if (std::system("command -v dot >/dev/null 2>&1") != 0) {
+        CHECK(svg.status == 2);
+        CHECK(svg.err.find("--svg needs Graphviz's `dot`") != std::string::npos);
+    } else {
+        CHECK(svg.status == 0);
+    }
+}
+
 TEST_CASE("cli/envision: bad input is a located error, exit status 2, and nothing on standard output") {
     struct Case {
         std::string args, message;
@@ -164,6 +216,11 @@ TEST_CASE("cli/envision: bad input is a located error, exit status 2, and nothin
         {scene("cam.def") + " --without 'Force cam wind'", "--without:1:11: error: no force of cause 'wind' acts on 'cam'"},
         {scene("cam.def") + " --without 'Contact cam follower'", "--without:1:1: error: expected 'Force PART [CAUSE]'"},
         {scene("cam.def") + " --table --json", "--table and --json are two different outputs"},
+        {scene("cam.def") + " --avoid 'cam=+'", "--avoid goes with --path"},
+        {scene("cam.def") + " --path 'cam=x'", "--path:1:5: error: expected a motion +, 0 or -, not 'x'"},
+        {scene("cam.def") + " --why-not '#0 #1'", "--why-not:1:1: error: expected 'STATE -> STATE'"},
+        {scene("cam.def") + " --why-not '#0 -> cam/follower-0 + x'", "--why-not:1:24: error: expected a motion +, 0 or -, not 'x'"},
+        {scene("cam.def") + " --from 'cam/follower-1'", "--from:1:1: error: expected 2 motions (one per part of the chain) after the places, found 0"},
         {scene("cam.def") + " --frobnicate", "unknown or incomplete option '--frobnicate'"},
         {scene("cam.def") + " --rules /nonexistent", "/nonexistent:1:1: error: expected a folder of .rules files"},
         {std::string(QM_BINARY_DIR) + "/no_such_scene.def", "no_such_scene.def"},
