@@ -7,7 +7,9 @@
 #include "envision/successors.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <thread>
 
 namespace qm::envision {
 
@@ -15,6 +17,50 @@ namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Every state's transitions (Figure 8.5). One engine per state, its forces and motions premises.
+// (One engine per place vector with its states as contexts was measured slower: the contexts'
+// labels cost more than the engines, docs/PERFORMANCE.md.) The states are independent: workers
+// take them in turn, each with its own engines and diagnostics; the results are put in state order.
+bool find_transitions(const Laws& laws, const geometry::Mechanism& m, const Envisionment& e, ChainEnvisionment& c,
+                      const ChainTables& tables, const EnvisionOptions& options, const std::string& phase, Diagnostics& diagnostics) {
+    const std::size_t n = c.states.size();
+    std::vector<std::vector<Transition>> out(n);
+    std::vector<std::vector<std::int8_t>> net(n);
+    std::atomic<std::size_t> next{0}, done{0};
+    std::atomic<bool> failed{false};
+    const unsigned workers = std::max(1u, std::min<unsigned>(options.threads, static_cast<unsigned>(std::max<std::size_t>(1, n / 64))));
+    std::vector<Diagnostics> reported(workers);
+    auto work = [&](unsigned w) {
+        for (std::size_t i = next++; i < n && !failed; i = next++) {
+            const StateId id{static_cast<std::uint32_t>(i)};
+            const State* const only[] = {&c.states[id]};
+            PlaceVectorEngine engine(laws, m, e.pairs, c.chain, only, options.without, /*labelled=*/false);
+            const auto env = engine.run(0, reported[w]);
+            const auto dynamics = env ? read_dynamics(engine.engine(), *env, m, e.pairs, c.chain, reported[w]) : std::nullopt;
+            if (!dynamics) {
+                failed = true;
+                return;
+            }
+            net[i] = dynamics->net_force;
+            out[i] = successors(id, c.states, c.chain, e.pairs, tables, *dynamics);
+            const std::size_t finished = ++done;
+            if (w == 0 && options.progress && finished % 16 == 0) options.progress({phase, finished, n});
+        }
+    };
+    std::vector<std::thread> threads;
+    for (unsigned w = 1; w < workers; ++w) threads.emplace_back(work, w);
+    work(0);
+    for (auto& t : threads) t.join();
+    for (const auto& r : reported)
+        for (const auto& d : r.items()) diagnostics.add(d);
+    if (failed) return false;
+    for (std::size_t i = 0; i < n; ++i) {
+        c.states[StateId{static_cast<std::uint32_t>(i)}].net_force = std::move(net[i]);
+        c.transitions.insert(c.transitions.end(), out[i].begin(), out[i].end());
+    }
+    return true;
 }
 
 }  // namespace
@@ -44,22 +90,7 @@ std::optional<Envisionment> envision(const geometry::Mechanism& m, const Envisio
         c.seconds_states = seconds_since(t0);
         t0 = std::chrono::steady_clock::now();
         const std::string phase = "chain " + std::to_string(c.chain.index + 1) + ": transitions";
-        // One engine per state, its forces and motions premises. (One engine per place vector with
-        // its states as contexts was measured slower: the contexts' labels cost more than the
-        // engines, docs/PERFORMANCE.md.)
-        for (std::uint32_t i = 0; i < c.states.size(); ++i) {
-            const StateId id{i};
-            const State* const only[] = {&c.states[id]};
-            PlaceVectorEngine engine(*laws, m, e.pairs, c.chain, only, options.without, /*labelled=*/false);
-            const auto env = engine.run(0, diagnostics);
-            if (!env) return std::nullopt;
-            const auto dynamics = read_dynamics(engine.engine(), *env, m, e.pairs, c.chain, diagnostics);
-            if (!dynamics) return std::nullopt;
-            c.states[id].net_force = dynamics->net_force;
-            auto out = successors(id, c.states, c.chain, e.pairs, space->tables, *dynamics);
-            c.transitions.insert(c.transitions.end(), out.begin(), out.end());
-            if (options.progress && (i + 1) % 16 == 0) options.progress({phase, i + 1, c.states.size()});
-        }
+        if (!find_transitions(*laws, m, e, c, space->tables, options, phase, diagnostics)) return std::nullopt;
         c.seconds_transitions = seconds_since(t0);
         c.tables = std::move(space->tables);
         c.graph = behaviour_graph(c.states.size(), c.transitions);

@@ -52,6 +52,7 @@ struct EnvisionOptions {
     const geometry::PlaceCache* cache = nullptr;  // null: compute every vocabulary
     std::size_t max_states = 1'000'000;           // over all chains
     std::vector<bridge::ForceRef> without;        // external forces taken away (what-if)
+    unsigned threads = 2;                         // workers finding the states' transitions (1: none)
     ProgressFn progress;
 };
 

@@ -113,10 +113,15 @@ TEST_CASE("envision/envisionment: every transition follows the adjacency and Law
     }
 }
 
-TEST_CASE("envision/envisionment: the output is the same on every run (stable ids)") {
+TEST_CASE("envision/envisionment: the output is the same on every run (stable ids), with one worker or two") {
     const auto m = mechanism("scenarios/metric/escapement.def");
-    std::ostringstream a, b;
-    write_json(a, m, envisioned(m));
-    write_json(b, m, envisioned(m));
+    EnvisionOptions one, two;
+    one.threads = 1;
+    two.threads = 2;
+    std::ostringstream a, b, c;
+    write_json(a, m, envisioned(m, one));
+    write_json(b, m, envisioned(m, two));
+    write_json(c, m, envisioned(m, two));
     CHECK(a.str() == b.str());
+    CHECK(b.str() == c.str());
 }
