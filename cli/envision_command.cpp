@@ -52,7 +52,6 @@ std::optional<std::size_t> count_of(const std::string& s) {
 
 // `Force PART [CAUSE]`, located in the option's text on error.
 std::optional<bridge::ForceRef> parse_without(const g::Mechanism& m, const std::string& text, Diagnostics& diags) {
-    std::istringstream in(text);
     std::vector<std::pair<std::string, std::size_t>> words;
     for (std::size_t i = 0; i < text.size();) {
         while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;

@@ -53,6 +53,8 @@ bool write_next(std::ostream& os, const geometry::Mechanism& m, const Envisionme
         }
         os << '\n';
     }
+    for (const auto& [first, then] : dynamics->preempts)
+        os << "  step " << dynamics->steps[then].name << " happens only if step " << dynamics->steps[first].name << " cannot (Law 4)\n";
     if (dynamics->steps.empty()) os << "  no step: nothing changes (a terminal state)\n";
     std::size_t n = 0;
     for (const auto& t : c.transitions) n += t.from == s.state;

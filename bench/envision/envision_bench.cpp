@@ -8,7 +8,8 @@
 //      see that it grows at most linearly;
 //   3. a clock-like chain: the bundled escapement's pair with its wheel on the shaft of the first of
 //      six gear pairs (the QRG clock's train chain, 9.1.3), warm;
-//   4. the fixed cost of one state's engine: an engine over the laws, made and run with no facts.
+//   4. the fixed cost of one state's engine: an engine over the laws a state's engine gets, made and
+//      run with no facts.
 // Usage: envision_bench [REPETITIONS [MECH.def ...]]   (default 5)
 #include "envision/envisionment.hpp"
 #include "geometry/metric_scene_parser.hpp"
@@ -175,7 +176,7 @@ int main(int argc, char** argv) {
     for (int r = 0; r < reps; ++r) {
         const auto t0 = std::chrono::steady_clock::now();
         for (int i = 0; i < 200; ++i) {
-            auto e = laws->engine();
+            auto e = laws->state_engine();
             Diagnostics dd;
             (void)e->run_in_context(e->atms().empty_environment(), dd);
         }
