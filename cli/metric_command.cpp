@@ -2,8 +2,8 @@
 // contacts and forces at a configuration into an Alex scene (thesis 2.4, 3.1.1, 8.2.1).
 #include "metric_command.hpp"
 
-#include "alex/scene_parser.hpp"
-#include "alex/scene_printer.hpp"
+#include "scene/scene_parser.hpp"
+#include "scene/scene_printer.hpp"
 #include "geometry/contact_detection.hpp"
 #include "geometry/contact_place.hpp"
 #include "geometry/cspace_svg.hpp"
@@ -26,7 +26,7 @@ namespace qm::cli {
 namespace {
 
 namespace g = qm::geometry;
-namespace a = qm::alex;
+namespace a = qm::scene;
 
 a::Sign sign_of(std::int8_t s) { return s > 0 ? a::Sign::plus : s < 0 ? a::Sign::minus : a::Sign::zero; }
 a::Direction direction_of(g::QualDirection d) { return {sign_of(d.s[0]), sign_of(d.s[1])}; }
@@ -261,7 +261,7 @@ int usage_error(std::ostream& err, const std::string& what) {
 
 }  // namespace
 
-std::optional<qm::alex::Scene> metric_scene_at(const std::string& path, const std::string& config, Diagnostics& diags) {
+std::optional<qm::scene::Scene> metric_scene_at(const std::string& path, const std::string& config, Diagnostics& diags) {
     auto r = scene_at(path, config, diags);
     if (!r) return std::nullopt;
     return std::move(r->scene);

@@ -1,9 +1,9 @@
 // cli/scene_command.cpp: `qm-atms SCENE.def` (thesis chapters 6-7), its options and the interactive mode.
 #include "scene_command.hpp"
-#include "alex/analysis.hpp"
-#include "alex/direction_text.hpp"
-#include "alex/result_printer.hpp"
-#include "alex/scene_parser.hpp"
+#include "analysis/analysis.hpp"
+#include "scene/direction_text.hpp"
+#include "analysis/result_printer.hpp"
+#include "scene/scene_parser.hpp"
 #include "metric_command.hpp"
 #include "query_text.hpp"
 #include "rules_location.hpp"
@@ -62,27 +62,27 @@ std::optional<std::size_t> positive(const std::string& s) {
 // Whether situation s (from 1) has the contact or force q, the things `--without` and `whatif` take
 // away. `Force OBJ` names every force on OBJ, scene-level ones included (they act in every situation);
 // `Force OBJ CAUSE` only the force(s) of that cause on OBJ.
-bool has_item(const alex::Scene& scene, std::size_t s, const alex::QueryFact& q) {
-    const alex::Situation& situation = scene.situations[s - 1];
-    if (q.kind == alex::QueryFact::Kind::contact)
-        return std::any_of(situation.contacts.begin(), situation.contacts.end(), [&](const alex::Contact& c) {
+bool has_item(const scene::Scene& scene, std::size_t s, const scene::QueryFact& q) {
+    const scene::Situation& situation = scene.situations[s - 1];
+    if (q.kind == scene::QueryFact::Kind::contact)
+        return std::any_of(situation.contacts.begin(), situation.contacts.end(), [&](const scene::Contact& c) {
             return (c.first == *q.first && c.second == *q.second) || (c.first == *q.second && c.second == *q.first);
         });
-    auto on = [&](const alex::Force& f) { return f.object == *q.object && (!q.cause || f.cause == *q.cause); };
+    auto on = [&](const scene::Force& f) { return f.object == *q.object && (!q.cause || f.cause == *q.cause); };
     return std::any_of(scene.forces.begin(), scene.forces.end(), on) ||
            std::any_of(situation.forces.begin(), situation.forces.end(), on);
 }
 
 // The contact or force in the scene's notation, for messages.
-std::string item_text(const alex::Scene& scene, const alex::QueryFact& q) {
-    if (q.kind == alex::QueryFact::Kind::contact)
+std::string item_text(const scene::Scene& scene, const scene::QueryFact& q) {
+    if (q.kind == scene::QueryFact::Kind::contact)
         return "Contact (" + scene.surfaces[*q.first].name + " " + scene.surfaces[*q.second].name + ")";
     if (q.cause) return "force of cause '" + scene.causes[*q.cause].name + "' on '" + scene.objects[*q.object].name + "'";
     return "force on '" + scene.objects[*q.object].name + "'";
 }
 
-bool is_contact_or_force(const alex::QueryFact& q) {
-    return q.kind == alex::QueryFact::Kind::contact || q.kind == alex::QueryFact::Kind::force;
+bool is_contact_or_force(const scene::QueryFact& q) {
+    return q.kind == scene::QueryFact::Kind::contact || q.kind == scene::QueryFact::Kind::force;
 }
 
 std::optional<SceneOptions> parse(std::span<const std::string> args, std::ostream& err) {
@@ -167,7 +167,7 @@ std::optional<SceneOptions> parse(std::span<const std::string> args, std::ostrea
 // The interactive mode: queries against the loaded analysis, without reloading anything.
 class Session {
 public:
-    Session(alex::Analysis& analysis, bool json, std::ostream& out, std::ostream& err)
+    Session(analysis::Analysis& analysis, bool json, std::ostream& out, std::ostream& err)
         : analysis_(analysis), json_(json), out_(out), err_(err) {}
 
     void run(std::istream& in) {
@@ -195,8 +195,8 @@ private:
         const auto space = line.find(' ');
         const std::string verb = line.substr(0, space);
         const std::string rest = space == std::string::npos ? std::string() : trim(line.substr(space + 1));
-        const alex::Scene& scene = analysis_.scene();
-        const alex::SituationResult& current = analysis_.situations()[situation_ - 1];
+        const scene::Scene& scene = analysis_.scene();
+        const analysis::SituationResult& current = analysis_.situations()[situation_ - 1];
         Diagnostics d;
         if (verb == "quit" || verb == "exit") return false;
         if (verb == "help") out_ << help;
@@ -211,13 +211,13 @@ private:
             else situation_ = *n;
         } else if (verb == "freedom" || verb == "motions") {
             if (json_) {
-                alex::write_situation_json(out_, scene, current);
+                analysis::write_situation_json(out_, scene, current);
                 out_ << '\n';
-            } else if (verb == "freedom") alex::print_freedom(out_, scene, current);
-            else alex::print_motions(out_, scene, current);
+            } else if (verb == "freedom") analysis::print_freedom(out_, scene, current);
+            else analysis::print_motions(out_, scene, current);
         } else if (verb == "why") {
             auto text = query_text(rest, "why", d);
-            auto q = text ? alex::parse_query_fact(scene, *text, d, "why") : std::nullopt;
+            auto q = text ? scene::parse_query_fact(scene, *text, d, "why") : std::nullopt;
             if (q && is_contact_or_force(*q)) {
                 d.error({"why", 1, 1}, "expected a motion or a freedom to explain (Translational-Motion, Rotational-Motion, "
                                        "Translational-Freedom, Rotational-Freedom), not a contact or force; "
@@ -225,18 +225,18 @@ private:
                 q.reset();
             }
             if (q)
-                if (auto w = analysis_.why(*q, situation_, d)) json_ ? alex::write_why_json(out_, *w) : alex::print_why(out_, *w);
+                if (auto w = analysis_.why(*q, situation_, d)) json_ ? analysis::write_why_json(out_, *w) : analysis::print_why(out_, *w);
         } else if (verb == "given") {
-            auto m = alex::parse_given(scene, rest, d, "given");
-            if (m) show(analysis_.with_given(situation_, std::span<const alex::Motion>(&*m, 1), d));
+            auto m = scene::parse_given(scene, rest, d, "given");
+            if (m) show(analysis_.with_given(situation_, std::span<const scene::Motion>(&*m, 1), d));
         } else if (verb == "whatif") {
-            std::vector<alex::QueryFact> without;
+            std::vector<scene::QueryFact> without;
             std::size_t from = 0;
             std::string text = rest.rfind("without ", 0) == 0 ? rest.substr(8) : rest;
             while (from <= text.size()) {
                 const auto semi = text.find(';', from);
                 const std::string part = trim(text.substr(from, semi == std::string::npos ? std::string::npos : semi - from));
-                if (auto q = alex::parse_query_fact(scene, part, d, "whatif")) {
+                if (auto q = scene::parse_query_fact(scene, part, d, "whatif")) {
                     if (!is_contact_or_force(*q))
                         d.error({"whatif", 1, 1}, "expected 'Contact A B' or 'Force OBJ [CAUSE]' to take away, but found '" + part + "'");
                     else if (!has_item(scene, situation_, *q))
@@ -255,13 +255,13 @@ private:
         return true;
     }
 
-    void show(const std::optional<alex::SituationResult>& r) {
+    void show(const std::optional<analysis::SituationResult>& r) {
         if (!r) return;
         if (json_) {
-            alex::write_situation_json(out_, analysis_.scene(), *r);
+            analysis::write_situation_json(out_, analysis_.scene(), *r);
             out_ << '\n';
         } else {
-            alex::print_situation(out_, analysis_.scene(), *r);
+            analysis::print_situation(out_, analysis_.scene(), *r);
         }
     }
 
@@ -277,7 +277,7 @@ private:
         "  json [on|off]         answer in JSON (docs/OUTPUT.md)\n"
         "  help, quit\n";
 
-    alex::Analysis& analysis_;
+    analysis::Analysis& analysis_;
     bool json_;
     std::size_t situation_ = 1;
     std::ostream& out_;
@@ -312,7 +312,7 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
         return 2;
     }
     Diagnostics d;
-    std::optional<alex::Scene> scene;
+    std::optional<scene::Scene> scene;
     if (is_metric_scene(options->scene)) {
         // A metric scene is analysed at a configuration, as the Alex scene --emit-def would write.
         scene = metric_scene_at(options->scene, options->config.value_or(""), d);
@@ -322,18 +322,18 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
         }
     } else {
         if (options->config) d.error({"--config", 1, 1}, "expected a metric scene (Defmechanism) with --config");
-        scene = alex::read_scene_file(options->scene, d);
+        scene = scene::read_scene_file(options->scene, d);
     }
     if (!scene || d.has_errors()) {
         d.print(err);
         return 2;
     }
-    alex::AnalysisOptions ao;
+    analysis::AnalysisOptions ao;
     ao.combination_limit = options->limit;
     std::vector<std::string> given_text;  // each --given as written, aligned with ao.given
     for (const auto& g : options->given)
-        if (auto m = alex::parse_given(*scene, g, d, "--given")) {
-            auto same = std::find_if(ao.given.begin(), ao.given.end(), [&](const alex::Motion& x) { return x.object == m->object; });
+        if (auto m = scene::parse_given(*scene, g, d, "--given")) {
+            auto same = std::find_if(ao.given.begin(), ao.given.end(), [&](const scene::Motion& x) { return x.object == m->object; });
             if (same != ao.given.end()) {
                 // One motion per object at a time (Law 1): the second would replace or contradict the first.
                 d.error({"--given", 1, 1}, "expected one --given per object, but '" + scene->objects[m->object].name +
@@ -349,11 +349,11 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     if (!d.has_errors())
         for (std::size_t k = 0; k < ao.given.size(); ++k)
             for (std::size_t s = 0; s < scene->situations.size(); ++s)
-                std::erase_if(scene->situations[s].motions, [&](const alex::Motion& m) {
+                std::erase_if(scene->situations[s].motions, [&](const scene::Motion& m) {
                     if (m.object != ao.given[k].object) return false;
                     d.add({Severity::note, m.where,
                            "--given '" + given_text[k] + "' replaces this Motion (" + scene->objects[m.object].name + " " +
-                               alex::thesis_text(m.translation) + " " + alex::thesis_text(m.rotation) + ") in situation " +
+                               scene::thesis_text(m.translation) + " " + scene::thesis_text(m.rotation) + ") in situation " +
                                std::to_string(s + 1),
                            {}, {}});
                     return true;
@@ -362,7 +362,7 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     const std::size_t situation = options->situation.value_or(1);
     const bool situation_ok = situation <= situations;
     for (const auto& w : options->without)
-        if (auto q = alex::parse_query_fact(*scene, w, d, "--without")) {
+        if (auto q = scene::parse_query_fact(*scene, w, d, "--without")) {
             // Taking away what is not there changes nothing: most likely a misspelt or misplaced item.
             bool present = false;
             for (std::size_t s = 1; s <= situations; ++s)
@@ -375,9 +375,9 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
                                                  (options->situation ? " has no " : " has a ") + item_text(*scene, *q));
             else ao.without.push_back(*q);
         }
-    std::optional<alex::QueryFact> why;
+    std::optional<scene::QueryFact> why;
     if (options->why)
-        if (auto text = query_text(*options->why, "--why", d)) why = alex::parse_query_fact(*scene, *text, d, "--why");
+        if (auto text = query_text(*options->why, "--why", d)) why = scene::parse_query_fact(*scene, *text, d, "--why");
     if (situations == 0 && (options->why || options->situation || options->interactive))
         d.error({options->interactive ? "-i" : options->why ? "--why" : "--situation", 1, 1},
                 "expected a scene with situations to ask about, but " + options->scene +
@@ -391,7 +391,7 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     d.print(err);  // errors, or notes (a --given replacing a scene's Motion)
     if (d.has_errors()) return 2;
     d = Diagnostics{};
-    auto analysis = alex::analyse(*scene, ao, d);
+    auto analysis = analysis::analyse(*scene, ao, d);
     if (!analysis) {
         d.print(err);
         return 2;
@@ -412,23 +412,23 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
             d.print(err);
             return 2;
         }
-        options->json ? alex::write_why_json(out, *w) : alex::print_why(out, *w);
+        options->json ? analysis::write_why_json(out, *w) : analysis::print_why(out, *w);
         return 0;
     }
     // The results are printed where they are (a scene with many combinations holds them once);
     // only a what-if, which adds a note, prints a copy.
-    std::span<const alex::SituationResult> shown = analysis->situations();
+    std::span<const analysis::SituationResult> shown = analysis->situations();
     if (options->situation) shown = shown.subspan(situation - 1, 1);
-    std::vector<alex::SituationResult> noted;
+    std::vector<analysis::SituationResult> noted;
     if (!ao.without.empty()) {
         noted.assign(shown.begin(), shown.end());
         // A what-if says what it took away, as the interactive `whatif` does (docs/OUTPUT.md).
-        for (alex::SituationResult& r : noted) {
+        for (analysis::SituationResult& r : noted) {
             std::string taken;
-            for (const alex::QueryFact& q : ao.without)
+            for (const scene::QueryFact& q : ao.without)
                 if (has_item(analysis->scene(), r.index, q))
                     taken += (taken.empty() ? "" : ", ") +
-                             (q.kind == alex::QueryFact::Kind::contact ? item_text(analysis->scene(), q)
+                             (q.kind == scene::QueryFact::Kind::contact ? item_text(analysis->scene(), q)
                               : q.cause                                ? "the " + item_text(analysis->scene(), q)
                                                                        : "every " + item_text(analysis->scene(), q));
             if (!taken.empty()) r.notes.insert(r.notes.begin(), "what-if: analysed without " + taken + " (--without)");
@@ -438,10 +438,10 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     // The JSON schema has no place for notes (docs/OUTPUT.md): a truncated enumeration is said on
     // standard error, so a program reading the JSON is not silently given a partial list.
     if (options->json)
-        for (const alex::SituationResult& r : shown)
+        for (const analysis::SituationResult& r : shown)
             for (const std::string& n : r.notes) err << "qm-atms: note: situation " << r.index << ": " << n << '\n';
-    options->json ? alex::write_analysis_json(out, analysis->scene(), shown)
-                  : alex::print_analysis(out, analysis->scene(), shown);
+    options->json ? analysis::write_analysis_json(out, analysis->scene(), shown)
+                  : analysis::print_analysis(out, analysis->scene(), shown);
     return 0;
 }
 
