@@ -1,11 +1,11 @@
 // analysis/result_printer.cpp
 #include "analysis/result_printer.hpp"
 #include "scene/direction_text.hpp"
-#include "engine/json_writer.hpp"
+#include "qm/json.hpp"
 
 namespace qm::analysis {
 namespace {
-using engine::json_string;
+using qm::json_string;
 
 std::string plural(std::uint64_t n, const char* word) {
     return std::to_string(n) + " " + word + (n == 1 ? "" : "s");

@@ -15,6 +15,7 @@
 #include "geometry/place_text.hpp"
 #include "geometry/place_vocabulary_builder.hpp"
 #include "qm/assert.hpp"
+#include "qm/json.hpp"
 
 #include <cstdlib>
 #include <filesystem>
@@ -244,16 +245,6 @@ std::string axis_text(const g::Mechanism& m, g::PartId p, const g::CSpaceAxis& a
     return os.str();
 }
 
-void json_string(std::ostream& os, const std::string& s) {
-    os << '"';
-    for (char c : s) {
-        if (c == '"' || c == '\\') os << '\\' << c;
-        else if (static_cast<unsigned char>(c) < 0x20) os << ' ';
-        else os << c;
-    }
-    os << '"';
-}
-
 int usage_error(std::ostream& err, const std::string& what) {
     err << "qm-atms: " << what << "\n" << metric_usage();
     return 2;
@@ -310,7 +301,7 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
     std::ostringstream text, js;
     text << "mechanism " << m->name << ": " << selection.modelled.size() << " kinematic pair" << (selection.modelled.size() == 1 ? "" : "s") << '\n';
     js << "{\"schema\":\"qm-metric-places/1\",\"mechanism\":";
-    json_string(js, m->name);
+    write_json_string(js, m->name);
     js << ",\"pairs\":[";
     for (std::size_t k = 0; k < selection.modelled.size(); ++k) {
         const auto& pair = selection.modelled[k];
@@ -353,9 +344,9 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
              << "; q1 = " << axis_text(*m, pair.b, request.cspace.axes[1]) << ")" << (from_cache ? " from cache" : "") << '\n';
         g::write_place_text(text, vocabulary);
         js << (k ? "," : "") << "{\"parts\":[";
-        json_string(js, m->parts[pair.a].name);
+        write_json_string(js, m->parts[pair.a].name);
         js << ',';
-        json_string(js, m->parts[pair.b].name);
+        write_json_string(js, m->parts[pair.b].name);
         js << "],\"from_cache\":" << (from_cache ? "true" : "false") << ",\"vocabulary\":";
         g::write_place_json(js, request.cspace, vocabulary);
         js << '}';
@@ -365,11 +356,11 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
         const auto& s = selection.skipped[k];
         text << "no configuration space for " << m->parts[s.a].name << ' ' << m->parts[s.b].name << ": " << s.reason << '\n';
         js << (k ? "," : "") << "{\"parts\":[";
-        json_string(js, m->parts[s.a].name);
+        write_json_string(js, m->parts[s.a].name);
         js << ',';
-        json_string(js, m->parts[s.b].name);
+        write_json_string(js, m->parts[s.b].name);
         js << "],\"reason\":";
-        json_string(js, s.reason);
+        write_json_string(js, s.reason);
         js << '}';
     }
     js << "],\"linkages\":[";
@@ -379,7 +370,7 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
         for (std::size_t i = 0; i < m->linkages[k].parts.size(); ++i) {
             text << ' ' << m->parts[m->linkages[k].parts[i]].name;
             js << (i ? "," : "");
-            json_string(js, m->parts[m->linkages[k].parts[i]].name);
+            write_json_string(js, m->parts[m->linkages[k].parts[i]].name);
         }
         text << '\n';
         js << ']';

@@ -5,7 +5,7 @@
 //             Figures 6.1/7.2/7.8, and `Keyword : items`, Figures 7.12/7.16) produce this same AST;
 //             so do the figures' own spellings (bare constraint lists after Surfaces, brace-
 //             delimited situations, a closing CONTACT list), which are resolved by the checker.
-//             Also SourceText (a file's text with line lookup) and PositionTable, which maps each
+//             Also SourceText (a file's text with line lookup) and PositionTable (qm/position_table.hpp), which maps each
 //             node's position tag to its byte offset so that the checker can point at the source.
 // Ownership:  plain values. Every node derives from x3::position_tagged; id_first indexes the
 //             PositionTable filled by the same parse.
@@ -13,6 +13,7 @@
 #pragma once
 #include "qm/diagnostics.hpp"
 #include "qm/source_text.hpp"
+#include "qm/position_table.hpp"
 #include <boost/optional.hpp>
 #include <boost/spirit/home/x3/support/ast/position_tagged.hpp>
 #include <boost/spirit/home/x3/support/ast/variant.hpp>
@@ -95,21 +96,6 @@ struct QueryFact : x3::position_tagged {
 }  // namespace ast
 
 // Maps a node's position tag (id_first) to the byte offset where the node starts.
-class PositionTable {
-public:
-    int add(std::size_t offset) {
-        offsets_.push_back(offset);
-        return static_cast<int>(offsets_.size() - 1);
-    }
-    // Offset of a node; 0 for an untagged node (id_first < 0).
-    [[nodiscard]] std::size_t offset_of(const ast::x3::position_tagged& node) const {
-        return node.id_first >= 0 && static_cast<std::size_t>(node.id_first) < offsets_.size()
-                   ? offsets_[static_cast<std::size_t>(node.id_first)]
-                   : 0;
-    }
-
-private:
-    std::vector<std::size_t> offsets_;
-};
+using PositionTable = qm::x3_parse::PositionTable;
 
 }  // namespace qm::scene

@@ -12,29 +12,16 @@
 namespace qm::scene {
 namespace {
 
-// Runs one top-level rule over the whole text. False (after reporting) on any syntax error.
+// Runs one top-level rule over the whole text (qm/x3_sexpr.hpp). False (after reporting) on any
+// syntax error, or on a text of only blanks and comments.
 template <class Rule, class Attr>
 bool run(const Rule& rule, const std::string& what, const SourceText& src, PositionTable& positions, Diagnostics& diags,
          Attr& out) {
-    const std::string& t = src.text();
-    if (parser::skip_blanks(t, 0) == t.size()) {
+    if (qm::sexpr::skip_blanks(src.text(), 0) == src.text().size()) {
         diags.error(src.locate(0), "empty input: expected " + what);
         return false;
     }
-    if (!qm::sexpr::check_parentheses(src, diags)) return false;
-    parser::ParseState st{t.begin(), &positions, &diags, &src, false};
-    auto first = t.begin();
-    bool ok = false;
-    try {
-        ok = boost::spirit::x3::phrase_parse(first, t.end(), boost::spirit::x3::with<parser::state_tag>(st)[rule],
-                                             parser::skipper, out);
-    } catch (const boost::spirit::x3::expectation_failure<parser::Iterator>& x) {
-        // Only reachable if a failure escapes the top rule's handler; report it the same way.
-        if (!st.failed) parser::report_expected(st, x.where(), x.which());
-        st.failed = true;
-    }
-    if (!ok && !st.failed) parser::report_expected(st, first, what);
-    return ok && !st.failed;
+    return x3_parse::parse_sexpr(rule, what, src, positions, diags, parser::punctuation, out);
 }
 
 std::string slurp(std::ifstream& in) {

@@ -14,6 +14,7 @@
 #include "scene/scene_ast.hpp"
 #include "qm/sexpr_text.hpp"
 #include "qm/x3_ascii.hpp"
+#include "qm/x3_sexpr.hpp"
 #include "qm/diagnostics.hpp"
 #include <boost/fusion/include/adapt_struct.hpp>
 #include <boost/spirit/home/x3.hpp>
@@ -35,7 +36,6 @@ BOOST_FUSION_ADAPT_STRUCT(qm::scene::ast::QueryFact, predicate, first, second, d
 
 namespace qm::scene::parser {
 namespace x3 = boost::spirit::x3;
-using Iterator = std::string::const_iterator;
 
 // A scene with a `Name dims` header (Figures 7.2, 7.8, 7.12, 7.16) names the scene before its
 // dimension count (`Gears 2`); its body is in the keyword notation or, in Figures 7.2 and 7.8,
@@ -56,59 +56,23 @@ BOOST_FUSION_ADAPT_STRUCT(qm::scene::parser::HeaderScenario, name, dimensions, b
 
 namespace qm::scene::parser {
 
-struct ParseState {
-    Iterator begin;
-    PositionTable* positions = nullptr;
-    Diagnostics* diags = nullptr;
-    const SourceText* src = nullptr;
-    bool failed = false;
-};
-struct state_tag;
-
-using sexpr::skip_blanks;
-inline std::string token_at(const std::string& t, std::size_t i) { return sexpr::token_at(t, i, "(),:"); }
-
-
-
-inline void report_expected(ParseState& st, Iterator where, const std::string& what) {
-    const std::string& t = st.src->text();
-    const std::size_t at = skip_blanks(t, static_cast<std::size_t>(where - st.begin));
-    st.diags->error(st.src->locate(at), "expected " + what + " but found " + token_at(t, at), st.src->line_at(at));
-}
-
-// on_success: records where each position_tagged node starts (after leading blanks).
-struct annotate {
-    template <class It, class Attr, class Ctx>
-    void on_success(const It& first, const It& last, Attr& node, const Ctx& ctx) const {
-        if constexpr (std::is_base_of_v<x3::position_tagged, Attr>) {
-            ParseState& st = x3::get<state_tag>(ctx);
-            It f = first;
-            x3::skip_over(f, last, ctx);
-            node.id_first = st.positions->add(static_cast<std::size_t>(f - st.begin));
-        }
-    }
-};
-
-// on_error: the first expectation failure becomes the diagnostic; the parse then fails.
-struct report_errors {
-    template <class It, class Exception, class Ctx>
-    x3::error_handler_result on_error(It&, const It&, const Exception& x, const Ctx& ctx) const {
-        ParseState& st = x3::get<state_tag>(ctx);
-        if (!st.failed) report_expected(st, x.where(), x.which());
-        st.failed = true;
-        return x3::error_handler_result::fail;
-    }
-};
+// The X3 plumbing shared with the other readers (qm/x3_parse.hpp, qm/x3_sexpr.hpp): `annotate`
+// records where a node starts; an entry rule's first expectation failure becomes the located
+// diagnostic `expected ... but found TOKEN` and the parse fails, so no exception escapes.
+using x3_parse::annotate;
+using x3_parse::state_tag;
+using report_errors = x3_parse::first_failure;
+// The characters that are tokens of their own in "but found ..." (qm/sexpr_text.hpp token_at).
+inline constexpr std::string_view punctuation = "(),:";
 
 // --- lexical pieces --------------------------------------------------------------------------
 // ASCII classes and case-insensitive keywords (qm/x3_ascii.hpp: x3's own classes abort on bytes
-// >= 0x80 in a debug build). The skipper also skips `;` comments.
+// >= 0x80 in a debug build). The skipper (qm/x3_sexpr.hpp) also skips `;` comments.
 using x3_ascii::blank;
 using x3_ascii::digit;
 using x3_ascii::kw;
 using x3_ascii::letter;
 using x3_ascii::name_char;
-inline const auto skipper = blank | x3::lexeme[';' >> *(x3::char_ - x3::eol) >> (x3::eol | x3::eoi)];
 
 // Note: `a >> b > c` is written `(a >> b) > c` (the C++ precedence) so that clang does not warn.
 
