@@ -6,6 +6,7 @@
 #include "scene/direction_text.hpp"
 #include "analysis/kinematic_chains.hpp"
 #include "scene/vocabulary.hpp"
+#include "scene/what_if.hpp"
 #include "qm/assert.hpp"
 #include <algorithm>
 #include <filesystem>
@@ -261,7 +262,7 @@ std::optional<SituationResult> Analysis::what_if(std::size_t situation, std::spa
                                                  Diagnostics& diagnostics) {
     QM_REQUIRE(situation >= 1 && situation <= state_->results.size(), "situation index out of range");
     for (const QueryFact& q : without)
-        if (q.kind != QueryFact::Kind::contact && q.kind != QueryFact::Kind::force) {
+        if (!scene::can_take_away(q)) {
             diagnostics.error({"whatif", 1, 1}, "expected 'Contact a b' or 'Force obj' to take away");
             return std::nullopt;
         }
@@ -297,7 +298,7 @@ std::optional<SituationResult> Analysis::with_given(std::size_t situation, std::
     std::vector<Motion> before = state_->scene.situations[situation - 1].motions;
     before.insert(before.end(), state_->options.given.begin(), state_->options.given.end());
     for (const Motion& m : before)
-        if (std::any_of(given.begin(), given.end(), [&](const Motion& g) { return g.object == m.object; }))
+        if (scene::replaced_by(m, given))
             r.notes.push_back("the given motion of " + state_->scene.objects[m.object].name + " replaces Motion (" +
                               state_->scene.objects[m.object].name + " " + thesis_text(m.translation) + " " +
                               thesis_text(m.rotation) + ")");
@@ -307,34 +308,9 @@ std::optional<SituationResult> Analysis::with_given(std::size_t situation, std::
 std::unique_ptr<Analysis::State> Analysis::State::restricted(std::size_t s, std::span<const QueryFact> without,
                                                              std::span<const Motion> given, Diagnostics& diagnostics,
                                                              std::optional<Granularity> granularity) const {
-    Scene changed = scene;
-    Situation only = changed.situations[s - 1];
-    // A given motion replaces any other of the same object (one motion at a time, Law 1).
-    auto replaced = [&](const Motion& m) {
-        return std::any_of(given.begin(), given.end(), [&](const Motion& g) { return g.object == m.object; });
-    };
-    std::erase_if(only.motions, replaced);
-    only.motions.insert(only.motions.end(), given.begin(), given.end());
-    auto taken = [&](auto pred) { return std::any_of(without.begin(), without.end(), pred); };
-    std::erase_if(only.contacts, [&](const Contact& c) {
-        return taken([&](const QueryFact& q) {
-            return q.kind == QueryFact::Kind::contact &&
-                   ((c.first == *q.first && c.second == *q.second) || (c.first == *q.second && c.second == *q.first));
-        });
-    });
-    std::erase_if(only.forces, [&](const Force& f) {
-        return taken([&](const QueryFact& q) {
-            return q.kind == QueryFact::Kind::force && f.object == *q.object && (!q.cause || f.cause == *q.cause);
-        });
-    });
-    std::erase_if(changed.forces, [&](const Force& f) {
-        return taken([&](const QueryFact& q) {
-            return q.kind == QueryFact::Kind::force && f.object == *q.object && (!q.cause || f.cause == *q.cause);
-        });
-    });
-    changed.situations = {only};
+    const Scene changed = scene::what_if_scene(scene, s, without, given);
     AnalysisOptions o = options;
-    std::erase_if(o.given, replaced);
+    std::erase_if(o.given, [&](const Motion& m) { return scene::replaced_by(m, given); });
     o.without.clear();
     o.granularity = granularity;
     return build_state(changed, o, program, diagnostics);

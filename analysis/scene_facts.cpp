@@ -2,6 +2,7 @@
 #include "analysis/scene_facts.hpp"
 #include "scene/direction_text.hpp"
 #include "scene/vocabulary.hpp"
+#include "scene/what_if.hpp"
 #include "qm/assert.hpp"
 #include <algorithm>
 
@@ -160,10 +161,9 @@ std::size_t SceneFacts::add_motion(const Motion& m, std::span<const std::size_t>
 bool SceneFacts::matches(const SceneItem& item, const QueryFact& q) const {
     switch (q.kind) {
         case QueryFact::Kind::contact:
-            return item.kind == SceneItem::Kind::contact &&
-                   ((item.first == *q.first && item.second == *q.second) || (item.first == *q.second && item.second == *q.first));
+            return item.kind == SceneItem::Kind::contact && scene::names_contact(q, item.first, item.second);
         case QueryFact::Kind::force:
-            return item.kind == SceneItem::Kind::force && item.object == q.object && (!q.cause || item.cause == q.cause);
+            return item.kind == SceneItem::Kind::force && scene::names_force(q, *item.object, *item.cause);
         default:
             return false;
     }
