@@ -8,6 +8,7 @@
 // Invariants: places[k].id == PlaceId{k}; every adjacency names existing places.
 // Knows nothing of the ATMS or the engine: the CLI turns places into facts.
 #pragma once
+#include "geometry/fwd.hpp"
 #include "geometry/qualitative_sign.hpp"
 #include "qm/id.hpp"
 #include <Eigen/Core>
@@ -17,8 +18,7 @@
 
 namespace qm::geometry {
 
-using PlaceId = qm::Id<struct PlaceTag>;
-
+// PlaceId (geometry/fwd.hpp) names a place: its index in PlaceVocabulary::places.
 enum class PlaceKind { cseg, join, fsd, external_division, face };
 [[nodiscard]] const char* to_string(PlaceKind k) noexcept;
 
