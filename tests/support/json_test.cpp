@@ -58,6 +58,15 @@ TEST_CASE("support/json: the escapes, byte for byte") {
     CHECK(os.str() == "\"q\\\"\"");
 }
 
+TEST_CASE("support/json: inside an HTML script element, `</` cannot close it") {
+    CHECK(qm::json_string("<svg></svg>", qm::Json::in_script) == "\"<svg><\\/svg>\"");
+    CHECK(qm::json_string("a/b </", qm::Json::in_script) == "\"a/b <\\/\"");
+    CHECK(qm::json_string("/x", qm::Json::in_script) == "\"/x\"");
+    CHECK(qm::json_string("<svg></svg>") == "\"<svg></svg>\"");  // plain JSON leaves '/' alone
+    // The escape is a JSON one: the text decodes back unchanged.
+    CHECK(decode(qm::json_string("</script>\t</", qm::Json::in_script)) == std::optional<std::string>("</script>\t</"));
+}
+
 TEST_CASE("support/json: 2000 seeded random strings read back unchanged, with no raw control character") {
     std::mt19937 rng(20261201);
     // Bytes below 0x80 (bytes above are passed through, checked in the case above).
