@@ -66,14 +66,20 @@ struct Matcher::Run {
         return true;
     }
 
-    // Active facts that may unify with atom: the smallest argument index list among ground args.
-    std::span<const FactId> candidates(const CompiledAtom& atom) {
-        std::span<const FactId> best = m.facts_.active_with_predicate(atom.predicate);
-        for (std::uint32_t i = 0; i < atom.args.size(); ++i) {
+    // The facts that may unify with atom under the current binding (only the active ones, or all
+    // of them for the closed world): the shortest of the predicate's list and the lists of the
+    // atom's ground arguments (constants and bound variables). Each list is a subsequence of the
+    // predicate's, in the same order, so narrowing skips facts that cannot unify and never changes
+    // the order of those that do: a join costs what it matches, not what the predicate holds.
+    std::span<const FactId> candidates(const CompiledAtom& atom, bool active_only) {
+        std::span<const FactId> best = active_only ? m.facts_.active_with_predicate(atom.predicate)
+                                                   : m.facts_.with_predicate(atom.predicate);
+        for (std::uint32_t i = 0; i < atom.args.size() && !best.empty(); ++i) {
             const CompiledTerm& t = atom.args[i];
             if (t.kind == CompiledTerm::Kind::call || !is_ground(t, binding)) continue;
             ValueId v = t.kind == CompiledTerm::Kind::constant ? t.constant : *binding[t.slot];
-            auto s = m.facts_.active_with_argument(atom.predicate, i, v);
+            auto s = active_only ? m.facts_.active_with_argument(atom.predicate, i, v)
+                                 : m.facts_.with_argument(atom.predicate, i, v);
             if (s.size() < best.size()) best = s;
         }
         return best;
@@ -83,7 +89,7 @@ struct Matcher::Run {
     void match_atoms(std::span<const CompiledAtom> atoms, const std::function<void()>& next) {
         if (atoms.empty()) return next();
         const CompiledAtom& atom = atoms.front();
-        for (FactId f : candidates(atom)) {
+        for (FactId f : candidates(atom, true)) {
             if (!tick()) return;
             std::size_t mark = trail.size();
             if (unify(atom, f)) {
@@ -141,7 +147,7 @@ struct Matcher::Run {
     template <class Each>
     bool closed_world_scan(const CompiledAtom& atom, Each&& each) {
         bool decidable = true;
-        for (FactId f : m.facts_.with_predicate(atom.predicate)) {
+        for (FactId f : candidates(atom, false)) {
             if (!tick()) return decidable;
             std::size_t mark = trail.size();
             if (unify(atom, f)) {
