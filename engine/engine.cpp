@@ -21,6 +21,7 @@ Engine::Engine(CompiledProgram program, ValueTable values, const BuiltinRegistry
         std::sort(triggers.begin(), triggers.end());
         triggers.erase(std::unique(triggers.begin(), triggers.end()), triggers.end());
         rule_triggers_.push_back(std::move(triggers));
+        rule_plans_.push_back(plan_matching(program_.rules[RuleId{static_cast<std::uint32_t>(i)}]));
     }
     for (const auto& p : program_.premises) {
         FactId f = intern_fact(p.predicate, p.args);

@@ -162,6 +162,7 @@ private:
     IdVector<RuleId, std::size_t> rule_cursor_;          // activation_log_ prefix each rule has seen
     IdVector<RuleId, std::uint8_t> rule_matched_;               // a full match has been done
     IdVector<RuleId, std::vector<ValueId>> rule_triggers_;     // predicates it matches (sorted)
+    IdVector<RuleId, MatchPlan> rule_plans_;                    // plan_matching() of each rule
     std::vector<std::vector<atms::AssumptionId>> choice_sets_;
     std::vector<SourceLocation> choice_set_where_;       // the `exactly one` that declared each set
     std::set<std::vector<atms::AssumptionId>> choice_set_keys_;  // every set seen, sorted (also refused ones)

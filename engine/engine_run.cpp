@@ -114,7 +114,10 @@ bool Engine::drain(std::uint32_t s, std::optional<std::uint32_t> context, Diagno
                 ValueId p = facts_.fact(f).predicate;
                 for (std::uint32_t c = 0; c < rule.conditions.size(); ++c) {
                     const auto& cond = rule.conditions[c];
-                    if (cond.kind == CompiledCondition::Kind::match && cond.atom.predicate == p)
+                    // A repeat of an earlier identical condition matches where that one does: its
+                    // seed finds the same matches, already found through the earlier one's.
+                    if (cond.kind == CompiledCondition::Kind::match && cond.atom.predicate == p &&
+                        !rule_plans_[r].repeat_of[c])
                         match_rule(r, Seed{c, f}, context, diagnostics);
                 }
             }
@@ -139,7 +142,7 @@ void Engine::match_rule(RuleId r, std::optional<Seed> seed, std::optional<std::u
     bool urgent = std::any_of(rule.consequents.begin(), rule.consequents.end(),
                               [](const CompiledConsequent& c) { return c.kind == CompiledConsequent::Kind::falsity; });
     matcher.match(
-        rule, seed,
+        rule, rule_plans_[r], seed,
         [&](const Binding& b, std::span<const FactId> ants) {
             agenda_.push(RuleInstance{r, b, std::vector<FactId>(ants.begin(), ants.end()), rule_context}, urgent);
         },
