@@ -22,7 +22,7 @@ std::vector<Diagnostic> Analysis::inert_contacts(std::size_t situation) {
     auto touches = [&](SurfaceId a, SurfaceId b) {
         const engine::ValueId pa = e.values().symbol(st.scene.surfaces[a].name);
         const engine::ValueId pb = e.values().symbol(st.scene.surfaces[b].name);
-        for (engine::FactId f : e.facts_of(st.facts->predicate(v::touch))) {
+        for (engine::FactId f : e.facts().with_argument(st.facts->predicate(v::touch), 0, pa)) {
             const engine::Fact& fact = e.facts().fact(f);
             if (fact.args.size() >= 2 && fact.args[0] == pa && fact.args[1] == pb && e.atms().holds_in(e.node(f), env))
                 return true;
