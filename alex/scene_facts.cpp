@@ -172,8 +172,10 @@ bool SceneFacts::matches(const SceneItem& item, const QueryFact& q) const {
 std::vector<const SceneItem*> SceneFacts::items(std::size_t s) const {
     QM_REQUIRE(s >= 1 && s <= situation_items_.size(), "situation index out of range");
     std::vector<const SceneItem*> out;
+    std::vector<bool> added(items_.size(), false);  // a search of `out` per item would be quadratic
     auto add = [&](std::size_t i) {
-        if (std::find(out.begin(), out.end(), &items_[i]) == out.end()) out.push_back(&items_[i]);
+        if (!added[i]) out.push_back(&items_[i]);
+        added[i] = true;
     };
     for (std::size_t i : scene_forces_) add(i);
     for (std::size_t i : given_) add(i);
