@@ -108,7 +108,10 @@ MatchPlan plan_matching(const CompiledRule& rule) {
         auto key = repeat_key(rule.conditions[i]);
         if (!key) continue;
         auto [it, fresh] = first.emplace(std::move(*key), i);
-        if (!fresh) plan.repeat_of[i] = it->second;
+        if (!fresh) {
+            plan.repeat_of[i] = it->second;
+            plan.has_repeat = true;
+        }
     }
     return plan;
 }

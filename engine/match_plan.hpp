@@ -21,6 +21,7 @@ namespace qm::engine {
 struct MatchPlan {
     std::vector<std::uint8_t> seed_first_safe;               // per condition; 1 = safe (only for `match`)
     std::vector<std::optional<std::uint32_t>> repeat_of;     // per condition
+    bool has_repeat = false;                                 // some repeat_of[i] is set
 };
 
 [[nodiscard]] MatchPlan plan_matching(const CompiledRule& rule);

@@ -20,6 +20,7 @@ struct Matcher::Run {
     std::vector<FactId> antecedents;
     std::vector<ValueId> scratch;  // arguments of a `for all` atom being looked up
     std::vector<FactId> matched_at;  // per condition: the fact its `match` matched on the current path
+                                     // (kept only when the plan has repeats, which read it)
 
     void bind(Slot s, ValueId v) {
         binding[s] = v;
@@ -183,7 +184,7 @@ struct Matcher::Run {
     void step_match(std::size_t i, const CompiledCondition& c) {
         auto matched = [&](FactId f) {
             antecedents.push_back(f);
-            matched_at[i] = f;
+            if (!matched_at.empty()) matched_at[i] = f;
             step(i + 1);
             antecedents.pop_back();
         };
@@ -197,7 +198,7 @@ struct Matcher::Run {
         // matched, which is the only fact this one can match: take it without looking it up.
         if (const auto& first = plan->repeat_of[i]) return matched(matched_at[*first]);
         match_atoms(std::span<const CompiledAtom>(&c.atom, 1), [&] {
-            matched_at[i] = antecedents.back();
+            if (!matched_at.empty()) matched_at[i] = antecedents.back();
             step(i + 1);
         });
     }
@@ -329,7 +330,7 @@ void Matcher::match(const CompiledRule& rule, const MatchPlan& plan, std::option
     }
     QM_REQUIRE(!initial || initial->size() == rule.slot_count(), "an initial binding has one entry per slot");
     Run run{*this, rule, &plan, seed, on_match, on_error, initial ? *initial : Binding(rule.slot_count()), {}, {}, {}, {}};
-    run.matched_at.resize(rule.conditions.size());
+    if (plan.has_repeat) run.matched_at.resize(rule.conditions.size());
     // Semi-naive matching: bind the seed fact's variables first, so that the conditions written
     // before it are looked up through the argument index instead of scanned. This gives the same
     // matches in the same order unless an earlier `not`, aggregate or quantifier would see one of
