@@ -10,6 +10,7 @@
 #include "engine/rule_spec_reader.hpp"
 #include "engine/run_report.hpp"
 #include <doctest/doctest.h>
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -63,7 +64,8 @@ struct GroundFact {
 // The size of a random program. The default is small (predicates p, q, r of arity 1 and e of arity
 // 2 over the domain {0, 1, 2}); a wide one has many facts per predicate, a ternary predicate t,
 // three variables (so repeated arguments such as (t ?v0 ?v2 ?v0) and variables in every position)
-// and body atoms repeated verbatim, to exercise the argument indexes and the matcher's plan.
+// and body atoms repeated (verbatim or with one argument changed), to exercise the argument
+// indexes and the matcher's plan.
 struct Shape {
     int domain = 3;            // constants 0 .. domain - 1
     int premises = 2;
@@ -71,7 +73,7 @@ struct Shape {
     int slots = 2;             // variables ?v0 .. ?v(slots - 1)
     int max_body = 2;          // atoms per rule body
     bool ternary = false;      // the predicate t of arity 3
-    int repeat_percent = 0;    // chance that a body atom repeats an earlier one of its rule
+    int repeat_percent = 0;    // chance that a body atom repeats an earlier one of its rule (or nearly)
 };
 
 Shape wide_shape() {
@@ -82,7 +84,7 @@ Shape wide_shape() {
     s.slots = 3;
     s.max_body = 3;
     s.ternary = true;
-    s.repeat_percent = 25;
+    s.repeat_percent = 40;
     return s;
 }
 
@@ -126,7 +128,15 @@ struct RandomProgram {
             std::set<int> bound;
             for (int k = 0; k < n_body; ++k) {
                 if (shape.repeat_percent > 0 && k > 0 && pick(0, 99) < shape.repeat_percent) {
-                    r.body.push_back(r.body[pick(0, k - 1)]);
+                    // A repeat of an earlier atom: verbatim, or (one time in two) with one argument
+                    // replaced by a constant or a variable, which must not be taken for a repeat.
+                    Body b = r.body[pick(0, k - 1)];
+                    if (pick(0, 1) == 0) {
+                        int s = pick(0, 1) == 0 ? -1 - pick(0, shape.domain - 1) : pick(0, shape.slots - 1);
+                        if (s >= 0) bound.insert(s);
+                        b.slots[static_cast<std::size_t>(pick(0, static_cast<int>(b.slots.size()) - 1))] = s;
+                    }
+                    r.body.push_back(b);
                     continue;
                 }
                 Body b{preds[pick(0, n_preds - 1)], {}};
@@ -191,27 +201,46 @@ struct RandomProgram {
         }
     }
 
+    // A ground fact as a dense number (predicate, then arguments in base domain), so that the
+    // oracle's membership tests are array look-ups (it runs for every environment of every seed).
+    [[nodiscard]] std::size_t code(const std::string& predicate, const std::vector<int>& args) const {
+        static const std::string names[] = {"p", "q", "r", "e", "t"};
+        std::size_t k = static_cast<std::size_t>(std::find(std::begin(names), std::end(names), predicate) - std::begin(names));
+        for (int a : args) k = k * static_cast<std::size_t>(shape.domain) + static_cast<std::size_t>(a);
+        return k * 4 + args.size();  // the arity keeps codes of different arities apart
+    }
+
     // Naive fixpoint from premises + the assumptions in mask; returns (facts, inconsistent).
     std::pair<std::set<GroundFact>, bool> closure(unsigned mask) const {
         std::set<GroundFact> facts(premises.begin(), premises.end());
         for (std::size_t i = 0; i < assumptions.size(); ++i)
             if (mask & (1u << i)) facts.insert(assumptions[i]);
+        // Codes are below 4 * 5 * domain^3 (five predicates of arity at most 3).
+        std::vector<char> holds(20 * static_cast<std::size_t>(shape.domain * shape.domain * shape.domain), 0);
+        for (const auto& f : facts) holds[code(f.predicate, f.args)] = 1;
         bool inconsistent = false;
+        std::vector<int> args;
         for (bool changed = true; changed;) {
             changed = false;
             for (const auto& r : rules)
                 for_each_assignment([&](const std::vector<int>& vs) {
-                    auto val = [&](int s) { return s >= 0 ? vs[static_cast<std::size_t>(s)] : -1 - s; };
                     auto ground_of = [&](const Body& b) {
-                        GroundFact g{b.predicate, {}};
-                        for (int s : b.slots) g.args.push_back(val(s));
-                        return g;
+                        args.clear();
+                        for (int s : b.slots) args.push_back(s >= 0 ? vs[static_cast<std::size_t>(s)] : -1 - s);
+                        return code(b.predicate, args);
                     };
-                    bool ok = !r.less_test || vs[0] < vs[1];
-                    for (const auto& b : r.body) ok = ok && facts.count(ground_of(b));
-                    if (!ok) return;
-                    if (!r.head) inconsistent = true;
-                    else if (facts.insert(ground_of(*r.head)).second) changed = true;
+                    if (r.less_test && !(vs[0] < vs[1])) return;
+                    for (const auto& b : r.body)
+                        if (!holds[ground_of(b)]) return;
+                    if (!r.head) {
+                        inconsistent = true;
+                        return;
+                    }
+                    const std::size_t k = ground_of(*r.head);
+                    if (holds[k]) return;
+                    holds[k] = 1;
+                    facts.insert(GroundFact{r.head->predicate, args});
+                    changed = true;
                 });
         }
         return {facts, inconsistent};
