@@ -6,7 +6,7 @@
 # share of the N^2 term in I at the largest N (issue 15 item 2: below 5% at N = 400), for the whole
 # run and for the instructions spent in each module (engine, ATMS, Alex driver). It also
 # prints each run's wall time and peak memory, measured without valgrind (one run each: for
-# figures to quote, take medians of several runs, e.g. with bench/alex/alex_bench).
+# figures to quote, take medians of several runs, e.g. with bench/alex/interleave.py or alex_bench).
 # Prints numbers; passes or fails nothing (STYLE.md section 8).
 #
 # Usage: bench/engine/linear_fit.sh [BUILD_DIR] [N...]
@@ -14,7 +14,9 @@
 #   N...       the sizes (default: 25 50 100 200 400)
 # Environment: QM_ATMS=path overrides the qm-atms measured (e.g. an older build to compare with);
 #              KINDS="stack train" chooses the scenes.
-# Needs valgrind (with callgrind_annotate), awk and GNU time (/usr/bin/time). Takes about 10 minutes at the default sizes.
+# Needs valgrind (with callgrind_annotate), awk and GNU time (/usr/bin/time). Takes about 10
+# minutes per build at the default sizes. Results: docs/PERFORMANCE.md, "Rule engine: linear in
+# the scene".
 set -euo pipefail
 build=${1:-build}
 shift || true
@@ -30,9 +32,10 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 # Self instructions by module from callgrind_annotate: a function belongs to the first qm module
-# its name mentions (std::function handlers and hash tables of a module's types included);
-# __popcountdi2 is the ATMS' (environment sizes), malloc/free/new/delete are "alloc", the rest
-# (libc, the loader, libstdc++) "other".
+# its name mentions (std::function handlers and hash tables of a module's types included; "alex"
+# is the scene reader and the driver); __popcountdi2 is the ATMS' (environment sizes),
+# malloc/free/new/delete are "alloc", the rest (libc, whose memcpy/memset the ATMS' bitset pool
+# calls, the loader, libstdc++) "other".
 by_module() {
     callgrind_annotate --threshold=100 "$1" 2> /dev/null | awk '
         /file:function/ { on = 1; next }
