@@ -73,10 +73,12 @@ bool Analysis::State::holds(std::string_view predicate, std::span<const ValueId>
 
 Nearness Analysis::State::nearness(ObjectId o, atms::EnvId env) {
     Nearness out;
+    // The object's own facts through the engine's argument index: a scan of every object's would
+    // make reading all objects quadratic in their number.
     auto read = [&](std::string_view pred, std::map<Direction, int>& ranks) {
-        for (engine::FactId f : engine->facts_of(facts->predicate(pred))) {
+        for (engine::FactId f : engine->facts().with_argument(facts->predicate(pred), 0, facts->symbol(o))) {
             const engine::Fact& fact = engine->facts().fact(f);
-            if (fact.args.size() != 3 || fact.args[0] != facts->symbol(o)) continue;
+            if (fact.args.size() != 3) continue;
             const engine::Value& d = engine->values().value(fact.args[1]);
             const engine::Value& k = engine->values().value(fact.args[2]);
             if (d.kind != engine::ValueKind::direction || k.kind != engine::ValueKind::integer) continue;
@@ -101,10 +103,8 @@ Nearness Analysis::State::nearness(ObjectId o, atms::EnvId env) {
 std::vector<atms::NodeId> Analysis::State::nearness_nodes(ObjectId o) {
     std::vector<atms::NodeId> out;
     for (std::string_view pred : {v::trans_nearness, v::rot_nearness})
-        for (engine::FactId f : engine->facts_of(facts->predicate(pred))) {
-            const engine::Fact& fact = engine->facts().fact(f);
-            if (!fact.args.empty() && fact.args[0] == facts->symbol(o)) out.push_back(engine->node(f));
-        }
+        for (engine::FactId f : engine->facts().with_argument(facts->predicate(pred), 0, facts->symbol(o)))
+            out.push_back(engine->node(f));
     return out;
 }
 

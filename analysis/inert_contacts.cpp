@@ -10,6 +10,8 @@
 #include "scene/vocabulary.hpp"
 #include "qm/assert.hpp"
 #include <algorithm>
+#include <cstdint>
+#include <unordered_map>
 
 namespace qm::analysis {
 namespace v = scene::vocabulary;
@@ -22,7 +24,7 @@ std::vector<Diagnostic> Analysis::inert_contacts(std::size_t situation) {
     auto touches = [&](SurfaceId a, SurfaceId b) {
         const engine::ValueId pa = e.values().symbol(st.scene.surfaces[a].name);
         const engine::ValueId pb = e.values().symbol(st.scene.surfaces[b].name);
-        for (engine::FactId f : e.facts_of(st.facts->predicate(v::touch))) {
+        for (engine::FactId f : e.facts().with_argument(st.facts->predicate(v::touch), 0, pa)) {
             const engine::Fact& fact = e.facts().fact(f);
             if (fact.args.size() >= 2 && fact.args[0] == pa && fact.args[1] == pb && e.atms().holds_in(e.node(f), env))
                 return true;
@@ -30,14 +32,18 @@ std::vector<Diagnostic> Analysis::inert_contacts(std::size_t situation) {
         return false;
     };
     std::vector<Diagnostic> out;
-    const std::vector<const SceneItem*> items = st.facts->items(situation);
+    // The situation's first contact item between each pair of surfaces (either way round), by hash:
+    // a search of the items for every contact would be quadratic in the situation's size.
+    auto pair_key = [](SurfaceId a, SurfaceId b) {
+        return (std::uint64_t{std::min(a, b).value} << 32) | std::max(a, b).value;
+    };
+    std::unordered_map<std::uint64_t, const SceneItem*> contact_item;
+    for (const SceneItem* x : st.facts->items(situation))
+        if (x->kind == SceneItem::Kind::contact) contact_item.emplace(pair_key(x->first, x->second), x);
     for (const Contact& c : st.scene.situations[situation - 1].contacts) {
-        auto it = std::find_if(items.begin(), items.end(), [&](const SceneItem* x) {
-            return x->kind == SceneItem::Kind::contact &&
-                   ((x->first == c.first && x->second == c.second) || (x->first == c.second && x->second == c.first));
-        });
-        if (it == items.end()) continue;
-        const SceneItem* item = *it;
+        auto it = contact_item.find(pair_key(c.first, c.second));
+        if (it == contact_item.end()) continue;
+        const SceneItem* item = it->second;
         if (item->assumption && !e.atms().env(env).contains(*item->assumption)) continue;  // taken away (--without)
         if (touches(item->first, item->second) || touches(item->second, item->first)) continue;
         const Surface& a = st.scene.surfaces[item->first];

@@ -13,7 +13,11 @@ using engine::ValueId;
 SceneFacts::SceneFacts(const Scene& scene, engine::Engine& engine, std::span<const Motion> given,
                        Granularity granularity)
     : scene_(scene), engine_(engine), granularity_(granularity) {
-    for (const Object& o : scene_.objects) object_symbols_.push_back(engine_.values().symbol(o.name));
+    for (const Object& o : scene_.objects) {
+        const ValueId symbol = engine_.values().symbol(o.name);
+        object_by_symbol_.emplace(symbol.value, ObjectId{static_cast<std::uint32_t>(object_symbols_.size())});
+        object_symbols_.push_back(symbol);
+    }
     assert_premises();
     std::vector<std::size_t> all;
     for (std::size_t s = 0; s < scene_.situations.size(); ++s) {
@@ -44,9 +48,10 @@ ValueId SceneFacts::predicate(std::string_view name) { return engine_.values().s
 ValueId SceneFacts::direction(const Direction& d) { return engine_.values().direction(sign_string(d)); }
 
 std::optional<ObjectId> SceneFacts::object_of(ValueId value) const {
-    for (std::uint32_t i = 0; i < object_symbols_.size(); ++i)
-        if (object_symbols_[i] == value) return ObjectId{i};
-    return std::nullopt;
+    // By a map, not a scan: the driver asks once per choice assumption, so a scan is quadratic.
+    auto it = object_by_symbol_.find(value.value);
+    if (it == object_by_symbol_.end()) return std::nullopt;
+    return it->second;
 }
 
 std::optional<engine::FactId> SceneFacts::find(std::string_view pred, std::span<const ValueId> args) {
@@ -172,8 +177,10 @@ bool SceneFacts::matches(const SceneItem& item, const QueryFact& q) const {
 std::vector<const SceneItem*> SceneFacts::items(std::size_t s) const {
     QM_REQUIRE(s >= 1 && s <= situation_items_.size(), "situation index out of range");
     std::vector<const SceneItem*> out;
+    std::vector<bool> added(items_.size(), false);  // a search of `out` per item would be quadratic
     auto add = [&](std::size_t i) {
-        if (std::find(out.begin(), out.end(), &items_[i]) == out.end()) out.push_back(&items_[i]);
+        if (!added[i]) out.push_back(&items_[i]);
+        added[i] = true;
     };
     for (std::size_t i : scene_forces_) add(i);
     for (std::size_t i : given_) add(i);

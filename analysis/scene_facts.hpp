@@ -74,6 +74,7 @@ private:
     std::vector<engine::FactId> situation_facts_;            // Granularity::situation: (situation N)
     std::vector<atms::AssumptionId> situation_assumptions_;
     std::vector<engine::ValueId> object_symbols_;            // by ObjectId
+    std::map<std::uint32_t, ObjectId> object_by_symbol_;     // the inverse (first object of a symbol)
     std::vector<SceneItem> items_;
     std::map<std::vector<engine::ValueId>, std::size_t> item_by_fact_;  // (pred args...) -> item
     std::map<std::uint32_t, std::size_t> item_by_assumption_;

@@ -42,6 +42,21 @@ std::optional<Scene> SceneChecker::run(const ast::Scenario& s) {
 void SceneChecker::adopt(const Scene& scene) {
     scene_ = scene;
     cx_.set_dimensions(scene.dimensions);
+    for (std::uint32_t i = 0; i < scene_.objects.size(); ++i) object_ids_.emplace(scene_.objects[ObjectId{i}].name, ObjectId{i});
+    for (std::uint32_t i = 0; i < scene_.surfaces.size(); ++i)
+        surface_ids_.emplace(scene_.surfaces[SurfaceId{i}].name, SurfaceId{i});
+}
+
+std::optional<ObjectId> SceneChecker::find_object(const std::string& name) const {
+    auto it = object_ids_.find(name);
+    if (it == object_ids_.end()) return std::nullopt;
+    return it->second;
+}
+
+std::optional<SurfaceId> SceneChecker::find_surface(const std::string& name) const {
+    auto it = surface_ids_.find(name);
+    if (it == surface_ids_.end()) return std::nullopt;
+    return it->second;
 }
 
 void SceneChecker::dimensions(const ast::Dimensions& d) {
@@ -131,7 +146,7 @@ void SceneChecker::individuals(const ast::Individuals& ind) {
     if (ind.names.empty()) cx_.error(ind, "Individuals names no object");
     for (const auto& n : ind.names) {
         const std::string name = lower(n.text);
-        if (auto prev = scene_.find_object(name)) {
+        if (auto prev = find_object(name)) {
             cx_.error(n, "duplicate object '" + name + "'",
                       {"'" + name + "' is first declared at " + line_column(scene_.objects[*prev].where)});
             continue;
@@ -139,13 +154,13 @@ void SceneChecker::individuals(const ast::Individuals& ind) {
         Object o;
         o.name = name;
         o.where = cx_.where(n);
-        scene_.objects.push_back(std::move(o));
+        object_ids_.emplace(name, scene_.objects.push_back(std::move(o)));
     }
 }
 
 std::optional<ObjectId> SceneChecker::object(const ast::Name& n, const char* section) {
     const std::string name = lower(n.text);
-    auto id = scene_.find_object(name);
+    auto id = find_object(name);
     if (!id) cx_.error(n, "object '" + name + "' in " + section + " is not declared in Individuals");
     return id;
 }

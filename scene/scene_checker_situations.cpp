@@ -13,7 +13,7 @@ namespace detail {
 
 std::optional<SurfaceId> SceneChecker::surface_ref(const ast::Name& n) {
     const std::string name = lower(n.text);
-    auto id = scene_.find_surface(name);
+    auto id = find_surface(name);
     if (!id) cx_.error(n, "unknown surface '" + name + "'");
     return id;
 }

@@ -52,12 +52,14 @@ void SceneChecker::index_corner_names() {
     for (const auto* c : corners_)
         for (const auto& g : c->entries)
             for (const auto& e : g.corners)
-                first_corner_.emplace(lower(e.name.text), std::pair(&e.name, scene_.find_object(lower(g.object.text))));
+                first_corner_.emplace(lower(e.name.text), std::pair(&e.name, find_object(lower(g.object.text))));
 }
 
 SurfaceId SceneChecker::add_surface(Surface s, const ast::Name& n) {
     const ObjectId owner = s.object;
+    const std::string name = s.name;
     const SurfaceId id = scene_.surfaces.push_back(std::move(s));
+    surface_ids_.emplace(name, id);
     scene_.objects[owner].surfaces.push_back(id);
     surface_names_.push_back(&n);
     return id;
@@ -69,7 +71,7 @@ void SceneChecker::surface(const ast::SurfaceEntry& e, std::optional<ObjectId> o
     auto origin = cx_.direction(e.origin, scene_.translation_arity(), "a direction to the centre of rotation");
     if (normal && std::all_of(normal->begin(), normal->end(), [](Sign x) { return x == Sign::zero; }))
         cx_.error(e.normal, "surface '" + name + "' has a zero normal; a surface normal points out of its object");
-    if (auto prev = scene_.find_surface(name))
+    if (auto prev = find_surface(name))
         return duplicate_surface(*surface_names_[prev->value], scene_.surfaces[*prev].object, e.name, owner);
     if (auto k = first_corner_.find(name); k != first_corner_.end() && cx_.offset(*k->second.first) < cx_.offset(e.name))
         return duplicate_surface(*k->second.first, k->second.second, e.name, owner);
@@ -96,7 +98,7 @@ void SceneChecker::corners(const ast::Corners& c) {
 std::optional<SurfaceId> SceneChecker::corner(const ast::CornerEntry& e, std::optional<ObjectId> owner) {
     const std::string name = lower(e.name.text);
     auto origin = cx_.direction(e.origin, scene_.translation_arity(), "a direction to the centre of rotation");
-    if (auto prev = scene_.find_surface(name)) {  // a face before it, or a corner declared before it
+    if (auto prev = find_surface(name)) {  // a face before it, or a corner declared before it
         duplicate_surface(*surface_names_[prev->value], scene_.surfaces[*prev].object, e.name, owner);
         return std::nullopt;
     }
@@ -110,7 +112,7 @@ void SceneChecker::corner_sides(const ast::CornerEntry& e, ObjectId owner, std::
     const std::string corner = lower(e.name.text);
     auto side = [&](const ast::Name& n) -> std::optional<SurfaceId> {
         const std::string name = lower(n.text);
-        auto s = scene_.find_surface(name);
+        auto s = find_surface(name);
         if (!s) {
             cx_.error(n, "unknown surface '" + name + "' named as a side of corner '" + corner + "'");
         } else if (scene_.surfaces[*s].is_corner()) {

@@ -18,6 +18,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -75,6 +76,10 @@ public:
 
 private:
     // scene_checker.cpp
+    // The object or surface named so (lower case) among those added so far, by hash: a scan of
+    // the scene's tables (Scene::find_*) for every name would make a check quadratic in its size.
+    [[nodiscard]] std::optional<ObjectId> find_object(const std::string& name) const;
+    [[nodiscard]] std::optional<SurfaceId> find_surface(const std::string& name) const;
     void dimensions(const ast::Dimensions& d);
     template <class T>
     void once(const T& section, const T*& slot, std::vector<const T*>& all, const char* keyword,
@@ -126,6 +131,8 @@ private:
     std::vector<const ast::Corners*> corners_;
     std::vector<const ast::Linkages*> linkages_;
     std::vector<const ast::Name*> surface_names_;  // the declaring name of each SurfaceId
+    std::unordered_map<std::string, ObjectId> object_ids_;    // scene_.objects by name
+    std::unordered_map<std::string, SurfaceId> surface_ids_;  // scene_.surfaces by name
     std::map<std::string, std::pair<const ast::Name*, std::optional<ObjectId>>> first_corner_;
     std::vector<const ast::Situation*> situations_;
     // Keyworded copies of the bare constraint lists (std::deque: the pointers above stay valid).
