@@ -7,8 +7,8 @@
 #include "geometry/part_svg.hpp"
 #include "geometry/place_json.hpp"
 #include "geometry/place_sample.hpp"
+#include "qm/json.hpp"
 
-#include <cstdio>
 #include <numbers>
 #include <sstream>
 #include <string_view>
@@ -19,22 +19,8 @@ namespace {
 
 namespace g = qm::geometry;
 
-// A JSON string that may sit inside an HTML <script> element: "</" is written "<\/".
-void json_string(std::ostream& os, std::string_view s) {
-    os << '"';
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        const char c = s[i];
-        if (c == '"' || c == '\\') os << '\\' << c;
-        else if (c == '\n') os << "\\n";
-        else if (c == '/' && i > 0 && s[i - 1] == '<') os << "\\/";
-        else if (static_cast<unsigned char>(c) < 0x20) {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(c));
-            os << buf;
-        } else os << c;
-    }
-    os << '"';
-}
+// The data sits inside an HTML <script> element: its strings are written with "</" as "<\/".
+void json_string(std::ostream& os, std::string_view s) { write_json_string(os, s, Json::in_script); }
 
 const char* unit_of(const g::Part& p) { return p.rotates() ? "degrees" : p.translates() ? "length" : "fixed"; }
 

@@ -4,8 +4,8 @@
 
 #include "pair_places.hpp"
 
-#include "alex/scene_parser.hpp"
-#include "alex/scene_printer.hpp"
+#include "scene/scene_parser.hpp"
+#include "scene/scene_printer.hpp"
 #include "geometry/contact_detection.hpp"
 #include "geometry/contact_place.hpp"
 #include "geometry/cspace_svg.hpp"
@@ -17,6 +17,7 @@
 #include "geometry/place_text.hpp"
 #include "geometry/place_vocabulary_builder.hpp"
 #include "qm/assert.hpp"
+#include "qm/json.hpp"
 
 #include <cstdlib>
 #include <filesystem>
@@ -28,7 +29,7 @@ namespace qm::cli {
 namespace {
 
 namespace g = qm::geometry;
-namespace a = qm::alex;
+namespace a = qm::scene;
 
 a::Sign sign_of(std::int8_t s) { return s > 0 ? a::Sign::plus : s < 0 ? a::Sign::minus : a::Sign::zero; }
 a::Direction direction_of(g::QualDirection d) { return {sign_of(d.s[0]), sign_of(d.s[1])}; }
@@ -239,16 +240,6 @@ std::string axis_text(const g::Mechanism& m, g::PartId p, const g::CSpaceAxis& a
     return os.str();
 }
 
-void json_string(std::ostream& os, const std::string& s) {
-    os << '"';
-    for (char c : s) {
-        if (c == '"' || c == '\\') os << '\\' << c;
-        else if (static_cast<unsigned char>(c) < 0x20) os << ' ';
-        else os << c;
-    }
-    os << '"';
-}
-
 int usage_error(std::ostream& err, const std::string& what) {
     err << "qm-atms: " << what << "\n" << metric_usage();
     return 2;
@@ -256,7 +247,7 @@ int usage_error(std::ostream& err, const std::string& what) {
 
 }  // namespace
 
-std::optional<qm::alex::Scene> metric_scene_at(const std::string& path, const std::string& config, Diagnostics& diags) {
+std::optional<qm::scene::Scene> metric_scene_at(const std::string& path, const std::string& config, Diagnostics& diags) {
     auto r = scene_at(path, config, diags);
     if (!r) return std::nullopt;
     return std::move(r->scene);
@@ -304,7 +295,7 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
     std::ostringstream text, js;
     text << "mechanism " << m->name << ": " << selection.modelled.size() << " kinematic pair" << (selection.modelled.size() == 1 ? "" : "s") << '\n';
     js << "{\"schema\":\"qm-metric-places/1\",\"mechanism\":";
-    json_string(js, m->name);
+    write_json_string(js, m->name);
     js << ",\"pairs\":[";
     for (std::size_t k = 0; k < selection.modelled.size(); ++k) {
         const auto& pair = selection.modelled[k];
@@ -326,9 +317,9 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
              << "; q1 = " << axis_text(*m, pair.b, request.cspace.axes[1]) << ")" << (from_cache ? " from cache" : "") << '\n';
         g::write_place_text(text, vocabulary);
         js << (k ? "," : "") << "{\"parts\":[";
-        json_string(js, m->parts[pair.a].name);
+        write_json_string(js, m->parts[pair.a].name);
         js << ',';
-        json_string(js, m->parts[pair.b].name);
+        write_json_string(js, m->parts[pair.b].name);
         js << "],\"from_cache\":" << (from_cache ? "true" : "false") << ",\"vocabulary\":";
         g::write_place_json(js, request.cspace, vocabulary);
         js << '}';
@@ -338,11 +329,11 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
         const auto& s = selection.skipped[k];
         text << "no configuration space for " << m->parts[s.a].name << ' ' << m->parts[s.b].name << ": " << s.reason << '\n';
         js << (k ? "," : "") << "{\"parts\":[";
-        json_string(js, m->parts[s.a].name);
+        write_json_string(js, m->parts[s.a].name);
         js << ',';
-        json_string(js, m->parts[s.b].name);
+        write_json_string(js, m->parts[s.b].name);
         js << "],\"reason\":";
-        json_string(js, s.reason);
+        write_json_string(js, s.reason);
         js << '}';
     }
     js << "],\"linkages\":[";
@@ -352,7 +343,7 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
         for (std::size_t i = 0; i < m->linkages[k].parts.size(); ++i) {
             text << ' ' << m->parts[m->linkages[k].parts[i]].name;
             js << (i ? "," : "");
-            json_string(js, m->parts[m->linkages[k].parts[i]].name);
+            write_json_string(js, m->parts[m->linkages[k].parts[i]].name);
         }
         text << '\n';
         js << ']';

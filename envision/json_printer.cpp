@@ -1,12 +1,12 @@
 // envision/json_printer.cpp: schema qm-envisionment/1.
 #include "envision/json_printer.hpp"
-#include "engine/json_writer.hpp"
+#include "qm/json.hpp"
 
 namespace qm::envision {
 
 namespace {
 
-using engine::json_string;
+using qm::json_string;
 
 std::string parts_json(const geometry::Mechanism& m, const bridge::PairPlaces& p) {
     return "[" + json_string(m.parts[p.spec.a].name) + "," + json_string(m.parts[p.spec.b].name) + "]";

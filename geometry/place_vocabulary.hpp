@@ -9,6 +9,7 @@
 // Invariants: places[k].id == PlaceId{k}; every adjacency names existing places.
 // Knows nothing of the ATMS or the engine: the CLI turns places into facts.
 #pragma once
+#include "geometry/fwd.hpp"
 #include "geometry/qualitative_sign.hpp"
 #include "qm/id.hpp"
 #include <Eigen/Core>
@@ -18,7 +19,7 @@
 
 namespace qm::geometry {
 
-using PlaceId = qm::Id<struct PlaceTag>;
+// PlaceId (geometry/fwd.hpp) names a place: its index in PlaceVocabulary::places.
 
 // A stop is where an axis that ends (a translation's limits, a window's ends: CSpaceAxis::stops)
 // borders free space: the part against its frame, blocked beyond as at a CSEG (Law 2), but a

@@ -2,8 +2,8 @@
 // motion transfer (Table 3.2) lets the gear pair of Figure 7.12 turn every way (nine combinations
 // instead of six); a new law file added to a copy changes the answer without recompiling; and the
 // command line's --rules selects the folder.
-#include "alex/analysis.hpp"
-#include "alex/scene_parser.hpp"
+#include "analysis/analysis.hpp"
+#include "scene/scene_parser.hpp"
 #include <cstdlib>
 #include <doctest/doctest.h>
 #include <filesystem>
@@ -20,18 +20,18 @@ fs::path copy_rules(const std::string& name) {
     const fs::path dir = fs::path(QM_BINARY_DIR) / ("rules_copy_" + name);
     fs::remove_all(dir);
     fs::create_directories(dir);
-    for (const auto& e : fs::directory_iterator(fs::path(QM_SOURCE_DIR) / "rules"))
-        fs::copy_file(e.path(), dir / e.path().filename());
+    // Recursive: the envisioner's laws live in rules/clock/, and a copy must carry the whole theory.
+    fs::copy(fs::path(QM_SOURCE_DIR) / "rules", dir, fs::copy_options::recursive);
     return dir;
 }
 
 std::uint64_t gear_combinations(const fs::path& rules) {
     Diagnostics d;
-    auto scene = alex::read_scene_file(std::string(QM_SOURCE_DIR) + "/scenarios/alex/gears.def", d);
+    auto scene = scene::read_scene_file(std::string(QM_SOURCE_DIR) + "/scenarios/alex/gears.def", d);
     REQUIRE(scene.has_value());
-    alex::AnalysisOptions o;
+    analysis::AnalysisOptions o;
     o.rules_directory = rules;
-    auto a = alex::analyse(*scene, o, d);
+    auto a = analysis::analyse(*scene, o, d);
     if (!a) {
         std::ostringstream os;
         d.print(os);
