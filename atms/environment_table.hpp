@@ -2,7 +2,8 @@
 // Provides:   EnvironmentTable, which interns environments (the BPS env table): equal assumption
 //             sets always get the same EnvId, so comparing environments is comparing ids. Per env it
 //             caches the size, the nogood flag and the nodes whose labels have held it; it indexes
-//             environments by assumption and memoises unions.
+//             environments by assumption and memoises unions. The interning index is an
+//             open-addressing table of ids (the environment itself is stored once, in its entry).
 // Ownership:  owns every Environment it hands out; ids and references stay valid for its lifetime
 //             (references into the table may be invalidated by interning; ids never are).
 // Invariants: the nogood flag of an env is true iff some nogood of the NogoodDatabase passed to
@@ -15,6 +16,7 @@
 #include "atms/ids.hpp"
 #include "atms/nogood_database.hpp"
 #include <cstdint>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -49,9 +51,12 @@ public:
     [[nodiscard]] const std::vector<EnvId>& containing(AssumptionId a) const;
 
 private:
-    EnvId add(const Environment& e, bool nogood);  // Pre: e not interned yet
+    EnvId add(const Environment& e, std::size_t hash, bool nogood);  // Pre: e not interned yet
+    [[nodiscard]] std::optional<EnvId> find(const Environment& e, std::size_t hash) const noexcept;
+    void grow();  // doubles slots_, re-placing every id by its stored hash
     struct Entry {
         Environment env;
+        std::size_t hash = 0;
         std::uint32_t count = 0;
         bool nogood = false;
         std::vector<NodeId> nodes;
@@ -62,7 +67,7 @@ private:
     }
     [[nodiscard]] const Entry& entry(EnvId e) const { return envs_[checked(e)]; }
     IdVector<EnvId, Entry> envs_;
-    std::unordered_map<Environment, EnvId, EnvironmentHash> index_;
+    std::vector<std::uint32_t> slots_;  // power-of-two size, linear probing; EnvId + 1, 0 = free
     std::unordered_map<std::uint64_t, EnvId> joins_;  // key: (min id << 32) | max id
     std::vector<std::vector<EnvId>> by_assumption_;   // indexed by AssumptionId::value
     std::vector<EnvId> none_;

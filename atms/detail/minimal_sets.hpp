@@ -21,6 +21,8 @@ public:
     [[nodiscard]] std::span<const std::uint64_t> operator[](std::size_t i) const noexcept {
         return {words_.data() + i * width_, width_};
     }
+    // Row i for in-place updates. Pre: i < size().
+    [[nodiscard]] std::uint64_t* row(std::size_t i) noexcept { return words_.data() + i * width_; }
     // Appends a copy of `row` (zero padded) and returns the new row for in-place updates.
     // Pre: row.size() <= width(); row does not point into this pool.
     std::uint64_t* push(std::span<const std::uint64_t> row);
