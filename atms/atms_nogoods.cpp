@@ -41,13 +41,10 @@ void Atms::new_nogood(EnvId env) {
             const AssumptionId a{static_cast<std::uint32_t>((nogood.first_word() + w) * 64 + static_cast<std::size_t>(std::countr_zero(bits)))};
             if (envs_.containing(a).size() < envs_.containing(rarest).size()) rarest = a;
         }
-    const std::uint32_t n = envs_.count(env);
     // containing() may not grow during the scan (retire interns nothing), so indexing is safe.
     const auto& candidates = envs_.containing(rarest);
-    for (std::size_t i = 0; i < candidates.size(); ++i) {
-        const EnvId e = candidates[i];
-        if (envs_.count(e) >= n && nogood.subset_of(envs_[e])) retire(e);
-    }
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+        if (envs_.subset(env, candidates[i])) retire(candidates[i]);
 }
 
 JustId Atms::add_at_most_one(InformantId why, std::span<const AssumptionId> members) {

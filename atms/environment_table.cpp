@@ -45,6 +45,7 @@ EnvId EnvironmentTable::add(const Environment& e, std::size_t hash, bool nogood)
     Entry entry;
     entry.env = e;
     entry.hash = hash;
+    for (std::uint64_t w : e.words()) entry.sig |= w;
     entry.count = e.size();
     entry.nogood = nogood;
     const EnvId id = envs_.push_back(std::move(entry));
@@ -83,7 +84,7 @@ bool EnvironmentTable::subset(EnvId x, EnvId y) const {
     if (x == y) return true;
     const Entry& a = envs_[x];
     const Entry& b = envs_[y];
-    return a.count <= b.count && a.env.subset_of(b.env);
+    return a.count <= b.count && (a.sig & ~b.sig) == 0 && a.env.subset_of(b.env);
 }
 
 const std::vector<EnvId>& EnvironmentTable::containing(AssumptionId a) const {

@@ -42,8 +42,11 @@ public:
     [[nodiscard]] std::uint32_t count(EnvId e) const { return entry(e).count; }  // |e|
     [[nodiscard]] bool is_nogood(EnvId e) const { return entry(e).nogood; }
     void mark_nogood(EnvId e) { envs_[checked(e)].nogood = true; }
-    // x is a subset of y (fast size check first).
+    // x is a subset of y (size and signature checks first).
     [[nodiscard]] bool subset(EnvId x, EnvId y) const;
+    // The OR of e's words: bit i set iff e has an assumption congruent to i modulo 64. x is a
+    // subset of y only if signature(x) is a subset of signature(y).
+    [[nodiscard]] std::uint64_t signature(EnvId e) const { return entry(e).sig; }
     // Nodes whose label has held e (the BPS env-nodes field); may list nodes that dropped e since.
     [[nodiscard]] const std::vector<NodeId>& nodes(EnvId e) const { return entry(e).nodes; }
     void add_node(EnvId e, NodeId n) { envs_[checked(e)].nodes.push_back(n); }
@@ -57,6 +60,7 @@ private:
     struct Entry {
         Environment env;
         std::size_t hash = 0;
+        std::uint64_t sig = 0;
         std::uint32_t count = 0;
         bool nogood = false;
         std::vector<NodeId> nodes;

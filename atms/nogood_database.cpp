@@ -1,5 +1,5 @@
-// atms/nogood_database.cpp: minimal stated nogoods indexed by highest assumption (by_first_, the
-// first bucket a query looks in; pairs separately, answered by the partner bitsets), by every
+// atms/nogood_database.cpp: minimal stated nogoods filed under one of their assumptions (filed_,
+// the buckets a query looks in; pairs separately, answered by the partner bitsets), indexed by every
 // assumption (containing_, to retire supersets), and the at-most-one constraints.
 #include "atms/nogood_database.hpp"
 
@@ -14,12 +14,23 @@ constexpr std::uint32_t word_bits = 64;
 void ensure(std::vector<std::vector<std::uint32_t>>& index, AssumptionId a) {
     if (index.size() <= a.value) index.resize(a.value + 1);
 }
+
+// Bit i set iff the set has an assumption congruent to i modulo 64: the OR of its words. N is a
+// subset of e only if signature(N) is a subset of signature(e), a test of one word.
+std::uint64_t signature(std::span<const std::uint64_t> words) noexcept {
+    std::uint64_t sig = 0;
+    for (std::uint64_t w : words) sig |= w;
+    return sig;
+}
 }  // namespace
 
 bool NogoodDatabase::subsumes_words(std::span<const std::uint64_t> words, std::size_t first_word) const noexcept {
     if (empty_nogood_) return true;
-    // A stated nogood N is a subset of e only if N's highest assumption is in e: visit just those
-    // buckets; a pair {a, b} is found from either of its members through the partners of a.
+    // A stated nogood N of size 1 or >= 3 is filed under one of its assumptions: N is a subset of e
+    // only if that one is in e, so only the buckets of e's assumptions are visited, and in them the
+    // signature rejects most without touching N. A pair {a, b} is found from either member through
+    // the partners of a.
+    const std::uint64_t sig = signature(words);
     for (std::size_t w = 0; w < words.size(); ++w) {
         for (std::uint64_t bits = words[w]; bits != 0; bits &= bits - 1) {
             const std::size_t a = (first_word + w) * word_bits + static_cast<std::size_t>(std::countr_zero(bits));
@@ -27,15 +38,20 @@ bool NogoodDatabase::subsumes_words(std::span<const std::uint64_t> words, std::s
                 const Environment& p = partners_[a];
                 if (!p.empty() && window_intersects(p.words(), p.first_word(), words, first_word)) return true;
             }
-            if (a < by_first_.size()) {
-                for (std::uint32_t i : by_first_[a]) {
-                    const Entry& n = entries_[i];
-                    if (n.live && window_subset(n.env.words(), n.env.first_word(), words, first_word)) return true;
+            if (a < filed_.size()) {
+                for (const Filed& f : filed_[a]) {
+                    if ((f.sig & ~sig) != 0) continue;
+                    const Environment& n = entries_[f.entry].env;
+                    if (window_subset(n.words(), n.first_word(), words, first_word)) return true;
                 }
             }
+            // A constraint with two members in e is found from either (AtMostOneIndex::violated_by,
+            // folded into this one pass over e).
+            const AssumptionId id{static_cast<std::uint32_t>(a)};
+            if (!at_most_one_.of(id).empty() && at_most_one_.other_member(id, words, first_word)) return true;
         }
     }
-    return at_most_one_.violated_by(words, first_word);
+    return false;
 }
 
 bool NogoodDatabase::subsumes_with(std::span<const std::uint64_t> words, AssumptionId a) const noexcept {
@@ -96,6 +112,12 @@ void NogoodDatabase::retire(std::uint32_t entry) {
         const auto pair = n.env.assumptions();
         set_partner(pair[0], pair[1], false);
         set_partner(pair[1], pair[0], false);
+    } else {
+        std::vector<Filed>& bucket = filed_[n.filed_under.value];
+        auto it = std::find_if(bucket.begin(), bucket.end(), [&](const Filed& f) { return f.entry == entry; });
+        QM_ASSERT(it != bucket.end(), "a live nogood is filed");
+        *it = bucket.back();
+        bucket.pop_back();
     }
 }
 
@@ -105,7 +127,8 @@ void NogoodDatabase::add(EnvId id, const Environment& e) {
         // {} is nogood: every environment is inconsistent; it is the only minimal nogood.
         for (Entry& n : entries_) n.live = false;
         partners_.clear();
-        entries_.push_back(Entry{id, e, 0, true});
+        filed_.clear();
+        entries_.push_back(Entry{id, e, 0, 0, AssumptionId{}, true});
         live_ = 1;
         empty_nogood_ = true;
         return;
@@ -122,11 +145,14 @@ void NogoodDatabase::add(EnvId id, const Environment& e) {
         }
         if (containing_[a.value].size() < containing_[rarest.value].size()) rarest = a;
     }
+    const std::uint64_t sig = signature(e.words());
     if (rarest.value < containing_.size())
-        for (std::uint32_t i : containing_[rarest.value])
-            if (entries_[i].live && entries_[i].size > size && e.subset_of(entries_[i].env)) retire(i);
+        for (std::uint32_t i : containing_[rarest.value]) {
+            const Entry& n = entries_[i];
+            if (n.live && n.size > size && (sig & ~n.sig) == 0 && e.subset_of(n.env)) retire(i);
+        }
     const auto index = static_cast<std::uint32_t>(entries_.size());
-    entries_.push_back(Entry{id, e, size, true});
+    entries_.push_back(Entry{id, e, sig, size, as.front(), true});
     ++live_;
     for (AssumptionId a : as) {
         ensure(containing_, a);
@@ -138,8 +164,17 @@ void NogoodDatabase::add(EnvId id, const Environment& e) {
         set_partner(as[0], as[1], true);
         set_partner(as[1], as[0], true);
     } else {
-        ensure(by_first_, as.back());
-        by_first_[as.back().value].push_back(index);
+        // Filed under its assumption with the fewest nogoods filed so far, so that no bucket grows
+        // with every nogood of a busy assumption (the highest, say).
+        AssumptionId under = as.front();
+        for (AssumptionId a : as) {
+            const std::size_t here = a.value < filed_.size() ? filed_[a.value].size() : 0;
+            const std::size_t best = under.value < filed_.size() ? filed_[under.value].size() : 0;
+            if (here < best) under = a;
+        }
+        if (filed_.size() <= under.value) filed_.resize(under.value + 1);
+        filed_[under.value].push_back(Filed{sig, index});
+        entries_.back().filed_under = under;
         for (AssumptionId a : as) {
             ensure(not_pairs_, a);
             not_pairs_[a.value].push_back(index);
@@ -180,15 +215,14 @@ std::vector<EnvId> NogoodDatabase::within(const Environment& e) const {
         for (std::uint32_t i = 0; i < entries_.size(); ++i)
             if (entries_[i].live) found.push_back(i);
     }
-    auto visit = [&](const std::vector<std::vector<std::uint32_t>>& index, std::size_t a) {
-        if (a >= index.size()) return;
-        for (std::uint32_t i : index[a])
-            if (entries_[i].live && entries_[i].env.subset_of(e)) found.push_back(i);
-    };
     if (!empty_nogood_)
         for (AssumptionId a : e.assumptions()) {
-            visit(by_first_, a.value);
-            visit(pairs_by_first_, a.value);
+            if (a.value < filed_.size())
+                for (const Filed& f : filed_[a.value])
+                    if (entries_[f.entry].env.subset_of(e)) found.push_back(f.entry);
+            if (a.value < pairs_by_first_.size())
+                for (std::uint32_t i : pairs_by_first_[a.value])
+                    if (entries_[i].live && entries_[i].env.subset_of(e)) found.push_back(i);
         }
     std::sort(found.begin(), found.end());
     std::vector<EnvId> out;

@@ -4,10 +4,12 @@
 //             for the nogoods {a, b} of every two of its members without storing them. Indexes make
 //             the consistency questions cost what could match, not a scan:
 //               subsumes(e)          is e inconsistent (some nogood a subset of e, or two members of
-//                                    one constraint in e)?  Nogoods of size 1 and >= 3 are looked
-//                                    up by their highest assumption (only those whose highest
-//                                    assumption is in e), two-assumption nogoods {a, b}, the usual
-//                                    exclusions, by one bitset of the partners b of each a of e,
+//                                    one constraint in e)?  A nogood of size 1 or >= 3 is filed
+//                                    under one of its assumptions (the one with the fewest filed,
+//                                    when it is added), so only the buckets of e's assumptions are
+//                                    visited, and a one-word signature (members modulo 64) rejects
+//                                    most there; two-assumption nogoods {a, b}, the usual
+//                                    exclusions, by one bitset of the partners b of each a of e;
 //                                    constraints by their member window. subsumes_words(w, first)
 //                                    is the same question for a raw bitset window from word first.
 //               subsumes_with(w, a)  is some nogood or constraint containing a violated by w?  When
@@ -73,11 +75,17 @@ private:
     struct Entry {
         EnvId id;
         Environment env;
-        std::uint32_t size = 0;  // |env|
+        std::uint64_t sig = 0;     // the OR of env's words
+        std::uint32_t size = 0;    // |env|
+        AssumptionId filed_under;  // size != 2: its bucket in filed_
         bool live = true;
     };
+    struct Filed {
+        std::uint64_t sig;  // the entry's, kept here so a rejection touches no entry
+        std::uint32_t entry;
+    };
     std::vector<Entry> entries_;
-    std::vector<std::vector<std::uint32_t>> by_first_;    // highest assumption -> entries of size != 2 (the newest is the rarest in a query)
+    std::vector<std::vector<Filed>> filed_;                   // assumption -> live entries of size != 2 filed under it
     std::vector<std::vector<std::uint32_t>> pairs_by_first_;  // highest assumption -> entries of size 2
     std::vector<std::vector<std::uint32_t>> containing_;  // assumption -> entry indices
     std::vector<std::vector<std::uint32_t>> not_pairs_;   // assumption -> live-or-dead entries of size != 2

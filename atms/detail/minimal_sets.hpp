@@ -53,6 +53,8 @@ public:
 private:
     std::vector<std::uint32_t> order_;
     std::vector<std::uint32_t> counts_;
+    std::vector<std::uint64_t> sigs_;       // per row of in: the OR of its words
+    std::vector<std::uint64_t> kept_sigs_;  // per row of out
     std::vector<std::uint32_t> starts_;  // counting sort offsets by size
     std::vector<std::vector<std::uint32_t>> by_lowest_;  // lowest bit -> kept row indices in out
     std::vector<std::uint32_t> touched_;                  // the non-empty buckets of by_lowest_
