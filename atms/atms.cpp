@@ -243,15 +243,7 @@ const Environment& Atms::env(EnvId e) const {
 std::size_t Atms::for_each_interpretation(std::span<const std::vector<AssumptionId>> choice_sets, EnvId base,
                                           const std::function<bool(const Environment&)>& visit) const {
     require_env(base);
-    std::vector<std::int64_t> owner(assumption_nodes_.size(), -1);  // set index of each assumption
-    for (std::size_t s = 0; s < choice_sets.size(); ++s) {
-        for (AssumptionId a : choice_sets[s]) {
-            QM_REQUIRE(assumption_nodes_.contains(a), "unknown assumption id in a choice set");
-            QM_REQUIRE(owner[a.value] == -1 || owner[a.value] == static_cast<std::int64_t>(s),
-                       "an assumption occurs in two choice sets");
-            owner[a.value] = static_cast<std::int64_t>(s);
-        }
-    }
+    // The preconditions on the sets (known ids, disjoint) are checked there.
     return enumerate_interpretations(nogoods_, assumption_nodes_.size(), choice_sets, envs_[base], visit);
 }
 

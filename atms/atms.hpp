@@ -137,8 +137,9 @@ public:
     // Pre: ids valid; no assumption occurs in two sets.
     std::vector<EnvId> interpretations(std::span<const std::vector<AssumptionId>> choice_sets);
     std::vector<EnvId> interpretations(std::span<const std::vector<AssumptionId>> choice_sets, EnvId base);
-    // Streaming form: calls visit(env) for each interpretation without interning it; visit returns
-    // false to stop. Returns the number visited. Same preconditions.
+    // Streaming form: calls visit(env) for each interpretation without interning it (env is valid
+    // during the call only: copy it to keep it); visit returns false to stop. Returns the number
+    // visited. Same preconditions.
     std::size_t for_each_interpretation(std::span<const std::vector<AssumptionId>> choice_sets, EnvId base,
                                         const std::function<bool(const Environment&)>& visit) const;
 

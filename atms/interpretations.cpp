@@ -33,22 +33,23 @@ struct Plan {
     std::vector<std::uint64_t> excl_words;
 };
 
+// (assumption, local) for every candidate, sorted: a candidate of an assumption repeated within
+// its set appears once per occurrence, side by side.
+using LocalIndex = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
+
 // Fills the exclusion windows of plan (assumption, start, in_base, larger already set).
-void exclusions(const NogoodDatabase& nogoods, std::size_t assumption_count, Plan& plan) {
+void exclusions(const NogoodDatabase& nogoods, Plan& plan) {
     const auto locals = static_cast<std::uint32_t>(plan.assumption.size());
-    // assumption -> its first local, and local -> the next local of the same assumption (an
-    // assumption repeated within a set).
-    std::vector<std::uint32_t> first_local(assumption_count, none), next_same(locals, none);
-    for (std::uint32_t k = locals; k-- > 0;) {
-        std::uint32_t& f = first_local[plan.assumption[k].value];
-        next_same[k] = f;
-        f = k;
-    }
+    LocalIndex by_assumption;
+    by_assumption.reserve(locals);
+    for (std::uint32_t k = 0; k < locals; ++k) by_assumption.emplace_back(plan.assumption[k].value, k);
+    std::sort(by_assumption.begin(), by_assumption.end());
     // constraint -> its members' locals, increasing.
     const AtMostOneIndex& index = nogoods.at_most_one();
     std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> members;
-    for (std::uint32_t k = 0; k < locals; ++k)
-        for (std::uint32_t c : index.of(plan.assumption[k])) members[c].push_back(k);
+    if (!index.empty())
+        for (std::uint32_t k = 0; k < locals; ++k)
+            for (std::uint32_t c : index.of(plan.assumption[k])) members[c].push_back(k);
     plan.excl_first.assign(locals, 0);
     plan.excl_at.assign(locals + 1, 0);
     std::vector<std::uint32_t> hit;
@@ -58,10 +59,14 @@ void exclusions(const NogoodDatabase& nogoods, std::size_t assumption_count, Pla
         const std::uint32_t later = plan.start[set + 1];
         hit.clear();
         const Environment& partners = nogoods.partners(plan.assumption[k]);
-        for (AssumptionId b : partners.assumptions())
-            if (b.value < assumption_count)
-                for (std::uint32_t j = first_local[b.value]; j != none; j = next_same[j])
-                    if (j >= later) hit.push_back(j);
+        for (std::size_t w = 0; w < partners.words().size(); ++w)
+            for (std::uint64_t bits = partners.words()[w]; bits != 0; bits &= bits - 1) {
+                const auto b = static_cast<std::uint32_t>((partners.first_word() + w) * word_bits +
+                                                          static_cast<std::size_t>(std::countr_zero(bits)));
+                for (auto it = std::lower_bound(by_assumption.begin(), by_assumption.end(), std::pair(b, 0U));
+                     it != by_assumption.end() && it->first == b; ++it)
+                    if (it->second >= later) hit.push_back(it->second);
+            }
         for (std::uint32_t c : index.of(plan.assumption[k])) {
             const std::vector<std::uint32_t>& m = members[c];
             for (auto it = std::lower_bound(m.begin(), m.end(), later); it != m.end(); ++it) hit.push_back(*it);
@@ -78,6 +83,21 @@ void exclusions(const NogoodDatabase& nogoods, std::size_t assumption_count, Pla
     }
 }
 
+// Pre of enumerate_interpretations: known assumptions, none in two sets (checked first, whatever
+// the base, in O(K log K) for K members in all).
+void require_disjoint(std::span<const std::vector<AssumptionId>> choice_sets, std::size_t assumption_count) {
+    LocalIndex owner;  // (assumption, set)
+    for (std::uint32_t s = 0; s < choice_sets.size(); ++s)
+        for (AssumptionId a : choice_sets[s]) {
+            QM_REQUIRE(a.value < assumption_count, "unknown assumption in a choice set");
+            owner.emplace_back(a.value, s);
+        }
+    std::sort(owner.begin(), owner.end());
+    for (std::size_t i = 1; i < owner.size(); ++i)
+        QM_REQUIRE(owner[i].first != owner[i - 1].first || owner[i].second == owner[i - 1].second,
+                   "an assumption occurs in two choice sets");
+}
+
 struct Search {
     const NogoodDatabase& nogoods;
     const Plan& plan;
@@ -87,18 +107,21 @@ struct Search {
     std::vector<std::pair<std::uint32_t, std::uint64_t>> trail;  // (word, old value) to undo
     std::size_t base_first = 0, base_end = 0;  // the base's window of words
     std::vector<AssumptionId> picked;          // the picks so far that the base does not hold
+    std::vector<std::uint64_t> sigs;           // per depth: the OR of words' words (base + picks)
+    Environment current;                       // the interpretation handed to visit, reused
     std::size_t visited = 0;
 
     // The interpretation found, formed from the window its assumptions span (not from every word).
-    [[nodiscard]] Environment found() const {
+    const Environment& found() {
         std::size_t lo = base_first, hi = base_end;
         if (lo == hi) lo = SIZE_MAX, hi = 0;
         for (AssumptionId a : picked) {
             lo = std::min<std::size_t>(lo, a.value / word_bits);
             hi = std::max<std::size_t>(hi, a.value / word_bits + 1);
         }
-        if (lo >= hi) return Environment{};
-        return Environment::from_words(std::span<const std::uint64_t>(words).subspan(lo, hi - lo), lo);
+        if (lo >= hi) lo = hi = 0;
+        current.assign_words(std::span<const std::uint64_t>(words).subspan(lo, hi - lo), lo);
+        return current;
     }
 
     // Returns false once visit asked to stop.
@@ -124,11 +147,12 @@ struct Search {
         std::uint64_t& w = words[a.value / word_bits];
         const std::uint64_t bit = std::uint64_t{1} << (a.value % word_bits);
         const bool fresh = plan.in_base[k] == 0;  // a base member: already chosen, nothing new
+        sigs[depth + 1] = sigs[depth] | bit;
         if (fresh) {
             w |= bit;
             // The partial choice was consistent and pairs are excluded ahead: only a larger
             // nogood containing a can be violated now.
-            if (plan.larger[k] != 0 && nogoods.larger_with(words, a)) {
+            if (plan.larger[k] != 0 && nogoods.larger_with(words, a, sigs[depth + 1])) {
                 w &= ~bit;
                 return true;
             }
@@ -161,6 +185,7 @@ std::size_t enumerate_interpretations(const NogoodDatabase& nogoods, std::size_t
                                       std::span<const std::vector<AssumptionId>> choice_sets,
                                       const Environment& base,
                                       const std::function<bool(const Environment&)>& visit) {
+    require_disjoint(choice_sets, assumption_count);
     if (nogoods.subsumes(base)) return 0;
     // The partial choice is a plain bitset from word 0 over every assumption.
     std::vector<std::uint64_t> words(std::max(base.end_word(), (assumption_count + word_bits - 1) / word_bits), 0);
@@ -179,7 +204,6 @@ std::size_t enumerate_interpretations(const NogoodDatabase& nogoods, std::size_t
             plan.in_base.push_back(1);
         } else {
             for (AssumptionId a : set) {
-                QM_REQUIRE(a.value < assumption_count, "unknown assumption in a choice set");
                 if (!nogoods.excludes(base, a)) {
                     plan.assumption.push_back(a);
                     plan.in_base.push_back(0);
@@ -190,10 +214,12 @@ std::size_t enumerate_interpretations(const NogoodDatabase& nogoods, std::size_t
         plan.start.push_back(static_cast<std::uint32_t>(plan.assumption.size()));
     }
     for (AssumptionId a : plan.assumption) plan.larger.push_back(nogoods.has_larger(a) ? 1 : 0);
-    exclusions(nogoods, std::max<std::size_t>(assumption_count, base.end_word() * word_bits), plan);
-    Search search{nogoods, plan, visit, std::move(words), {}, {}, base.first_word(), base.end_word(), {}, 0};
+    exclusions(nogoods, plan);
+    Search search{nogoods, plan, visit, std::move(words), {}, {}, base.first_word(), base.end_word(), {}, {}, {}, 0};
     search.excluded.assign((plan.assumption.size() + word_bits - 1) / word_bits + 1, 0);
     search.picked.reserve(choice_sets.size());
+    search.sigs.assign(choice_sets.size() + 1, 0);
+    for (std::uint64_t w : base.words()) search.sigs[0] |= w;
     search.run(0);
     return search.visited;
 }

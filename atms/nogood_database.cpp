@@ -88,11 +88,11 @@ bool NogoodDatabase::excludes(const Environment& base, AssumptionId a) const noe
     return at_most_one_.other_member(a, base.words(), base.first_word());
 }
 
-bool NogoodDatabase::larger_with(std::span<const std::uint64_t> words, AssumptionId a) const noexcept {
+bool NogoodDatabase::larger_with(std::span<const std::uint64_t> words, AssumptionId a, std::uint64_t sig) const noexcept {
     if (a.value >= not_pairs_.size()) return false;
     for (std::uint32_t i : not_pairs_[a.value]) {
         const Entry& n = entries_[i];
-        if (n.live && window_subset(n.env.words(), n.env.first_word(), words, 0)) return true;
+        if (n.live && (n.sig & ~sig) == 0 && window_subset(n.env.words(), n.env.first_word(), words, 0)) return true;
     }
     return false;
 }

@@ -67,7 +67,10 @@ public:
         return a.value < not_pairs_.size() && !not_pairs_[a.value].empty();
     }
     // Some live stated nogood of size 1 or >= 3 containing a is a subset of the raw bitset words.
-    [[nodiscard]] bool larger_with(std::span<const std::uint64_t> words, AssumptionId a) const noexcept;
+    // sig, if given, is the OR of words' words (a superset of it will do): a nogood whose own
+    // signature is not inside it is passed over without a subset test.
+    [[nodiscard]] bool larger_with(std::span<const std::uint64_t> words, AssumptionId a,
+                                   std::uint64_t sig = ~std::uint64_t{0}) const noexcept;
 
 private:
     void set_partner(AssumptionId a, AssumptionId b, bool on);

@@ -17,14 +17,18 @@
 //      for_each_interpretation alone on a built ATMS (streamed, nothing interned); and a plain
 //      bitmask backtracking N-queens, the floor, in the same run with the same flags. The ratios
 //      are the at-most-one encoding's times over the floor's;
-//   3. peak memory: each configuration runs once more while the resident set's peak is watched
-//      (peak_growth_kib: how far the run raises RSS above its starting point).
+//   3. interpretations on a base environment (base_queries.hpp): 200 queries of an envisioner's
+//      kind (places of kinematic pairs x motions of objects, on top of a state's facts), each
+//      streamed up to 5,000 interpretations;
+//   4. peak memory: each theory and N-queens configuration runs once more while the resident set's
+//      peak is watched (peak_growth_kib: how far the run raises RSS above its starting point).
 // Times are wall-clock medians (and minima) of several repetitions on one thread.
 // stdout is line buffered, so a run piped into a file or `tee` shows each row when it is done.
-// Usage: atms_bench [--quick] [--queens | --theories]   (--quick: fewer repetitions, smaller sizes,
-//        N up to 10; --queens, --theories: only that part)
+// Usage: atms_bench [--quick] [--queens | --theories | --bases]   (--quick: fewer repetitions,
+//        smaller sizes, N up to 10; --queens, --theories, --bases: only that part)
 //        atms_bench --one NAME   one run of one configuration, for callgrind (see run_one)
 #include "atms/atms.hpp"
+#include "base_queries.hpp"
 #include "queens.hpp"
 
 #include <algorithm>
@@ -40,6 +44,7 @@
 #include <vector>
 
 using namespace qm::atms;
+using qm::atms::bench::BaseQueries;
 using qm::atms::bench::Encoding;
 using qm::atms::bench::Queens;
 using qm::atms::bench::queens_plain;
@@ -272,9 +277,27 @@ void queens_table(bool quick) {
     }
 }
 
+// Interpretations on a base environment (base_queries.hpp): 200 queries on one theory, each
+// streamed up to 5,000 interpretations; the time of all of them, and per query.
+void base_table(bool quick) {
+    const int reps = quick ? 3 : 5;
+    std::printf("\n== interpretations on a base environment: 200 queries, each up to 5,000 (median of %d) ==\n", reps);
+    std::printf("%6s %8s %12s %10s %12s %12s\n", "pairs", "objects", "build ms", "visited", "queries ms", "us/query");
+    for (auto [pairs, objects] : {std::pair{4, 2}, std::pair{8, 4}, std::pair{16, 8}}) {
+        if (quick && pairs > 8) break;
+        std::size_t visited = 0;
+        std::unique_ptr<BaseQueries> q;
+        const Timing build = time_runs(reps, [&] { q = std::make_unique<BaseQueries>(11, pairs, objects, 200); });
+        const Timing t = time_runs(reps, [&] { visited = q->run(5000); });
+        std::printf("%6d %8d %12.2f %10zu %12.2f %12.1f\n", pairs, objects, build.median_ms, visited, t.median_ms,
+                    1e3 * t.median_ms / 200.0);
+    }
+}
+
 // One run of one configuration, for instruction counts (valgrind --tool=callgrind atms_bench --one
 // NAME): queens-whole-pairwise-N, queens-whole-at-most-one-N (build + interpretations, interned),
-// queens-plain-N, local-W, deep-S. Prints its count; false if NAME is not one of these.
+// queens-plain-N, bases-P (base_table's queries, P pairs), local-W, deep-S. Prints its count; false
+// if NAME is not one of these.
 bool run_one(const std::string& name) {
     auto number = [&](const std::string& prefix) -> int {
         return name.rfind(prefix, 0) == 0 ? std::atoi(name.c_str() + prefix.size()) : 0;
@@ -287,6 +310,9 @@ bool run_one(const std::string& name) {
         std::printf("%zu\n", q.atms.interpretations(q.rows).size());
     } else if (int p = number("queens-plain-"); p >= 1 && p <= 14) {
         std::printf("%zu\n", queens_plain(p, 0, 0, 0, 0));
+    } else if (int b = number("bases-"); b >= 1) {  // bases-P: P pairs, P / 2 objects
+        const BaseQueries q(11, b, b / 2, 200);
+        std::printf("%zu\n", q.run(5000));
     } else if (int w = number("local-"); w >= 1) {
         std::printf("%zu\n", local_theory(7, w).envs);
     } else if (int d = number("deep-"); d >= 1) {
@@ -301,22 +327,25 @@ bool run_one(const std::string& name) {
 
 int main(int argc, char** argv) {
     std::setvbuf(stdout, nullptr, _IOLBF, 0);
-    bool quick = false, theories = true, queens = true;
+    bool quick = false, theories = true, queens = true, bases = true;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--quick") == 0) {
             quick = true;
         } else if (std::strcmp(argv[i], "--queens") == 0) {
-            theories = false;
+            theories = bases = false;
         } else if (std::strcmp(argv[i], "--theories") == 0) {
-            queens = false;
+            queens = bases = false;
+        } else if (std::strcmp(argv[i], "--bases") == 0) {
+            theories = queens = false;
         } else if (std::strcmp(argv[i], "--one") == 0 && i + 1 < argc) {
             return run_one(argv[i + 1]) ? 0 : 2;
         } else {
-            std::fprintf(stderr, "usage: atms_bench [--quick] [--queens | --theories] | --one NAME\n");
+            std::fprintf(stderr, "usage: atms_bench [--quick] [--queens | --theories | --bases] | --one NAME\n");
             return 2;
         }
     }
     if (theories) theory_tables(quick);
     if (queens) queens_table(quick);
+    if (bases) base_table(quick);
     return 0;
 }
