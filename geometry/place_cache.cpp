@@ -17,7 +17,10 @@ namespace {
 // now 49).
 // /5: joins are moved onto the boundary along their mean normal itself, not along its
 // cell-scaled direction (the ratchet at its own grid 64x64: 100 places, now 90).
-constexpr const char* magic = "qm-place-cache/5";
+// /6: the ends of a translation axis (or a window) are stops, `stop` places (kind 5) with the
+// stop's normal on the `limit` joins at their ends (the cam follower could stay moving up for
+// ever in the face at the top of its stroke).
+constexpr const char* magic = "qm-place-cache/6";
 
 void write_text(std::ostream& os, const std::string& s) { os << s.size() << ' ' << s; }
 
@@ -48,7 +51,7 @@ bool read_sign(std::istream& is, std::int8_t& s) {
 std::string place_cache_material(const PairOracle& oracle, const PlaceRequest& r) {
     std::ostringstream os;
     os << std::hexfloat << magic << '\n' << oracle.fingerprint() << '\n';
-    for (const auto& a : r.cspace.axes) os << "axis " << a.lo << ' ' << a.hi << ' ' << a.periodic << ' ' << a.samples << '\n';
+    for (const auto& a : r.cspace.axes) os << "axis " << a.lo << ' ' << a.hi << ' ' << a.periodic << ' ' << a.samples << ' ' << a.stops << '\n';
     os << "tol " << r.cspace.boundary_tolerance << ' ' << r.cspace.normal_zero_tolerance << " merge " << r.merge_epsilon << " gap " << r.gap_epsilon << '\n';
     for (const auto& x : r.external) {
         os << "external " << x.coordinate << ' ' << x.value << ' ';
@@ -122,7 +125,7 @@ CacheLoad PlaceCache::load(const std::string& material) const {
         p.id = PlaceId{static_cast<std::uint32_t>(i)};
         int kind = 0, jk = 0, concave = 0;
         std::size_t nn = 0, npts = 0;
-        if (!(is >> kind >> jk >> p.axis >> concave) || kind < 0 || kind > 4 || jk < 0 || jk > 3) return out;
+        if (!(is >> kind >> jk >> p.axis >> concave) || kind < 0 || kind > 5 || jk < 0 || jk > 3) return out;
         if (!read_double(is, p.extent) || !(is >> p.gap >> nn) || nn > 16) return out;
         p.kind = static_cast<PlaceKind>(kind);
         p.join_kind = static_cast<JoinKind>(jk);

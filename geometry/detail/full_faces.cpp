@@ -41,6 +41,7 @@ FaceLocator::FaceLocator(const CSpaceResult& space, const std::vector<Division>&
         const auto& axb = r.axes[static_cast<std::size_t>(b)];
         const double v = wrap(r, d.start)[b];
         const int lower = static_cast<int>(std::floor((v - axb.lo) / axb.step()));
+        lower_.push_back(lower);
         if (lower < 0 || lower >= axb.samples) continue;
         if (!axb.periodic && lower == axb.samples - 1) continue;
         for (int m = 0; m < axa.samples; ++m) {
@@ -82,15 +83,24 @@ int FaceLocator::label() {
     return faces;
 }
 
-bool FaceLocator::crosses_division(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const {
+// A sample on a division's line (a division from a join at a grid coordinate: the top of a cam
+// curve at q0 = pi/2 on a grid of 64) lies on the side the cuts put it, the lower one when
+// floor() gives its own index: deciding it by the sign of a zero offset, as before, put a
+// point a third of a cell to the upper side into the lower face (the cam at grid 64: a face
+// with no way out under (- 0), and a join reaching the face across the division).
+bool FaceLocator::crosses_division(const Eigen::Vector2d& a, int i, int j) const {
     const auto& r = space_.request;
+    const Eigen::Vector2d b(r.axes[0].sample(i), r.axes[1].sample(j));
     const Eigen::Vector2d step = difference(r, a, b);
-    for (const auto& d : divisions_) {
+    for (std::size_t k = 0; k < divisions_.size(); ++k) {
+        const auto& d = divisions_[k];
         const int ax = d.axis, other = 1 - ax;
         // Signed offsets of a and b from the division's line in the other coordinate.
         const double oa = difference(r, d.start, a)[other];
-        const double ob = oa + step[other];
-        if ((oa > 0) == (ob > 0) || oa == 0 || ob == 0) continue;
+        double ob = oa + step[other];
+        const auto& axo = r.axes[static_cast<std::size_t>(other)];
+        if (std::abs(ob) <= 1e-9 * axo.step()) ob = (other == 0 ? i : j) == lower_[k] ? -1.0 : 1.0;
+        if ((oa > 0) == (ob > 0) || oa == 0) continue;
         const double x = a[ax] + step[ax] * (oa / (oa - ob));
         const double t = along(r.axes[static_cast<std::size_t>(ax)], d, x);
         if (t >= 0 && t <= d.length) return true;
@@ -115,7 +125,7 @@ std::optional<int> FaceLocator::face_at(const Eigen::Vector2d& q) const {
                 const int f = face_of_sample(i, j);
                 if (f < 0) continue;
                 const Eigen::Vector2d s(r.axes[0].sample(i), r.axes[1].sample(j));
-                if (crosses_division(x, s)) continue;
+                if (crosses_division(x, i, j)) continue;
                 const double dist = difference(r, x, s).cwiseQuotient(Eigen::Vector2d(r.axes[0].step(), r.axes[1].step())).norm();
                 if (!best || dist < best_d) {
                     best = f;

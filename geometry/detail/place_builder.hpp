@@ -93,6 +93,7 @@ struct Builder {
     void add_external_divisions();
     void end_on_boundary(Division& d, double t, JoinKind kind);
     void cross_divisions();
+    void add_stops();
     void emit_csegs();
     void emit_divisions();
 };

@@ -47,11 +47,13 @@ public:
     [[nodiscard]] int face_of_sample(int i, int j) const { return face_[static_cast<std::size_t>(i + n0_ * j)]; }
 
 private:
-    [[nodiscard]] bool crosses_division(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const;
+    // Does the segment from a to sample (i, j) cross a division?
+    [[nodiscard]] bool crosses_division(const Eigen::Vector2d& a, int i, int j) const;
     const CSpaceResult& space_;
     const std::vector<Division>& divisions_;
     int n0_, n1_;
     std::vector<std::uint8_t> cut_[2];  // cut_[k][s]: edge from sample s along axis k is cut
+    std::vector<int> lower_;            // per division: the last sample index on its lower side
     std::vector<int> face_;             // -1 for blocked samples
 };
 

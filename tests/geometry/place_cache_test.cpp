@@ -54,6 +54,7 @@ TEST_CASE("geometry/place_cache: the key covers geometry and every setting") {
     CHECK(changed([](PlaceRequest& r) { r.cspace.axes[1].samples += 1; }));
     CHECK(changed([](PlaceRequest& r) { r.cspace.axes[0].hi = std::nextafter(r.cspace.axes[0].hi, 10.0); }));
     CHECK(changed([](PlaceRequest& r) { r.merge_epsilon = 1e-3; }));
+    CHECK(changed([](PlaceRequest& r) { r.cspace.axes[1].stops = !r.cspace.axes[1].stops; }));
     CHECK(changed([](PlaceRequest& r) { r.external.push_back({1, 0.0, "g"}); }));
     CHECK(place_cache_key(place_cache_material(c.tessellated(1e-3), req)) != place_cache_key(place_cache_material(c.tessellated(2e-3), req)));
     CHECK(place_cache_key(base).size() == 16);
@@ -71,7 +72,7 @@ TEST_CASE("geometry/place_cache: damaged files are corrupt, foreign material is 
     std::filesystem::resize_file(cache.path_for(material), std::filesystem::file_size(cache.path_for(material)) / 2);
     CHECK(cache.load(material).status == CacheStatus::corrupt);
     // Same file name, different material (as after a hash collision): not used.
-    std::ofstream(cache.path_for(material)) << "qm-place-cache/5\n5 other\n0 0\n";
+    std::ofstream(cache.path_for(material)) << "qm-place-cache/6\n5 other\n0 0\n";
     CHECK(cache.load(material).status == CacheStatus::miss);
     const auto again = build_or_load(c.exact, req, cache);
     CHECK(!again.from_cache);
