@@ -71,9 +71,10 @@ std::vector<ChainGroup> group_chains(const atms::Atms& atms, const BranchSets& b
                             uf.join(c, chains + s);
                             reached[s] = true;
                         }
-        // Sets that a nogood (within env) couples: their choices are not independent.
+        // Sets that a nogood (within env) couples: their choices are not independent. (The pairs
+        // of a choice set's own at-most-one constraint lie within one set: they couple nothing.)
         if (std::any_of(reached.begin(), reached.end(), [](bool r) { return r; }))
-            for (atms::EnvId ng : atms.minimal_nogoods())
+            for (atms::EnvId ng : atms.stated_nogoods())
                 if (auto part = branch_part(branches, atms.env(ng), world); part && part->size() > 1)
                     for (std::size_t i = 1; i < part->size(); ++i) uf.join(chains + (*part)[0], chains + (*part)[i]);
     }

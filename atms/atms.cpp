@@ -70,9 +70,9 @@ JustId Atms::justify(InformantId why, std::span<const NodeId> antecedents, NodeI
         if (std::find(ants.begin(), ants.end(), a) == ants.end()) ants.push_back(a);
     }
     const JustId j{static_cast<std::uint32_t>(justs_.size())};
-    justs_.push_back(Justification{why, ants, consequent});
-    nodes_[consequent].justifications.push_back(j);
     for (NodeId a : ants) nodes_[a].consequences.push_back(j);
+    justs_.push_back(Justification{why, std::move(ants), consequent});
+    nodes_[consequent].justifications.push_back(j);
     // BPS justify-node: propagate with the empty environment as the "changed" label.
     work_.push_back(Pending{j, std::nullopt, {empty_env_}});
     propagate_all();
@@ -133,39 +133,6 @@ void Atms::update(std::vector<EnvId> envs, NodeId consequent, JustId /*just*/) {
     if (added.empty()) return;
     if (was_empty) events_.push_back(Event{Event::Kind::label_nonempty, consequent.value});
     for (JustId j : nodes_[consequent].consequences) work_.push_back(Pending{j, consequent, added});
-}
-
-void Atms::new_nogood(EnvId env) {
-    if (envs_.is_nogood(env)) return;  // already subsumed by a known nogood
-    const Environment nogood = envs_[env];
-    nogoods_.add(env, nogood);
-    events_.push_back(Event{Event::Kind::nogood, env.value});
-    // Mark every interned superset nogood and drop it from the labels holding it (BPS new-nogood).
-    auto retire = [&](EnvId e) {
-        if (envs_.is_nogood(e) && e != env) return;
-        envs_.mark_nogood(e);
-        for (NodeId n : envs_.nodes(e)) {
-            Label& l = labels_[n];
-            auto it = std::lower_bound(l.begin(), l.end(), e);
-            if (it != l.end() && *it == e) l.erase(it);
-        }
-    };
-    if (nogood.empty()) {
-        for (std::uint32_t i = 0; i < envs_.size(); ++i) retire(EnvId{i});
-        return;
-    }
-    // Scan the supersets through the rarest of the nogood's assumptions.
-    const auto as = nogood.assumptions();
-    AssumptionId rarest = as.front();
-    for (AssumptionId a : as)
-        if (envs_.containing(a).size() < envs_.containing(rarest).size()) rarest = a;
-    const std::uint32_t n = envs_.count(env);
-    // containing() may not grow during the scan (retire interns nothing), so indexing is safe.
-    const auto& candidates = envs_.containing(rarest);
-    for (std::size_t i = 0; i < candidates.size(); ++i) {
-        const EnvId e = candidates[i];
-        if (envs_.count(e) >= n && nogood.subset_of(envs_[e])) retire(e);
-    }
 }
 
 void Atms::run_events() {
@@ -270,26 +237,13 @@ const Environment& Atms::env(EnvId e) const {
     require_env(e);
     return envs_[e];
 }
-std::vector<EnvId> Atms::minimal_nogoods() const {
-    auto out = nogoods_.minimal();
-    std::sort(out.begin(), out.end());
-    return out;
-}
 
 // ---- interpretations --------------------------------------------------------------------------
 
 std::size_t Atms::for_each_interpretation(std::span<const std::vector<AssumptionId>> choice_sets, EnvId base,
                                           const std::function<bool(const Environment&)>& visit) const {
     require_env(base);
-    std::vector<std::int64_t> owner(assumption_nodes_.size(), -1);  // set index of each assumption
-    for (std::size_t s = 0; s < choice_sets.size(); ++s) {
-        for (AssumptionId a : choice_sets[s]) {
-            QM_REQUIRE(assumption_nodes_.contains(a), "unknown assumption id in a choice set");
-            QM_REQUIRE(owner[a.value] == -1 || owner[a.value] == static_cast<std::int64_t>(s),
-                       "an assumption occurs in two choice sets");
-            owner[a.value] = static_cast<std::int64_t>(s);
-        }
-    }
+    // The preconditions on the sets (known ids, disjoint) are checked there.
     return enumerate_interpretations(nogoods_, assumption_nodes_.size(), choice_sets, envs_[base], visit);
 }
 
@@ -301,10 +255,16 @@ std::vector<EnvId> Atms::interpretations(std::span<const std::vector<AssumptionI
     });
     std::vector<EnvId> out;
     out.reserve(found.size());
-    std::unordered_set<EnvId> seen;  // a choice repeated within a set gives the same env twice
-    for (const Environment& e : found) {
-        const EnvId id = envs_.intern(e, nogoods_);
-        if (seen.insert(id).second) out.push_back(id);
+    for (const Environment& e : found) out.push_back(envs_.intern_consistent(e, nogoods_));  // found consistent
+    // A choice repeated within a set gives the same env twice: keep the first.
+    const bool repeats = std::any_of(choice_sets.begin(), choice_sets.end(), [](const std::vector<AssumptionId>& set) {
+        std::vector<AssumptionId> sorted = set;
+        std::sort(sorted.begin(), sorted.end());
+        return std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+    });
+    if (repeats) {
+        std::unordered_set<EnvId> seen;
+        std::erase_if(out, [&](EnvId id) { return !seen.insert(id).second; });
     }
     return out;
 }
@@ -329,14 +289,6 @@ Explanation Atms::explain(NodeId n, EnvId env) const {
     auto out = derive_explanation(justs_, nodes_.size(), derivation_base(envs_[env], scratch), n);
     QM_ASSERT(out.has_value(), "label unsound: node in label but not derivable");
     QM_REQUIRE(out.has_value(), "internal: node holds but has no derivation");
-    return *out;
-}
-
-Explanation Atms::explain_nogood(EnvId env) const {
-    QM_REQUIRE(!is_consistent(env), "explain_nogood: the environment is consistent");
-    std::vector<std::pair<NodeId, AssumptionId>> scratch;
-    auto out = derive_explanation(justs_, nodes_.size(), derivation_base(envs_[env], scratch), contradiction_);
-    QM_REQUIRE(out.has_value(), "internal: nogood has no derivation of the contradiction");
     return *out;
 }
 

@@ -31,14 +31,16 @@
 #include "atms/ids.hpp"
 #include "atms/justification.hpp"
 #include "atms/label.hpp"
-#include <initializer_list>
 #include "atms/nogood_database.hpp"
 #include <cstddef>
 #include <deque>
 #include <functional>
+#include <initializer_list>
+#include <map>
 #include <memory>
 #include <optional>
 #include <span>
+#include <tuple>
 #include <vector>
 
 namespace qm::atms {
@@ -66,6 +68,20 @@ public:
     JustId add_nogood(InformantId why, std::initializer_list<NodeId> antecedents) {
         return add_nogood(why, std::span<const NodeId>(antecedents.begin(), antecedents.size()));
     }
+    // No two of `members` hold together: every environment holding two of them is nogood. This is
+    // the at-most-one half of an `exactly one` choice set (the other half is the one pick per set
+    // of interpretations) kept as ONE constraint, not as the S(S-1)/2 nogoods {a, b} that
+    // add_nogood of every two member nodes would make: declaring it costs what the members' envs
+    // hold, and consistency tests cost what the tested environment holds. Its pairs are still
+    // nogoods to every query: minimal_nogoods() lists them, explain_nogood() explains one by a
+    // clause a, b -> contradiction with informant `why` (an at_most_one clause of those two members,
+    // recorded on first request; a constraint of two members is its own pair). The
+    // constraint is over the assumptions, so it differs from those pairwise nogoods only where a
+    // member's assumption node is itself justified (it then does not extend to the other
+    // environments deriving that node). Duplicates collapse; fewer than two distinct members
+    // constrain nothing. Returns its record, a Justification of kind at_most_one (justification.hpp)
+    // whose antecedents are the members' nodes in the order given. Pre: ids valid.
+    JustId add_at_most_one(InformantId why, std::span<const AssumptionId> members);
 
     // ---- nodes ----------------------------------------------------------------------------------
     [[nodiscard]] NodeId contradiction() const noexcept { return contradiction_; }
@@ -98,7 +114,19 @@ public:
     }
     [[nodiscard]] EnvId empty_environment() const noexcept { return empty_env_; }
     [[nodiscard]] const Environment& env(EnvId e) const;  // Pre: e valid
-    [[nodiscard]] std::vector<EnvId> minimal_nogoods() const;  // sorted by EnvId
+    // Every minimal nogood, sorted by EnvId: the stated ones and the pairs {a, b} of two members of
+    // an at-most-one constraint that are each consistent. Interns the pairs not interned yet, so it
+    // costs O(S^2) for a constraint of S members: minimal_nogoods_within(e) asks about one
+    // environment, stated_nogoods() and at_most_one_nogoods(j) about the parts.
+    std::vector<EnvId> minimal_nogoods();
+    // The minimal nogoods that are subsets of e, sorted by EnvId (interns the pairs among them).
+    // Costs what e holds, not what the database holds.
+    std::vector<EnvId> minimal_nogoods_within(const Environment& e);
+    // The minimal nogoods that are not pairs of an at-most-one constraint, sorted by EnvId.
+    [[nodiscard]] std::vector<EnvId> stated_nogoods() const;
+    // The minimal nogoods that constraint j (add_at_most_one's record) makes, interned, in member
+    // order (a before b as given; pairs listed by the first, then the second). Pre: j is one.
+    std::vector<EnvId> at_most_one_nogoods(JustId j);
 
     // ---- interpretations (interpretations.hpp has the algorithm) --------------------------------
     // All consistent environments base + exactly one assumption from each choice set, found by
@@ -109,8 +137,9 @@ public:
     // Pre: ids valid; no assumption occurs in two sets.
     std::vector<EnvId> interpretations(std::span<const std::vector<AssumptionId>> choice_sets);
     std::vector<EnvId> interpretations(std::span<const std::vector<AssumptionId>> choice_sets, EnvId base);
-    // Streaming form: calls visit(env) for each interpretation without interning it; visit returns
-    // false to stop. Returns the number visited. Same preconditions.
+    // Streaming form: calls visit(env) for each interpretation without interning it (env is valid
+    // during the call only: copy it to keep it); visit returns false to stop. Returns the number
+    // visited. Same preconditions.
     std::size_t for_each_interpretation(std::span<const std::vector<AssumptionId>> choice_sets, EnvId base,
                                         const std::function<bool(const Environment&)>& visit) const;
 
@@ -118,9 +147,11 @@ public:
     // A well-founded justification tree deriving n from premises and assumptions of env.
     // Pre: holds_in(n, env).
     [[nodiscard]] Explanation explain(NodeId n, EnvId env) const;
-    // The justifications deriving the contradiction from the assumptions of env.
-    // Pre: !is_consistent(env).
-    [[nodiscard]] Explanation explain_nogood(EnvId env) const;
+    // The justifications deriving the contradiction from the assumptions of env. Where an
+    // at-most-one constraint does, the step is the clause of the pair of its members that env holds
+    // (antecedents the two member nodes in the constraint's order; recorded on first use, in no
+    // node's lists: see add_at_most_one). Pre: !is_consistent(env).
+    [[nodiscard]] Explanation explain_nogood(EnvId env);
 
     // ---- consumers ------------------------------------------------------------------------------
     // Runs f(n) exactly once: when n's label next becomes non-empty, or, if it is non-empty now,
@@ -157,6 +188,9 @@ private:
     void propagate(const Pending& p);
     void update(std::vector<EnvId> envs, NodeId consequent, JustId just);
     void new_nogood(EnvId env);
+    void retire_env(EnvId e);  // marks e nogood and drops it from the labels holding it
+    [[nodiscard]] std::vector<std::pair<AssumptionId, AssumptionId>> live_pairs(JustId j) const;
+    EnvId pair_env(AssumptionId a, AssumptionId b);
     void run_events();
     [[nodiscard]] DerivationBase derivation_base(const Environment& e,
                                                  std::vector<std::pair<NodeId, AssumptionId>>& scratch) const;
@@ -175,5 +209,8 @@ private:
     std::vector<Consumer*> consumers_;
     bool running_events_ = false;
     std::unique_ptr<detail::WeaveScratch> scratch_;  // reused by every weave (label_update.hpp)
+    std::vector<JustId> at_most_one_;  // the records of add_at_most_one, in order
+    // (record, first node, second node) -> the pair's justification, once explained
+    std::map<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>, JustId> pair_justs_;
 };
 }  // namespace qm::atms

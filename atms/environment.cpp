@@ -25,15 +25,23 @@ Environment Environment::of(std::span<const AssumptionId> as) {
 Environment Environment::from_words(std::span<const std::uint64_t> words) { return from_words(words, 0); }
 
 Environment Environment::from_words(std::span<const std::uint64_t> words, std::size_t first_word) {
+    Environment e;
+    e.assign_words(words, first_word);
+    return e;
+}
+
+void Environment::assign_words(std::span<const std::uint64_t> words, std::size_t first_word) {
     std::size_t lo = 0, hi = words.size();
     while (lo < hi && words[lo] == 0) ++lo;
     while (hi > lo && words[hi - 1] == 0) --hi;
-    Environment e;
-    if (lo == hi) return e;
+    if (lo == hi) {
+        words_.clear();
+        first_ = 0;
+        return;
+    }
     QM_REQUIRE(first_word + hi <= std::size_t{UINT32_MAX} / word_bits, "assumption id out of range");
-    e.first_ = static_cast<std::uint32_t>(first_word + lo);
-    e.words_.assign(words.begin() + static_cast<std::ptrdiff_t>(lo), words.begin() + static_cast<std::ptrdiff_t>(hi));
-    return e;
+    first_ = static_cast<std::uint32_t>(first_word + lo);
+    words_.assign(words.begin() + static_cast<std::ptrdiff_t>(lo), words.begin() + static_cast<std::ptrdiff_t>(hi));
 }
 
 void Environment::normalise() noexcept {

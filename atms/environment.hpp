@@ -24,6 +24,9 @@ public:
     [[nodiscard]] static Environment from_words(std::span<const std::uint64_t> words);
     // The same for a window: words[i] is word first_word + i, every word outside it zero.
     [[nodiscard]] static Environment from_words(std::span<const std::uint64_t> words, std::size_t first_word);
+    // *this = from_words(words, first_word), reusing the storage it has (no allocation once it has
+    // grown): for a loop that forms many environments one after another.
+    void assign_words(std::span<const std::uint64_t> words, std::size_t first_word);
 
     [[nodiscard]] bool contains(AssumptionId a) const noexcept;
     [[nodiscard]] bool subset_of(const Environment& other) const noexcept;

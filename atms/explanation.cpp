@@ -14,7 +14,7 @@ enum class How : std::uint8_t { underived, premise, assumption, justified };
 }
 
 std::optional<Explanation> derive_explanation(std::span<const Justification> justs, std::size_t node_count,
-                                              const DerivationBase& base, NodeId goal) {
+                                              const DerivationBase& base, NodeId goal, std::vector<AtMostOneUse>* used) {
     QM_REQUIRE(goal.value < node_count, "unknown node id");
     for (const Justification& j : justs) {
         QM_REQUIRE(j.consequent.value < node_count, "a justification's consequent is an unknown node id");
@@ -35,8 +35,12 @@ std::optional<Explanation> derive_explanation(std::span<const Justification> jus
         reason[n.value] = j;
         queue.push_back(n);
     };
+    // An at_most_one clause needs two members; the first one met is kept in `first_member`.
+    std::vector<std::optional<NodeId>> first_member(justs.size());
+    std::vector<std::pair<NodeId, NodeId>> pair_of(justs.size());
+    auto at_most_one = [&](std::uint32_t j) { return justs[j].kind == Justification::Kind::at_most_one; };
     for (std::uint32_t j = 0; j < justs.size(); ++j) {
-        missing[j] = justs[j].antecedents.size();
+        missing[j] = at_most_one(j) ? 2 : justs[j].antecedents.size();
         for (NodeId a : justs[j].antecedents) users[a.value].push_back(j);
     }
     for (NodeId p : base.premises) derive(p, How::premise, 0);
@@ -47,8 +51,23 @@ std::optional<Explanation> derive_explanation(std::span<const Justification> jus
     for (std::uint32_t j = 0; j < justs.size(); ++j)
         if (missing[j] == 0) derive(justs[j].consequent, How::justified, j);
     for (std::size_t head = 0; head < queue.size() && how[goal.value] == How::underived; ++head) {
-        for (std::uint32_t j : users[queue[head].value])
-            if (--missing[j] == 0) derive(justs[j].consequent, How::justified, j);
+        const NodeId n = queue[head];
+        for (std::uint32_t j : users[n.value]) {
+            if (at_most_one(j)) {
+                if (how[n.value] != How::assumption || missing[j] == 0) continue;
+                if (--missing[j] == 1) {
+                    first_member[j] = n;
+                    continue;
+                }
+                // In the clause's antecedent order, as a pairwise nogood of the set would list them.
+                const auto& ants = justs[j].antecedents;
+                const bool in_order = std::find(ants.begin(), ants.end(), *first_member[j]) < std::find(ants.begin(), ants.end(), n);
+                pair_of[j] = in_order ? std::pair(*first_member[j], n) : std::pair(n, *first_member[j]);
+                derive(justs[j].consequent, How::justified, j);
+            } else if (--missing[j] == 0) {
+                derive(justs[j].consequent, How::justified, j);
+            }
+        }
     }
     if (how[goal.value] == How::underived) return std::nullopt;
 
@@ -69,10 +88,18 @@ std::optional<Explanation> derive_explanation(std::span<const Justification> jus
             out.assumptions.push_back(assumption_of[n.value]);
         } else if (expanded) {
             done[n.value] = true;
-            out.steps.push_back(JustId{reason[n.value]});
+            const std::uint32_t j = reason[n.value];
+            if (at_most_one(j) && used) used->push_back(AtMostOneUse{out.steps.size(), pair_of[j].first, pair_of[j].second});
+            out.steps.push_back(JustId{j});
         } else {
             stack.emplace_back(n, true);
-            for (NodeId a : justs[reason[n.value]].antecedents)
+            const std::uint32_t j = reason[n.value];
+            if (at_most_one(j)) {
+                for (NodeId a : {pair_of[j].first, pair_of[j].second})
+                    if (!done[a.value]) stack.emplace_back(a, false);
+                continue;
+            }
+            for (NodeId a : justs[j].antecedents)
                 if (!done[a.value]) stack.emplace_back(a, false);
         }
     }

@@ -30,10 +30,21 @@ struct DerivationBase {
     std::span<const std::pair<NodeId, AssumptionId>> assumptions;
 };
 
+// A step of kind at_most_one in a derivation: the two of its antecedents it was used with (in the
+// clause's antecedent order), which hold as assumptions of the environment.
+struct AtMostOneUse {
+    std::size_t step;  // index into Explanation::steps
+    NodeId first, second;
+};
+
 // Forward chains over `justs` (indexed by JustId) from the base, ignoring consistency, and returns
-// the explanation of `goal`, or nullopt if goal is not derivable. O(total antecedents).
+// the explanation of `goal`, or nullopt if goal is not derivable. O(total antecedents). A clause of
+// kind at_most_one derives its consequent once two of its antecedents are in the base as
+// assumptions (its constraint is over assumptions: a member node derived otherwise does not count);
+// each such step used is reported in `used`, if given.
 // Pre: every node id in justs and base is < node_count.
 [[nodiscard]] std::optional<Explanation> derive_explanation(std::span<const Justification> justs,
                                                             std::size_t node_count,
-                                                            const DerivationBase& base, NodeId goal);
+                                                            const DerivationBase& base, NodeId goal,
+                                                            std::vector<AtMostOneUse>* used = nullptr);
 }  // namespace qm::atms

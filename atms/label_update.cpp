@@ -58,7 +58,17 @@ std::vector<EnvId> weave(EnvironmentTable& table, const NogoodDatabase& nogoods,
     unions.reset(width);
     minimal.reset(width);
     MinimalFilter& filter = scratch.filter;
+    bool tested = true;  // every row of current is known consistent
     for (const Label* label : labels) {
+        if (current.size() == 1 && label->size() == 1) {
+            // One union of one env with one env (e.g. a nogood between two assumptions): formed in
+            // place; its consistency is tested once, after the last label.
+            const Environment& le = table[label->front()];
+            std::uint64_t* row = current.row(0);
+            for (std::size_t w = 0; w < le.words().size(); ++w) row[le.first_word() - first + w] |= le.words()[w];
+            tested = false;
+            continue;
+        }
         unions.clear();
         for (std::size_t i = 0; i < current.size(); ++i) {
             const auto c = current[i];
@@ -79,8 +89,10 @@ std::vector<EnvId> weave(EnvironmentTable& table, const NogoodDatabase& nogoods,
         current.clear();
         for (std::size_t i = 0; i < minimal.size(); ++i)
             if (!nogoods.subsumes_words(minimal[i], first)) current.push(minimal[i]);
+        tested = true;
         if (current.size() == 0) break;
     }
+    if (!tested && nogoods.subsumes_words(current[0], first)) current.clear();
     std::vector<EnvId> out;
     out.reserve(current.size());
     for (std::size_t i = 0; i < current.size(); ++i)

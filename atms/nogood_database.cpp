@@ -1,5 +1,6 @@
-// atms/nogood_database.cpp: minimal nogoods indexed by highest assumption (by_first_: the first
-// bucket a query looks in) and by every assumption.
+// atms/nogood_database.cpp: minimal stated nogoods filed under one of their assumptions (filed_,
+// the buckets a query looks in; pairs separately, answered by the partner bitsets), indexed by every
+// assumption (containing_, to retire supersets), and the at-most-one constraints.
 #include "atms/nogood_database.hpp"
 
 #include "qm/assert.hpp"
@@ -8,22 +9,46 @@
 
 namespace qm::atms {
 namespace {
+constexpr std::uint32_t word_bits = 64;
+
 void ensure(std::vector<std::vector<std::uint32_t>>& index, AssumptionId a) {
     if (index.size() <= a.value) index.resize(a.value + 1);
+}
+
+// Bit i set iff the set has an assumption congruent to i modulo 64: the OR of its words. N is a
+// subset of e only if signature(N) is a subset of signature(e), a test of one word.
+std::uint64_t signature(std::span<const std::uint64_t> words) noexcept {
+    std::uint64_t sig = 0;
+    for (std::uint64_t w : words) sig |= w;
+    return sig;
 }
 }  // namespace
 
 bool NogoodDatabase::subsumes_words(std::span<const std::uint64_t> words, std::size_t first_word) const noexcept {
     if (empty_nogood_) return true;
-    // A nogood N is a subset of e only if N's highest assumption is in e: visit just those buckets.
+    // A stated nogood N of size 1 or >= 3 is filed under one of its assumptions: N is a subset of e
+    // only if that one is in e, so only the buckets of e's assumptions are visited, and in them the
+    // signature rejects most without touching N. A pair {a, b} is found from either member through
+    // the partners of a.
+    const std::uint64_t sig = signature(words);
     for (std::size_t w = 0; w < words.size(); ++w) {
         for (std::uint64_t bits = words[w]; bits != 0; bits &= bits - 1) {
-            const std::size_t a = (first_word + w) * 64 + static_cast<std::size_t>(std::countr_zero(bits));
-            if (a >= by_first_.size()) return false;
-            for (std::uint32_t i : by_first_[a]) {
-                const Entry& n = entries_[i];
-                if (n.live && window_subset(n.env.words(), n.env.first_word(), words, first_word)) return true;
+            const std::size_t a = (first_word + w) * word_bits + static_cast<std::size_t>(std::countr_zero(bits));
+            if (a < partners_.size()) {
+                const Environment& p = partners_[a];
+                if (!p.empty() && window_intersects(p.words(), p.first_word(), words, first_word)) return true;
             }
+            if (a < filed_.size()) {
+                for (const Filed& f : filed_[a]) {
+                    if ((f.sig & ~sig) != 0) continue;
+                    const Environment& n = entries_[f.entry].env;
+                    if (window_subset(n.words(), n.first_word(), words, first_word)) return true;
+                }
+            }
+            // A constraint with two members in e is found from either (AtMostOneIndex::violated_by,
+            // folded into this one pass over e).
+            const AssumptionId id{static_cast<std::uint32_t>(a)};
+            if (!at_most_one_.of(id).empty() && at_most_one_.other_member(id, words, first_word)) return true;
         }
     }
     return false;
@@ -35,10 +60,39 @@ bool NogoodDatabase::subsumes_with(std::span<const std::uint64_t> words, Assumpt
         const Environment& p = partners_[a.value];
         if (window_intersects(p.words(), p.first_word(), words, 0)) return true;
     }
+    return larger_with(words, a) || at_most_one_.other_member(a, words);
+}
+
+bool NogoodDatabase::excludes(const Environment& base, AssumptionId a) const noexcept {
+    if (empty_nogood_) return true;
+    const Environment& p = partners(a);
+    if (window_intersects(p.words(), p.first_word(), base.words(), base.first_word())) return true;
+    if (a.value < not_pairs_.size()) {
+        const std::size_t own_word = a.value / word_bits;
+        const std::uint64_t own_bit = std::uint64_t{1} << (a.value % word_bits);
+        for (std::uint32_t i : not_pairs_[a.value]) {
+            const Entry& n = entries_[i];
+            if (!n.live) continue;
+            // n minus a within base (word by word, so nothing is allocated)?
+            bool inside = true;
+            for (std::size_t w = 0; w < n.env.words().size() && inside; ++w) {
+                const std::size_t at = n.env.first_word() + w;
+                const std::uint64_t need = n.env.words()[w] & (at == own_word ? ~own_bit : ~std::uint64_t{0});
+                if (need == 0) continue;
+                inside = at >= base.first_word() && at < base.end_word() &&
+                         (need & ~base.words()[at - base.first_word()]) == 0;
+            }
+            if (inside) return true;
+        }
+    }
+    return at_most_one_.other_member(a, base.words(), base.first_word());
+}
+
+bool NogoodDatabase::larger_with(std::span<const std::uint64_t> words, AssumptionId a, std::uint64_t sig) const noexcept {
     if (a.value >= not_pairs_.size()) return false;
     for (std::uint32_t i : not_pairs_[a.value]) {
         const Entry& n = entries_[i];
-        if (n.live && window_subset(n.env.words(), n.env.first_word(), words, 0)) return true;
+        if (n.live && (n.sig & ~sig) == 0 && window_subset(n.env.words(), n.env.first_word(), words, 0)) return true;
     }
     return false;
 }
@@ -49,19 +103,40 @@ void NogoodDatabase::set_partner(AssumptionId a, AssumptionId b, bool on) {
     else partners_[a.value].erase(b);
 }
 
+void NogoodDatabase::retire(std::uint32_t entry) {
+    Entry& n = entries_[entry];
+    if (!n.live) return;
+    n.live = false;
+    --live_;
+    if (n.size == 2) {
+        const auto pair = n.env.assumptions();
+        set_partner(pair[0], pair[1], false);
+        set_partner(pair[1], pair[0], false);
+    } else {
+        std::vector<Filed>& bucket = filed_[n.filed_under.value];
+        auto it = std::find_if(bucket.begin(), bucket.end(), [&](const Filed& f) { return f.entry == entry; });
+        QM_ASSERT(it != bucket.end(), "a live nogood is filed");
+        *it = bucket.back();
+        bucket.pop_back();
+    }
+}
+
 void NogoodDatabase::add(EnvId id, const Environment& e) {
     QM_REQUIRE(!subsumes(e), "nogood already subsumed by a known nogood");
     if (e.empty()) {
         // {} is nogood: every environment is inconsistent; it is the only minimal nogood.
         for (Entry& n : entries_) n.live = false;
         partners_.clear();
-        entries_.push_back(Entry{id, e, true});
+        filed_.clear();
+        entries_.push_back(Entry{id, e, 0, 0, AssumptionId{}, true});
         live_ = 1;
         empty_nogood_ = true;
         return;
     }
     const auto as = e.assumptions();
-    // Every superset of e contains each of e's assumptions: scan the smallest of their buckets.
+    const auto size = static_cast<std::uint32_t>(as.size());
+    // Every superset of e contains each of e's assumptions: scan the smallest of their buckets,
+    // testing only the larger nogoods there (an equal one would have subsumed e).
     AssumptionId rarest = as.front();
     for (AssumptionId a : as) {
         if (a.value >= containing_.size() || containing_[a.value].empty()) {
@@ -70,33 +145,36 @@ void NogoodDatabase::add(EnvId id, const Environment& e) {
         }
         if (containing_[a.value].size() < containing_[rarest.value].size()) rarest = a;
     }
-    if (rarest.value < containing_.size()) {
+    const std::uint64_t sig = signature(e.words());
+    if (rarest.value < containing_.size())
         for (std::uint32_t i : containing_[rarest.value]) {
-            Entry& n = entries_[i];
-            if (n.live && e.subset_of(n.env)) {
-                n.live = false;
-                --live_;
-                if (n.env.size() == 2) {
-                    const auto pair = n.env.assumptions();
-                    set_partner(pair[0], pair[1], false);
-                    set_partner(pair[1], pair[0], false);
-                }
-            }
+            const Entry& n = entries_[i];
+            if (n.live && n.size > size && (sig & ~n.sig) == 0 && e.subset_of(n.env)) retire(i);
         }
-    }
     const auto index = static_cast<std::uint32_t>(entries_.size());
-    entries_.push_back(Entry{id, e, true});
+    entries_.push_back(Entry{id, e, sig, size, as.front(), true});
     ++live_;
-    ensure(by_first_, as.back());
-    by_first_[as.back().value].push_back(index);
     for (AssumptionId a : as) {
         ensure(containing_, a);
         containing_[a.value].push_back(index);
     }
     if (as.size() == 2) {
+        ensure(pairs_by_first_, as.back());
+        pairs_by_first_[as.back().value].push_back(index);
         set_partner(as[0], as[1], true);
         set_partner(as[1], as[0], true);
     } else {
+        // Filed under its assumption with the fewest nogoods filed so far, so that no bucket grows
+        // with every nogood of a busy assumption (the highest, say).
+        AssumptionId under = as.front();
+        for (AssumptionId a : as) {
+            const std::size_t here = a.value < filed_.size() ? filed_[a.value].size() : 0;
+            const std::size_t best = under.value < filed_.size() ? filed_[under.value].size() : 0;
+            if (here < best) under = a;
+        }
+        if (filed_.size() <= under.value) filed_.resize(under.value + 1);
+        filed_[under.value].push_back(Filed{sig, index});
+        entries_.back().filed_under = under;
         for (AssumptionId a : as) {
             ensure(not_pairs_, a);
             not_pairs_[a.value].push_back(index);
@@ -104,11 +182,52 @@ void NogoodDatabase::add(EnvId id, const Environment& e) {
     }
 }
 
+std::optional<std::uint32_t> NogoodDatabase::add_at_most_one(std::span<const AssumptionId> members) {
+    const std::optional<std::uint32_t> c = at_most_one_.add(members);
+    if (!c || empty_nogood_) return c;
+    // A stated nogood holding two members is a superset of their pair: no longer minimal. Each is
+    // reached through the buckets of the members it holds.
+    const Environment& set = at_most_one_.members(*c);
+    for (AssumptionId a : set.assumptions()) {
+        if (a.value >= containing_.size()) continue;
+        for (std::uint32_t i : containing_[a.value]) {
+            const Entry& n = entries_[i];
+            if (!n.live) continue;
+            std::uint32_t shared = 0;
+            for (AssumptionId b : n.env.assumptions()) shared += set.contains(b) ? 1 : 0;
+            if (shared >= 2) retire(i);
+        }
+    }
+    return c;
+}
+
 std::vector<EnvId> NogoodDatabase::minimal() const {
     std::vector<EnvId> out;
     out.reserve(live_);
     for (const Entry& n : entries_)
         if (n.live) out.push_back(n.id);
+    return out;
+}
+
+std::vector<EnvId> NogoodDatabase::within(const Environment& e) const {
+    std::vector<std::uint32_t> found;
+    if (empty_nogood_) {
+        for (std::uint32_t i = 0; i < entries_.size(); ++i)
+            if (entries_[i].live) found.push_back(i);
+    }
+    if (!empty_nogood_)
+        for (AssumptionId a : e.assumptions()) {
+            if (a.value < filed_.size())
+                for (const Filed& f : filed_[a.value])
+                    if (entries_[f.entry].env.subset_of(e)) found.push_back(f.entry);
+            if (a.value < pairs_by_first_.size())
+                for (std::uint32_t i : pairs_by_first_[a.value])
+                    if (entries_[i].live && entries_[i].env.subset_of(e)) found.push_back(i);
+        }
+    std::sort(found.begin(), found.end());
+    std::vector<EnvId> out;
+    out.reserve(found.size());
+    for (std::uint32_t i : found) out.push_back(entries_[i].id);
     return out;
 }
 }  // namespace qm::atms

@@ -92,6 +92,10 @@ public:
 
     // ---- choice sets and interpretations --------------------------------------------------------
     [[nodiscard]] const std::vector<std::vector<atms::AssumptionId>>& choice_sets() const noexcept { return choice_sets_; }
+    // Choice set i's at-most-one constraint in the ATMS (Atms::add_at_most_one's record) and the
+    // `exactly one` that declared it. Pre: i < choice_sets().size().
+    [[nodiscard]] atms::JustId choice_set_constraint(std::size_t i) const { return choice_set_constraints_.at(i); }
+    [[nodiscard]] const SourceLocation& choice_set_where(std::size_t i) const { return choice_set_where_.at(i); }
     [[nodiscard]] std::vector<atms::EnvId> interpretations();
     [[nodiscard]] std::vector<atms::EnvId> interpretations(atms::EnvId base);
 
@@ -150,7 +154,7 @@ private:
     void assume_fact(FactId f, atms::InformantId why, std::span<const atms::NodeId> antecedents);
     void declare_choice_set(const CompiledConsequent& c, const CompiledRule& rule, atms::InformantId why,
                             std::span<const atms::NodeId> antecedents, std::vector<atms::AssumptionId> set,
-                            std::span<const atms::NodeId> nodes, Diagnostics& diagnostics);
+                            Diagnostics& diagnostics);
 
     CompiledProgram program_;
     ValueTable values_;
@@ -171,6 +175,7 @@ private:
     IdVector<RuleId, MatchPlan> rule_plans_;                    // plan_matching() of each rule
     std::vector<std::vector<atms::AssumptionId>> choice_sets_;
     std::vector<SourceLocation> choice_set_where_;       // the `exactly one` that declared each set
+    std::vector<atms::JustId> choice_set_constraints_;   // each set's at-most-one constraint
     std::set<std::vector<atms::AssumptionId>> choice_set_keys_;  // every set seen, sorted (also refused ones)
     std::map<atms::AssumptionId, std::uint32_t> choice_set_of_;  // the choice set of each member
     std::vector<bool> is_choice_assumption_;             // indexed by AssumptionId

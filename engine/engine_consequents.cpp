@@ -4,6 +4,7 @@
 #include "engine/engine.hpp"
 #include "qm/assert.hpp"
 #include <algorithm>
+#include <unordered_set>
 
 namespace qm::engine {
 
@@ -102,42 +103,43 @@ void Engine::execute(const RuleInstance& instance, Diagnostics& diagnostics) {
                 break;
             }
             case CompiledConsequent::Kind::exactly_one: {
-                // One step per element and one per pair of elements (a nogood each), before anything
-                // is assumed: a choice set is declared whole or not at all.
+                // One step per element and one per pair of elements, before anything is assumed: a
+                // choice set is declared whole or not at all. (The pairs are one ATMS constraint
+                // now, but a bounded run still counts them, so RunOptions::max_steps means what it
+                // meant.)
                 const std::vector<ValueId> es = elements(c);
                 if (!spend(es.size() + es.size() * (es.size() - (es.empty() ? 0 : 1)) / 2, rule, c.where, diagnostics))
                     return;
                 std::vector<atms::AssumptionId> set;
-                std::vector<atms::NodeId> nodes;
+                std::unordered_set<atms::AssumptionId> members;  // an element repeated adds nothing
                 for (ValueId e : es) {
                     b[c.slot] = e;
                     if (auto f = instantiate(c.atom, b, diagnostics)) {
                         assume_fact(*f, element_informant(), ants);
                         note_if_in(*f);
-                        atms::NodeId a = *fact_nodes_[*f].assumption;
-                        if (std::find(nodes.begin(), nodes.end(), a) != nodes.end()) continue;
-                        nodes.push_back(a);
-                        set.push_back(*atms_.assumption_of(a));
+                        const atms::AssumptionId a = *atms_.assumption_of(*fact_nodes_[*f].assumption);
+                        if (members.insert(a).second) set.push_back(a);
                     }
                 }
                 b[c.slot].reset();
-                declare_choice_set(c, rule, why, ants, std::move(set), nodes, diagnostics);
+                declare_choice_set(c, rule, why, ants, std::move(set), diagnostics);
                 break;
             }
         }
     }
 }
 
-// Law 1 style uniqueness: each element an assumption, a nogood for every pair, one choice set. The
-// interpretations pick one assumption from every choice set, which the ATMS can only do for
-// disjoint sets: a set sharing an assumption with another (not identical) set is refused, located.
+// Law 1 style uniqueness: each element an assumption, no two together (one at-most-one constraint of
+// the ATMS, which stands for a nogood for every pair), one choice set. The interpretations pick one
+// assumption from every choice set, which the ATMS can only do for disjoint sets: a set sharing an
+// assumption with another (not identical) set is refused, located.
 // "Exactly one of nothing" is false: an empty set makes the firing's antecedents a nogood, so the
 // environments where it fired are inconsistent, and `--why` names the rule that made them so. (An
 // empty choice set registered as such would instead leave no interpretation at all, with no
 // nogood to say why, even where the firing's antecedents do not hold.)
 void Engine::declare_choice_set(const CompiledConsequent& c, const CompiledRule& rule, atms::InformantId why,
                                 std::span<const atms::NodeId> antecedents, std::vector<atms::AssumptionId> set,
-                                std::span<const atms::NodeId> nodes, Diagnostics& diagnostics) {
+                                Diagnostics& diagnostics) {
     if (set.empty()) {
         atms_.add_nogood(why, antecedents);
         return;
@@ -160,8 +162,7 @@ void Engine::declare_choice_set(const CompiledConsequent& c, const CompiledRule&
                                        std::to_string(at.column) + "; choice sets must be disjoint or identical");
         return;
     }
-    for (std::size_t i = 0; i < nodes.size(); ++i)
-        for (std::size_t j = i + 1; j < nodes.size(); ++j) atms_.add_nogood(why, {nodes[i], nodes[j]});
+    choice_set_constraints_.push_back(atms_.add_at_most_one(why, set));
     const auto index = static_cast<std::uint32_t>(choice_sets_.size());
     for (atms::AssumptionId a : set) {
         is_choice_assumption_[a.value] = true;

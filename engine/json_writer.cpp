@@ -50,6 +50,15 @@ std::string to_json(const RunReport& report) {
         out += "{\"fact\": " + json_string(report.facts[i].fact) + ", \"label\": " + env_list(report.facts[i].label) + "}";
     }
     out += "], \"nogoods\": " + env_list(report.nogoods);
+    if (!report.unlisted.empty()) {  // only for a choice set of more than listed_choice_set_limit members
+        out += ", \"unlisted_choice_sets\": [";
+        for (std::size_t i = 0; i < report.unlisted.size(); ++i) {
+            const auto& u = report.unlisted[i];
+            out += (i > 0 ? ", " : "") + std::string("{\"choice_set\": ") + string_list(u.members) +
+                   ", \"at\": " + json_string(u.where) + ", \"nogoods\": " + std::to_string(u.nogoods) + "}";
+        }
+        out += "]";
+    }
     out += ", \"interpretations\": " + env_list(report.interpretations) + "}";
     return out;
 }

@@ -3,6 +3,9 @@
 //             {"facts": [{"fact": F, "label": [[A, ...], ...]}, ...], "nogoods": [[A, ...], ...],
 //              "interpretations": [[A, ...], ...]}
 //             with facts and assumptions as strings in the rule language's notation, in report order;
+//             when a choice set is too large for its pairwise nogoods to be listed, "nogoods" is
+//             followed by "unlisted_choice_sets": [{"choice_set": [A, ...], "at": "FILE:LINE:COL",
+//             "nogoods": N}, ...] (RunReport::unlisted);
 //             and to_json(Why), the explanation of `qm-atms run --why FACT --json` (docs/RULES.md):
 //             {"fact": F, "status": "holds" | "ruled-out" | "unsupported",
 //              "derivations": [DERIVATION, ...], "nogoods": [DERIVATION, ...]}, DERIVATION being

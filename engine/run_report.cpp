@@ -34,8 +34,10 @@ std::vector<FactId> facts_in_order(const Engine& engine) {
     return out;
 }
 
-EnvText env_text(const Engine& engine, atms::EnvId env) {
-    auto as = engine.atms().env(env).assumptions();
+EnvText env_text(const Engine& engine, atms::EnvId env) { return env_text(engine, engine.atms().env(env)); }
+
+EnvText env_text(const Engine& engine, const atms::Environment& env) {
+    auto as = env.assumptions();
     std::vector<std::pair<std::optional<FactId>, atms::AssumptionId>> keyed;
     for (auto a : as) keyed.emplace_back(engine.fact_of(engine.atms().node_of(a)), a);
     // Facts in fact order; closed-world markers last, by id.
@@ -52,7 +54,23 @@ EnvText env_text(const Engine& engine, atms::EnvId env) {
 RunReport make_report(Engine& engine) {
     RunReport r;
     for (FactId f : facts_in_order(engine)) r.facts.push_back({engine.print(f), sorted_envs(engine, engine.label(f))});
-    r.nogoods = sorted_envs(engine, engine.atms().minimal_nogoods());
+    // Every minimal nogood, but the pairs of a large choice set only as a count.
+    atms::Atms& atms = engine.atms();
+    std::vector<atms::EnvId> nogoods = atms.stated_nogoods();
+    for (std::size_t i = 0; i < engine.choice_sets().size(); ++i) {
+        const std::vector<atms::AssumptionId>& set = engine.choice_sets()[i];
+        if (set.size() <= listed_choice_set_limit) {
+            for (atms::EnvId ng : atms.at_most_one_nogoods(engine.choice_set_constraint(i))) nogoods.push_back(ng);
+            continue;
+        }
+        std::size_t alone = 0;  // members consistent on their own
+        for (atms::AssumptionId a : set) alone += atms.is_consistent(atms.environment({a})) ? 1 : 0;
+        const SourceLocation& at = engine.choice_set_where(i);
+        r.unlisted.push_back({env_text(engine, atms::Environment::of(set)),
+                              at.file + ":" + std::to_string(at.line) + ":" + std::to_string(at.column),
+                              alone * (alone - (alone == 0 ? 0 : 1)) / 2});
+    }
+    r.nogoods = sorted_envs(engine, nogoods);
     for (auto env : engine.interpretations()) r.interpretations.push_back(env_text(engine, env));
     return r;
 }

@@ -125,13 +125,12 @@ Why why(Engine& engine, FactId f) {
     auto envs = support(atms, n, path);
     if (envs.empty()) return w;
     w.status = Why::Status::ruled_out;
-    std::set<atms::EnvId> seen;
-    for (atms::EnvId ng : atms.minimal_nogoods()) {
-        const atms::Environment& nogood = atms.env(ng);
-        bool excludes = std::any_of(envs.begin(), envs.end(), [&](const atms::Environment& e) { return nogood.subset_of(e); });
-        if (excludes && seen.insert(ng).second)
-            w.nogoods.push_back({env_text(engine, ng), steps_of(engine, atms.explain_nogood(ng))});
-    }
+    // The minimal nogoods inside some supporting environment, in EnvId order (asked per
+    // environment: listing every nogood would form every pair of a large choice set).
+    std::set<atms::EnvId> excluding;
+    for (const atms::Environment& e : envs)
+        for (atms::EnvId ng : atms.minimal_nogoods_within(e)) excluding.insert(ng);
+    for (atms::EnvId ng : excluding) w.nogoods.push_back({env_text(engine, ng), steps_of(engine, atms.explain_nogood(ng))});
     return w;
 }
 

@@ -40,9 +40,13 @@ void MinimalFilter::keep_minimal(const BitsetPool& in, BitsetPool& out) {
     // superset of a later one, so kept rows are final and each row is tested once. A duplicate of
     // a kept row is caught by the subset test itself.
     counts_.resize(in.size());
+    sigs_.resize(in.size());
     std::uint32_t largest = 0;
     for (std::uint32_t i = 0; i < in.size(); ++i) {
         counts_[i] = popcount(in[i]);
+        std::uint64_t sig = 0;  // the OR of the row's words: a subset's is a subset of it
+        for (std::uint64_t w : in[i]) sig |= w;
+        sigs_[i] = sig;
         largest = std::max(largest, counts_[i]);
     }
     starts_.assign(largest + 2, 0);
@@ -53,6 +57,7 @@ void MinimalFilter::keep_minimal(const BitsetPool& in, BitsetPool& out) {
     if (by_lowest_.size() < width * word_bits) by_lowest_.resize(width * word_bits);
     for (std::uint32_t bit : touched_) by_lowest_[bit].clear();  // not all: width may be large
     touched_.clear();
+    kept_sigs_.clear();
     for (std::uint32_t i : order_) {
         const auto row = in[i];
         if (counts_[i] == 0) {  // {} is below everything: it is the only minimal set
@@ -65,7 +70,7 @@ void MinimalFilter::keep_minimal(const BitsetPool& in, BitsetPool& out) {
             for (std::uint64_t bits = row[w]; bits != 0 && !subsumed; bits &= bits - 1) {
                 const auto bit = w * word_bits + static_cast<std::size_t>(std::countr_zero(bits));
                 for (std::uint32_t k : by_lowest_[bit])
-                    if (words_subset(out[k], row)) {
+                    if ((kept_sigs_[k] & ~sigs_[i]) == 0 && words_subset(out[k], row)) {
                         subsumed = true;
                         break;
                     }
@@ -77,6 +82,7 @@ void MinimalFilter::keep_minimal(const BitsetPool& in, BitsetPool& out) {
         const auto lowest = w * word_bits + static_cast<std::size_t>(std::countr_zero(row[w]));
         if (by_lowest_[lowest].empty()) touched_.push_back(static_cast<std::uint32_t>(lowest));
         by_lowest_[lowest].push_back(static_cast<std::uint32_t>(out.size()));
+        kept_sigs_.push_back(sigs_[i]);
         out.push(row);
     }
 }

@@ -21,6 +21,8 @@ public:
     [[nodiscard]] std::span<const std::uint64_t> operator[](std::size_t i) const noexcept {
         return {words_.data() + i * width_, width_};
     }
+    // Row i for in-place updates. Pre: i < size().
+    [[nodiscard]] std::uint64_t* row(std::size_t i) noexcept { return words_.data() + i * width_; }
     // Appends a copy of `row` (zero padded) and returns the new row for in-place updates.
     // Pre: row.size() <= width(); row does not point into this pool.
     std::uint64_t* push(std::span<const std::uint64_t> row);
@@ -51,6 +53,8 @@ public:
 private:
     std::vector<std::uint32_t> order_;
     std::vector<std::uint32_t> counts_;
+    std::vector<std::uint64_t> sigs_;       // per row of in: the OR of its words
+    std::vector<std::uint64_t> kept_sigs_;  // per row of out
     std::vector<std::uint32_t> starts_;  // counting sort offsets by size
     std::vector<std::vector<std::uint32_t>> by_lowest_;  // lowest bit -> kept row indices in out
     std::vector<std::uint32_t> touched_;                  // the non-empty buckets of by_lowest_

@@ -10,16 +10,25 @@
 //             clause takes 142 s and leaves labels of 13,000 envs, which any ATMS keeping labels
 //             complete must compute; docs/PERFORMANCE.md);
 //      clauses are given in random order, so labels are revised, not built bottom-up;
-//   2. N-queens as ATMS interpretations: one choice set per row (assumption = column), pairwise
-//      nogoods for attacking placements; the whole run (build the ATMS, assumptions, nogoods,
-//      enumerate and intern all solutions) is timed; then the same with the streaming visitor
-//      (nothing interned); then a plain bitmask backtracking N-queens as the floor;
-//   3. peak memory: each configuration runs once more while the resident set's peak is watched
-//      (peak_growth_kib: how far the run raises RSS above its starting point).
+//   2. N-queens as ATMS interpretations, N = 4 ... 14: one choice set per row (assumption = column),
+//      attacks as pairwise nogoods ("pw") or as one at-most-one constraint per column and diagonal
+//      ("amo"; queens.hpp); timed: the whole run (build the ATMS, enumerate and intern every
+//      solution), the build alone, Atms::interpretations alone on a built ATMS (interned), and
+//      for_each_interpretation alone on a built ATMS (streamed, nothing interned); and a plain
+//      bitmask backtracking N-queens, the floor, in the same run with the same flags. The ratios
+//      are the at-most-one encoding's times over the floor's;
+//   3. interpretations on a base environment (base_queries.hpp): 200 queries of an envisioner's
+//      kind (places of kinematic pairs x motions of objects, on top of a state's facts), each
+//      streamed up to 5,000 interpretations;
+//   4. peak memory: each theory and N-queens configuration runs once more while the resident set's
+//      peak is watched (peak_growth_kib: how far the run raises RSS above its starting point).
 // Times are wall-clock medians (and minima) of several repetitions on one thread.
 // stdout is line buffered, so a run piped into a file or `tee` shows each row when it is done.
-// Usage: atms_bench [--quick]   (--quick: fewer repetitions, smaller sizes, N up to 10)
+// Usage: atms_bench [--quick] [--queens | --theories | --bases]   (--quick: fewer repetitions,
+//        smaller sizes, N up to 10; --queens, --theories, --bases: only that part)
+//        atms_bench --one NAME   one run of one configuration, for callgrind (see run_one)
 #include "atms/atms.hpp"
+#include "base_queries.hpp"
 #include "queens.hpp"
 
 #include <algorithm>
@@ -30,9 +39,13 @@
 #include <optional>
 #include <random>
 #include <malloc.h>
+#include <memory>
+#include <string>
 #include <vector>
 
 using namespace qm::atms;
+using qm::atms::bench::BaseQueries;
+using qm::atms::bench::Encoding;
 using qm::atms::bench::Queens;
 using qm::atms::bench::queens_plain;
 using Clock = std::chrono::steady_clock;
@@ -185,32 +198,45 @@ void theory_row(int reps, F&& build) {
 }
 
 // ---- 2. N-queens on the ATMS -------------------------------------------------------------------
-std::size_t queens_atms(int n) {
-    Queens q(n);
-    return q.atms.interpretations(q.rows).size();
-}
-
-std::size_t queens_streaming(int n) {
-    Queens q(n);
-    return q.atms.for_each_interpretation(q.rows, q.atms.empty_environment(),
-                                          [](const Environment&) { return true; });
-}
-
-}  // namespace
-
-int main(int argc, char** argv) {
-    std::setvbuf(stdout, nullptr, _IOLBF, 0);
-    bool quick = false;
-    for (int i = 1; i < argc; ++i) {
-        if (std::strcmp(argv[i], "--quick") == 0) {
-            quick = true;
-        } else {
-            std::fprintf(stderr, "usage: atms_bench [--quick]\n");
-            return 2;
-        }
+// Wall time of f() alone, after setup() (untimed) builds what it works on: median and minimum.
+template <class Setup, class F>
+Timing time_after(int reps, Setup&& setup, F&& f) {
+    std::vector<double> t;
+    for (int i = 0; i < reps; ++i) {
+        auto state = setup();
+        const auto t0 = Clock::now();
+        f(*state);
+        t.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
     }
-    const int reps = quick ? 3 : 7;
+    std::sort(t.begin(), t.end());
+    return {t[t.size() / 2], t.front()};
+}
 
+struct QueensRow {
+    std::size_t solutions = 0, streamed = 0;
+    Timing whole, build, interpretations, streaming;
+};
+
+// whole: build the ATMS and intern every interpretation; build: assumptions and nogoods (or
+// constraints) only; interpretations: Atms::interpretations (interned) on a built ATMS;
+// streaming: for_each_interpretation (nothing interned) on a built ATMS.
+QueensRow queens_row(int n, Encoding encoding, int reps) {
+    QueensRow row;
+    auto built = [&] { return std::make_unique<Queens>(n, encoding); };
+    row.whole = time_runs(reps, [&] {
+        Queens q(n, encoding);
+        row.solutions = q.atms.interpretations(q.rows).size();
+    });
+    row.build = time_runs(reps, [&] { Queens q(n, encoding); });
+    row.interpretations = time_after(reps, built, [&](Queens& q) { row.solutions = q.atms.interpretations(q.rows).size(); });
+    row.streaming = time_after(reps, built, [&](Queens& q) {
+        row.streamed = q.atms.for_each_interpretation(q.rows, q.atms.empty_environment(), [](const Environment&) { return true; });
+    });
+    return row;
+}
+
+void theory_tables(bool quick) {
+    const int reps = quick ? 3 : 7;
     std::printf("== label propagation, local theories: 8 layers, growing width (median of %d) ==\n", reps);
     print_theory_header();
     for (int width = 100; width <= (quick ? 1600 : 6400); width *= 2)
@@ -220,23 +246,106 @@ int main(int argc, char** argv) {
     print_theory_header();
     for (int s = 1; s <= (quick ? 4 : 5); ++s)
         theory_row(reps, [&] { return deep_theory(42, 20 * s, 100 * s, 200 * s); });
+}
 
-    static const std::size_t expected[] = {0, 1, 0, 0, 2, 10, 4, 40, 92, 352, 724, 2680, 14200};
-    std::printf("\n== N-queens as interpretations (whole run: build + nogoods + enumerate + intern) ==\n");
-    std::printf("%3s %9s %8s %11s %11s %13s %11s %10s %9s\n", "N", "solutions", "nogoods", "atms ms",
-                "atms min", "streaming ms", "plain ms", "target ms", "peak KiB");
-    for (int n = 4; n <= (quick ? 10 : 12); ++n) {
-        const int r = quick ? 3 : (n <= 10 ? 9 : 5);
-        std::size_t got = 0, streamed = 0, plain = 0;
-        const Timing t_atms = time_runs(r, [&] { got = queens_atms(n); });
-        const Timing t_stream = time_runs(r, [&] { streamed = queens_streaming(n); });
+const std::size_t queens_solutions[] = {0, 1, 0, 0, 2, 10, 4, 40, 92, 352, 724, 2680, 14200, 73712, 365596};
+
+void queens_table(bool quick) {
+    std::printf("\n== N-queens as interpretations: ms, median of runs (plain: bitmask backtracking, the floor) ==\n");
+    std::printf("%3s %9s %9s | %9s %9s %9s %9s | %9s %9s %9s %9s | %8s %8s %8s | %9s\n", "N", "solutions", "plain",
+                "pw whole", "pw build", "pw interp", "pw stream", "amo whole", "amo build", "amo inter", "amo strm",
+                "whole/pl", "inter/pl", "strm/pl", "peak KiB");
+    for (int n = 4; n <= (quick ? 10 : 14); ++n) {
+        const int r = quick ? 3 : (n <= 10 ? 9 : n <= 12 ? 5 : 3);
+        const std::size_t expected = queens_solutions[n];
+        std::size_t plain = 0;
         const Timing t_plain = time_runs(r, [&] { plain = queens_plain(n, 0, 0, 0, 0); });
-        const long peak = peak_growth_kib([&] { (void)queens_atms(n); });
-        const std::size_t nogoods = Queens(n).atms.minimal_nogoods().size();
-        const char* target = n == 8 ? "5" : n == 10 ? "100" : n == 12 ? "5000" : "";
-        std::printf("%3d %9zu %8zu %11.3f %11.3f %13.3f %11.3f %10s %9ld%s\n", n, got, nogoods, t_atms.median_ms,
-                    t_atms.min_ms, t_stream.median_ms, t_plain.median_ms, target, peak,
-                    got == expected[n] && streamed == expected[n] && plain == expected[n] ? "" : "  WRONG COUNT");
+        const QueensRow pw = queens_row(n, Encoding::pairwise, r);
+        const QueensRow amo = queens_row(n, Encoding::at_most_one, r);
+        const long peak = peak_growth_kib([&] {
+            Queens q(n, Encoding::at_most_one);
+            (void)q.atms.interpretations(q.rows).size();
+        });
+        const bool right = plain == expected && amo.solutions == expected && amo.streamed == expected &&
+                           pw.solutions == expected && pw.streamed == expected;
+        std::printf("%3d %9zu %9.3f | %9.3f %9.3f %9.3f %9.3f | %9.3f %9.3f %9.3f %9.3f | %8.1f %8.1f %8.1f | %9ld%s\n", n,
+                    plain, t_plain.median_ms, pw.whole.median_ms, pw.build.median_ms, pw.interpretations.median_ms,
+                    pw.streaming.median_ms, amo.whole.median_ms, amo.build.median_ms, amo.interpretations.median_ms,
+                    amo.streaming.median_ms, amo.whole.median_ms / t_plain.median_ms,
+                    amo.interpretations.median_ms / t_plain.median_ms, amo.streaming.median_ms / t_plain.median_ms, peak,
+                    right ? "" : "  WRONG COUNT");
     }
+}
+
+// Interpretations on a base environment (base_queries.hpp): 200 queries on one theory, each
+// streamed up to 5,000 interpretations; the time of all of them, and per query.
+void base_table(bool quick) {
+    const int reps = quick ? 3 : 5;
+    std::printf("\n== interpretations on a base environment: 200 queries, each up to 5,000 (median of %d) ==\n", reps);
+    std::printf("%6s %8s %12s %10s %12s %12s\n", "pairs", "objects", "build ms", "visited", "queries ms", "us/query");
+    for (auto [pairs, objects] : {std::pair{4, 2}, std::pair{8, 4}, std::pair{16, 8}}) {
+        if (quick && pairs > 8) break;
+        std::size_t visited = 0;
+        std::unique_ptr<BaseQueries> q;
+        const Timing build = time_runs(reps, [&] { q = std::make_unique<BaseQueries>(11, pairs, objects, 200); });
+        const Timing t = time_runs(reps, [&] { visited = q->run(5000); });
+        std::printf("%6d %8d %12.2f %10zu %12.2f %12.1f\n", pairs, objects, build.median_ms, visited, t.median_ms,
+                    1e3 * t.median_ms / 200.0);
+    }
+}
+
+// One run of one configuration, for instruction counts (valgrind --tool=callgrind atms_bench --one
+// NAME): queens-whole-pairwise-N, queens-whole-at-most-one-N (build + interpretations, interned),
+// queens-plain-N, bases-P (base_table's queries, P pairs), local-W, deep-S. Prints its count; false
+// if NAME is not one of these.
+bool run_one(const std::string& name) {
+    auto number = [&](const std::string& prefix) -> int {
+        return name.rfind(prefix, 0) == 0 ? std::atoi(name.c_str() + prefix.size()) : 0;
+    };
+    if (int n = number("queens-whole-pairwise-"); n >= 1 && n <= 14) {
+        Queens q(n, Encoding::pairwise);
+        std::printf("%zu\n", q.atms.interpretations(q.rows).size());
+    } else if (int m = number("queens-whole-at-most-one-"); m >= 1 && m <= 14) {
+        Queens q(m, Encoding::at_most_one);
+        std::printf("%zu\n", q.atms.interpretations(q.rows).size());
+    } else if (int p = number("queens-plain-"); p >= 1 && p <= 14) {
+        std::printf("%zu\n", queens_plain(p, 0, 0, 0, 0));
+    } else if (int b = number("bases-"); b >= 1) {  // bases-P: P pairs, P / 2 objects
+        const BaseQueries q(11, b, b / 2, 200);
+        std::printf("%zu\n", q.run(5000));
+    } else if (int w = number("local-"); w >= 1) {
+        std::printf("%zu\n", local_theory(7, w).envs);
+    } else if (int d = number("deep-"); d >= 1) {
+        std::printf("%zu\n", deep_theory(42, 20 * d, 100 * d, 200 * d).envs);
+    } else {
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);
+    bool quick = false, theories = true, queens = true, bases = true;
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--quick") == 0) {
+            quick = true;
+        } else if (std::strcmp(argv[i], "--queens") == 0) {
+            theories = bases = false;
+        } else if (std::strcmp(argv[i], "--theories") == 0) {
+            queens = bases = false;
+        } else if (std::strcmp(argv[i], "--bases") == 0) {
+            theories = queens = false;
+        } else if (std::strcmp(argv[i], "--one") == 0 && i + 1 < argc) {
+            return run_one(argv[i + 1]) ? 0 : 2;
+        } else {
+            std::fprintf(stderr, "usage: atms_bench [--quick] [--queens | --theories | --bases] | --one NAME\n");
+            return 2;
+        }
+    }
+    if (theories) theory_tables(quick);
+    if (queens) queens_table(quick);
+    if (bases) base_table(quick);
     return 0;
 }

@@ -86,3 +86,66 @@ TEST_CASE("atms/nogood_database: adding a subsumed nogood is a clear error") {
     CHECK_THROWS_AS(db.add(EnvId{1}, Environment::of(std::vector{AssumptionId{1}, AssumptionId{2}})),
                     qm::InternalError);
 }
+
+TEST_CASE("atms/nogood_database: with at-most-one constraints, every query agrees with brute force") {
+    std::mt19937 rng(23);
+    auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+    for (int round = 0; round < 120; ++round) {
+        CAPTURE(round);
+        const std::uint32_t universe = round % 3 == 0 ? 10 : round % 3 == 1 ? 130 : 700;
+        NogoodDatabase db;
+        std::vector<Environment> added;       // stated nogoods, in order (index = EnvId)
+        std::vector<Environment> constraints;  // member sets
+        auto two_of_one = [&](const Environment& e) {
+            return std::any_of(constraints.begin(), constraints.end(), [&](const Environment& c) {
+                std::uint32_t n = 0;
+                for (AssumptionId a : c.assumptions()) n += e.contains(a) ? 1 : 0;
+                return n >= 2;
+            });
+        };
+        auto inconsistent = [&](const Environment& e) {
+            return two_of_one(e) ||
+                   std::any_of(added.begin(), added.end(), [&](const Environment& g) { return g.subset_of(e); });
+        };
+        for (int step = 0; step < 20; ++step) {
+            if (pick(0, 3) == 0) {
+                const Environment members = random_env(rng, 9, universe);
+                const auto c = db.add_at_most_one(members.assumptions());
+                REQUIRE(c.has_value() == (members.size() >= 2));
+                if (c) constraints.push_back(members);
+            } else {
+                const Environment n = random_env(rng, 3, universe);
+                REQUIRE(db.subsumes(n) == inconsistent(n));
+                if (db.subsumes(n)) continue;
+                db.add(EnvId{static_cast<std::uint32_t>(added.size())}, n);
+                added.push_back(n);
+            }
+            // Live stated nogoods: added ones with no proper subset among the added and not
+            // holding two members of one constraint.
+            std::vector<EnvId> live;
+            for (std::uint32_t k = 0; k < added.size(); ++k)
+                if (!two_of_one(added[k]) && std::none_of(added.begin(), added.end(), [&](const Environment& g) {
+                        return !(g == added[k]) && g.subset_of(added[k]);
+                    }))
+                    live.push_back(EnvId{k});
+            REQUIRE(db.minimal() == live);
+            for (int q = 0; q < 12; ++q) {
+                const Environment e = random_env(rng, 6, universe);
+                const bool bad = inconsistent(e);
+                CHECK(db.subsumes(e) == bad);
+                CHECK(db.subsumes_words(dense(e)) == bad);
+                std::vector<EnvId> inside;
+                for (EnvId id : live)
+                    if (added[id.value].subset_of(e)) inside.push_back(id);
+                CHECK(db.within(e) == inside);
+                // subsumes_with and excludes under their precondition: e minus a consistent.
+                for (AssumptionId a : e.assumptions()) {
+                    const Environment rest = e.without(a);
+                    if (inconsistent(rest)) continue;
+                    CHECK(db.subsumes_with(dense(e), a) == bad);
+                    CHECK(db.excludes(rest, a) == bad);
+                }
+            }
+        }
+    }
+}

@@ -11,6 +11,7 @@
 #pragma once
 #include "atms/atms.hpp"
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -29,6 +30,8 @@ struct TheoryShape {
     bool interleave = false;  // false: all nodes first, then one clause per step; true: nodes and
                               // clauses in random order (starting from one assumption, one node)
     int max_padding = 0;      // before each tracked assumption, 0..max_padding unused ones
+    bool justify_assumptions = true;  // false: a clause that would conclude an assumption node
+                                      // concludes a derived node instead (same random draws)
 };
 
 struct RandomTheory {
@@ -74,7 +77,7 @@ struct RandomTheory {
         Clause clause;
         const int roll = pick(0, 99);
         if (roll < 15) clause.consequent = atms.contradiction();
-        else if (roll < 20) clause.consequent = any_of(assumptions);
+        else if (roll < 20 && shape_.justify_assumptions) clause.consequent = any_of(assumptions);
         else clause.consequent = any_of(derived);
         std::vector<NodeId> sources = assumptions;
         sources.insert(sources.end(), premises.begin(), premises.end());
@@ -96,6 +99,7 @@ struct RandomTheory {
         }
         return m;
     }
+    [[nodiscard]] const std::vector<AssumptionId>& tracked() const noexcept { return tracked_; }
     [[nodiscard]] std::vector<std::uint32_t> masks_of(const std::vector<EnvId>& envs) const {
         std::vector<std::uint32_t> out;
         for (EnvId e : envs) out.push_back(mask_of(atms.env(e)));
@@ -127,7 +131,8 @@ private:
     int clauses_ = 0;
 };
 
-// Brute-force oracle over the theory as it stands.
+// Brute-force oracle over the theory as it stands, and over at-most-one constraints given as masks
+// of tracked assumptions (an environment holding two members of one is inconsistent).
 struct Oracle {
     int n;                                       // number of tracked assumptions
     std::size_t nodes;
@@ -138,7 +143,7 @@ struct Oracle {
         return derived_[mask * nodes + node.value] != 0;
     }
 
-    explicit Oracle(const RandomTheory& t)
+    explicit Oracle(const RandomTheory& t, const std::vector<std::uint32_t>& at_most_one = {})
         : n(static_cast<int>(t.assumptions.size())), nodes(t.atms.node_count()) {
         const std::uint32_t masks = 1U << n;
         derived_.assign(masks * nodes, 0);
@@ -159,7 +164,9 @@ struct Oracle {
                     }
                 }
             }
-            inconsistent[m] = d[t.atms.contradiction().value] != 0;
+            inconsistent[m] = d[t.atms.contradiction().value] != 0 ||
+                              std::any_of(at_most_one.begin(), at_most_one.end(),
+                                          [&](std::uint32_t g) { return std::popcount(m & g) >= 2; });
         }
     }
 

@@ -2,13 +2,19 @@
 // end to end from rule text: a choice set ranges over its assumptions only (a fact derived
 // otherwise holds by that derivation, in every interpretation); an empty choice set is false, so
 // the firing's antecedents become a nogood that explanations show; the same set declared twice is
-// one set. (Overlapping sets are a located error: golden case errors/choice_set_overlap.)
+// one set; the set is one ATMS at-most-one constraint whose pairs the report lists up to 64 members
+// (a larger set as one summary line, also in JSON) and whose pair nogoods explain as the pairwise
+// nogoods did, also in a set of 5,000. (Overlapping sets are a located error: golden case
+// errors/choice_set_overlap.)
 #include "engine/engine.hpp"
+#include "engine/json_writer.hpp"
+#include "engine/report_printer.hpp"
 #include "engine/rule_compiler.hpp"
 #include "engine/rule_spec_reader.hpp"
 #include "engine/run_report.hpp"
 #include "engine/why.hpp"
 #include <doctest/doctest.h>
+#include <algorithm>
 #include <memory>
 
 using namespace qm::engine;
@@ -80,4 +86,55 @@ TEST_CASE("engine/engine: the same choice set declared by two firings or two rul
                  "rule d when (o a) then [exactly one ?m in {off on}: assume (mode ?m)]\n");
     CHECK(e->choice_sets().size() == 1);
     CHECK(e->interpretations().size() == 2);
+}
+
+namespace {
+std::string range_set(int members) {
+    return "fact (o a)\nrule c when (o ?x) then [exactly one ?k in (range 1 " + std::to_string(members) +
+           "): assume (k ?k)]\n";
+}
+}  // namespace
+
+TEST_CASE("engine/engine: a choice set is one ATMS constraint, whose pairs the report lists up to 64 members") {
+    // 64 members: every pair listed, as when each pair was a nogood of its own.
+    auto small = run(range_set(64));
+    CHECK(small->atms().justifications(small->atms().contradiction()).empty());
+    const RunReport r = make_report(*small);
+    CHECK(r.nogoods.size() == 64 * 63 / 2);
+    CHECK(std::find(r.nogoods.begin(), r.nogoods.end(), EnvText{"(k 1)", "(k 64)"}) != r.nogoods.end());
+    CHECK(r.unlisted.empty());
+    CHECK(r.interpretations.size() == 64);
+    CHECK(to_json(r).find("unlisted_choice_sets") == std::string::npos);
+    // 65 members, one of them ruled out by a rule: summarised, with the pairs of the other 64.
+    auto large = run(range_set(65) + "rule no when (k 7) then false\n");
+    const RunReport s = make_report(*large);
+    CHECK(s.nogoods == std::vector<EnvText>{{"(k 7)"}});
+    REQUIRE(s.unlisted.size() == 1);
+    CHECK(s.unlisted[0].members.size() == 65);
+    CHECK(s.unlisted[0].members.front() == "(k 1)");
+    CHECK(s.unlisted[0].members.back() == "(k 65)");
+    CHECK(s.unlisted[0].where == "c.rules:2:25");
+    CHECK(s.unlisted[0].nogoods == 64 * 63 / 2);
+    CHECK(s.interpretations.size() == 64);
+    CHECK(print_report(s).find("  any two of the 65 assumptions {(k 1), (k 2), (k 3), ..., (k 65)} of the choice set at "
+                               "c.rules:2:25 (2016 nogoods, not listed)\n") != std::string::npos);
+    CHECK(to_json(s).find(", \"unlisted_choice_sets\": [{\"choice_set\": [\"(k 1)\", \"(k 2)\", ") != std::string::npos);
+    CHECK(to_json(s).find("\"at\": \"c.rules:2:25\", \"nogoods\": 2016}], \"interpretations\": ") != std::string::npos);
+}
+
+TEST_CASE("engine/engine: a fact needing two members of a choice set is ruled out by their pair, explained as before") {
+    for (int members : {3, 5000}) {
+        CAPTURE(members);
+        auto e = run(range_set(members) + "rule both when (k 1) (k 3) then (both)\n");
+        const Why w = why(*e, fact(*e, "both", {}));
+        REQUIRE(w.status == Why::Status::ruled_out);
+        REQUIRE(w.nogoods.size() == 1);
+        CHECK(w.nogoods[0].environment == EnvText{"(k 1)", "(k 3)"});
+        REQUIRE(w.nogoods[0].steps.size() == 1);
+        const WhyStep& step = w.nogoods[0].steps[0];
+        CHECK(step.consequent == "false");
+        CHECK(step.informant == "rule c at c.rules:2");
+        CHECK(step.binding == std::vector<std::string>{"?x = a"});
+        CHECK(step.antecedents == std::vector<std::string>{"assume (k 1)", "assume (k 3)"});
+    }
 }
