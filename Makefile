@@ -1,22 +1,33 @@
 # Thin wrapper around CMake so the README's two commands stay short.
-#   make run   install dependencies, build, analyse the bundled scene
-#   make test  install dependencies, build, run every test
+#   make run   install what the executable needs, build only qm-atms, analyse the bundled scene
+#   make test  install every dependency, build everything (tests, benchmarks), run every test
+# `make run` builds the one target the first answer needs (the laws in rules/ are read at run time,
+# nothing to build); `make test` then builds the rest in the same tree, reusing what run built.
 BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: deps configure build run test clean
+.PHONY: deps deps-run configure configure-run build build-run run test clean
 
 deps:
 	bash cmake/install-deps.sh
 
+deps-run:
+	bash cmake/install-deps.sh run
+
 configure: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
+
+configure-run: deps-run
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
 
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
-run: build
+build-run: configure-run
+	cmake --build $(BUILD) -j $(JOBS) --target qm-atms
+
+run: build-run
 	./$(BUILD)/cli/qm-atms scenarios/alex/block.def
 
 test: build

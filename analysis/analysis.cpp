@@ -17,19 +17,11 @@ using engine::ValueId;
 
 namespace {
 
-// Every *.rules file directly in dir, in name order.
-std::optional<engine::LoadedProgram> load_rules(const std::filesystem::path& dir, Diagnostics& diagnostics) {
-    std::error_code ec;
-    std::vector<std::string> files;
-    if (std::filesystem::is_directory(dir, ec))
-        for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
-            if (entry.is_regular_file() && entry.path().extension() == ".rules") files.push_back(entry.path().string());
-    if (files.empty()) {
-        diagnostics.error({dir.string(), 1, 1}, "expected a folder of .rules files (the laws), but found none here");
-        return std::nullopt;
-    }
-    std::sort(files.begin(), files.end());
-    return engine::load_programs(files, diagnostics);
+// Every *.rules file directly in dir, in name order, checked as laws for a scene of this many dimensions.
+std::optional<engine::LoadedProgram> load_rules(const std::filesystem::path& dir, const Scene& scene, Diagnostics& diagnostics) {
+    const std::vector<std::string> files = law_files(dir, diagnostics);
+    if (files.empty()) return std::nullopt;
+    return engine::load_programs(files, diagnostics, law_check_options(scene.translation_arity(), "scene '" + scene.name + "'"));
 }
 
 // Law 1's choice sets, by object: which assumption stands for which motion.
@@ -65,6 +57,31 @@ std::optional<IdVector<ObjectId, ObjectChoices>> read_choices(const Scene& scene
 }
 
 }  // namespace
+
+std::vector<std::string> law_files(const std::filesystem::path& dir, Diagnostics& diagnostics) {
+    std::error_code ec;
+    std::vector<std::string> files;
+    if (std::filesystem::is_directory(dir, ec))
+        for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+            if (entry.is_regular_file() && entry.path().extension() == ".rules") files.push_back(entry.path().string());
+    if (files.empty())
+        diagnostics.error({dir.string(), 1, 1}, "expected a folder of .rules files (the laws), but found none here");
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+engine::LawCheckOptions law_check_options(std::optional<std::size_t> dimensions, const std::string& what) {
+    engine::LawCheckOptions o;
+    o.require_citations = true;
+    if (!dimensions) return o;
+    // Translations have one sign per dimension (Def 1), rotations one in the plane and three in
+    // space (Def 4, Table 2.1): scene::Scene::translation_arity()/rotation_arity().
+    const std::size_t rotation = *dimensions == 2 ? 1 : 3;
+    o.direction_arities = {*dimensions, rotation};
+    o.arity_context = what + " is " + std::to_string(*dimensions) + "-D: its translations have " +
+                      std::to_string(*dimensions) + " signs and its rotations " + std::to_string(rotation);
+    return o;
+}
 
 bool Analysis::State::holds(std::string_view predicate, std::span<const ValueId> args, atms::EnvId env) {
     auto f = facts->find(predicate, args);
@@ -111,17 +128,30 @@ std::vector<atms::NodeId> Analysis::State::nearness_nodes(ObjectId o) {
 std::vector<std::pair<ObjectId, ObjectId>> Analysis::State::pairs(std::size_t s, atms::EnvId env) const {
     std::vector<std::pair<ObjectId, ObjectId>> out;
     const atms::Environment& members = engine->atms().env(env);
-    for (const SceneItem* item : facts->items(s))
-        if (item->kind == SceneItem::Kind::contact && (!item->assumption || members.contains(*item->assumption)))
-            out.emplace_back(scene.owner(item->first), scene.owner(item->second));
+    if (facts->granularity() == Granularity::situation) {
+        for (const SceneItem* item : facts->items(s))
+            if (item->kind == SceneItem::Kind::contact) out.emplace_back(scene.owner(item->first), scene.owner(item->second));
+    } else {
+        // Every contact the environment holds: the situation's, less a what-if's taken away, plus
+        // a what-if's added from other situations.
+        for (const SceneItem& item : facts->all_items())
+            if (item.kind == SceneItem::Kind::contact && members.contains(*item.assumption))
+                out.emplace_back(scene.owner(item.first), scene.owner(item.second));
+    }
     for (const Linkage& l : scene.linkages) out.emplace_back(l.first, l.second);
     return out;
 }
 
 std::optional<engine::ContextRun> Analysis::State::run(std::size_t s, std::span<const QueryFact> without,
-                                                       Diagnostics& diagnostics) {
+                                                       Diagnostics& diagnostics, std::span<const atms::AssumptionId> added) {
     const std::size_t before = diagnostics.size();
-    engine::ContextRun r = engine->run_in_context(facts->context(s, without), diagnostics);
+    atms::EnvId context = facts->context(s, without);
+    if (!added.empty()) {
+        std::vector<atms::AssumptionId> members = engine->atms().env(context).assumptions();
+        members.insert(members.end(), added.begin(), added.end());
+        context = engine->atms().environment(members);
+    }
+    engine::ContextRun r = engine->run_in_context(context, diagnostics);
     for (std::size_t i = before; i < diagnostics.size(); ++i)
         if (diagnostics.items()[i].severity == Severity::error) return std::nullopt;
     return r;
@@ -132,7 +162,9 @@ std::optional<SituationResult> Analysis::State::solve(std::size_t s, std::span<c
     auto r = run(s, without, diagnostics);
     if (!r) return std::nullopt;
     refresh_branches();  // a smaller situation may branch where the whole did not
-    return read(s, r->environment);
+    SituationResult result = read(s, r->environment);
+    add_kinematic(result, s, without);
+    return result;
 }
 
 void Analysis::State::refresh_branches() {
@@ -226,11 +258,14 @@ std::unique_ptr<Analysis::State> build_state(const Scene& scene, const AnalysisO
         state->chain_branches.emplace_back();
         state->results.push_back(state->read(s, state->runs[s - 1].environment, &state->chain_branches.back()));
     }
+    // After every situation is read: the kinematic sets run contexts of their own.
+    for (std::size_t s = 1; s <= state->scene.situations.size(); ++s)
+        state->add_kinematic(state->results[s - 1], s, options.without);
     return state;
 }
 
 std::optional<Analysis> analyse(const Scene& scene, const AnalysisOptions& options, Diagnostics& diagnostics) {
-    auto program = load_rules(options.rules_directory, diagnostics);
+    auto program = load_rules(options.rules_directory, scene, diagnostics);
     if (!program) return std::nullopt;
     if (scene.situations.empty()) {
         // Nothing to analyse, but the laws are still read and checked against the scene (Law 1's
@@ -307,8 +342,10 @@ std::optional<SituationResult> Analysis::with_given(std::size_t situation, std::
 
 std::unique_ptr<Analysis::State> Analysis::State::restricted(std::size_t s, std::span<const QueryFact> without,
                                                              std::span<const Motion> given, Diagnostics& diagnostics,
-                                                             std::optional<Granularity> granularity) const {
-    const Scene changed = scene::what_if_scene(scene, s, without, given);
+                                                             std::optional<Granularity> granularity,
+                                                             const scene::Additions* added) const {
+    Scene changed = scene::what_if_scene(scene, s, without, given);
+    if (added) (void)scene::add_to_scene(changed, *added, 1);
     AnalysisOptions o = options;
     std::erase_if(o.given, [&](const Motion& m) { return scene::replaced_by(m, given); });
     o.without.clear();
@@ -316,7 +353,8 @@ std::unique_ptr<Analysis::State> Analysis::State::restricted(std::size_t s, std:
     return build_state(changed, o, program, diagnostics);
 }
 
-std::uint64_t SituationResult::combination_count() const {
+namespace {
+std::uint64_t product(const std::vector<ChainMotions>& chains) {
     std::uint64_t total = 1;
     for (const ChainMotions& c : chains) {
         const std::uint64_t n = c.combinations.size();
@@ -326,9 +364,17 @@ std::uint64_t SituationResult::combination_count() const {
     }
     return total;
 }
+}  // namespace
+
+std::uint64_t SituationResult::combination_count() const { return product(chains); }
+std::uint64_t SituationResult::kinematic_count() const { return product(kinematic); }
 
 void SituationResult::for_each_combination(const std::function<bool(const SceneMotion&)>& f) const {
-    if (combination_count() == 0) return;
+    analysis::for_each_combination(chains, f);
+}
+
+void for_each_combination(const std::vector<ChainMotions>& chains, const std::function<bool(const SceneMotion&)>& f) {
+    if (product(chains) == 0) return;
     std::size_t objects = 0;
     for (const ChainMotions& c : chains) objects += c.objects.size();
     SceneMotion motion;

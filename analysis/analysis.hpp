@@ -17,7 +17,9 @@
 #pragma once
 #include "analysis/fwd.hpp"
 #include "analysis/granularity.hpp"
+#include "engine/law_check.hpp"
 #include "scene/scene.hpp"
+#include "scene/what_if.hpp"
 #include "qm/diagnostics.hpp"
 #include "qm/id.hpp"
 #include <cstdint>
@@ -39,6 +41,11 @@ struct AnalysisOptions {
     // Empty: `item` when every situation has at most auto_item_limit items, else `situation`.
     std::optional<Granularity> granularity;
     static constexpr std::size_t auto_item_limit = 64;
+    // `--kinematic`: enumerate the kinematically consistent combinations up to combination_limit (to
+    // list them); otherwise they are only counted, up to kinematic_count_cap, and not at all in a
+    // scene analysed one assumption per situation (docs/ANALYSIS.md "Kinematic and selected").
+    bool kinematic = false;
+    static constexpr std::size_t kinematic_count_cap = 1000;
 };
 
 // Free directions of one object (zero included), canonical order.
@@ -70,13 +77,23 @@ struct SituationResult {
     bool stable = false;                   // every consistent combination is all-zero (and one exists)
     bool complete = true;                  // false: some chain's enumeration stopped at the limit
     std::vector<std::string> notes;        // e.g. which part of a what-if answer was recomputed
+    // The kinematically consistent combinations (Figure 7.14's consistent combinations: blocking,
+    // pushing, linkages and given motions alone, with the forces taken away), per kinematic chain;
+    // `chains` holds those the forces select among them.
+    std::vector<ChainMotions> kinematic;
+    bool kinematic_complete = true;        // false: some chain's enumeration stopped (cap or --limit)
+    bool kinematic_computed = true;        // false: not computed (see AnalysisOptions::kinematic)
 
     // Combinations of the whole scene: the product over chains (saturating at UINT64_MAX).
     [[nodiscard]] std::uint64_t combination_count() const;
+    [[nodiscard]] std::uint64_t kinematic_count() const;  // the same over `kinematic`
     // Calls f for every combination of the whole scene in canonical order, without storing the
     // product; stops early when f returns false.
     void for_each_combination(const std::function<bool(const SceneMotion&)>& f) const;
 };
+
+// As SituationResult::for_each_combination, over any list of chains (e.g. its `kinematic`).
+void for_each_combination(const std::vector<ChainMotions>& chains, const std::function<bool(const SceneMotion&)>& f);
 
 // A derivation tree: how a fact follows from scene premises and assumptions, one law at a time.
 struct Derivation {
@@ -130,6 +147,12 @@ public:
     // (Definition 25). One located warning each, in the situation's order.
     // Pre (QM_REQUIRE): 1 <= situation <= situations().size().
     [[nodiscard]] std::vector<Diagnostic> inert_contacts(std::size_t situation);
+    // The situation with contacts or forces added (`with`; docs/ANALYSIS.md "What-if: reuse and
+    // recomputation"): from the labels already computed when every added item is an assumption of
+    // the scene already (a contact or force of another situation), else analysed afresh; a note
+    // says which. Pre (QM_REQUIRE): 1 <= situation <= situations().size().
+    [[nodiscard]] std::optional<SituationResult> what_if_with(std::size_t situation, const scene::Additions& added,
+                                                              Diagnostics& diagnostics);
     // The situation with extra current motions given (Figure 7.18).
     [[nodiscard]] std::optional<SituationResult> with_given(std::size_t situation, std::span<const Motion> given,
                                                             Diagnostics& diagnostics);
@@ -143,6 +166,15 @@ private:
 };
 
 // Loads the rules and analyses every situation. nullopt when the rules do not load (diagnostics say why).
+// Warnings about the rules (engine/law_check.hpp, engine/predicate_check.hpp) go into diagnostics
+// beside an analysis that succeeds.
 [[nodiscard]] std::optional<Analysis> analyse(const Scene& scene, const AnalysisOptions& options, Diagnostics& diagnostics);
+
+// The law files of a rules folder: every *.rules file directly in it, in name order (an error in
+// diagnostics, and nothing, when there is none).
+[[nodiscard]] std::vector<std::string> law_files(const std::filesystem::path& dir, Diagnostics& diagnostics);
+// How the laws are checked for a scene of this many dimensions (none: no arity check), `what` naming
+// the scene in the warning: citations required, direction literals of its arities.
+[[nodiscard]] engine::LawCheckOptions law_check_options(std::optional<std::size_t> dimensions, const std::string& what);
 
 }  // namespace qm::analysis

@@ -109,6 +109,33 @@ ChainOutcome solve_chain(atms::Atms& atms, std::span<const ObjectChoices> chain,
     return out;
 }
 
+ChainOutcome consistent_combinations(atms::Atms& atms, std::span<const ObjectChoices> chain, atms::EnvId base,
+                                     std::size_t limit) {
+    std::vector<std::vector<atms::AssumptionId>> sets;
+    ChainOutcome out;
+    for (const ObjectChoices& c : chain) {
+        sets.push_back(c.trans);
+        sets.push_back(c.rot);
+        out.motions.objects.push_back(c.object);
+    }
+    atms.for_each_interpretation(sets, base, [&](const atms::Environment& env) {
+        if (out.motions.combinations.size() >= limit) {
+            out.truncated = true;
+            return false;
+        }
+        const atms::Environment full = join(env, atms.env(base));
+        std::vector<ObjectMotion> combination;
+        combination.reserve(chain.size());
+        for (const ObjectChoices& c : chain)
+            combination.push_back({c.trans_dirs[picked(full, c.trans)], c.rot_dirs[picked(full, c.rot)]});
+        out.motions.combinations.push_back(std::move(combination));
+        return true;
+    });
+    out.consistent = out.motions.combinations.size();
+    std::sort(out.motions.combinations.begin(), out.motions.combinations.end(), combination_less);
+    return out;
+}
+
 bool combination_less(const std::vector<ObjectMotion>& a, const std::vector<ObjectMotion>& b) {
     for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) {
         if (a[i].translation != b[i].translation) return canonical_less(a[i].translation, b[i].translation);

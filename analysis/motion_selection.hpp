@@ -37,6 +37,12 @@ struct ChainOutcome {
     bool truncated = false;       // enumeration stopped at the limit
 };
 
+// Every consistent combination of the chain's motions over base (its Law 1 choice sets' interpretations,
+// no preference): the kinematically consistent combinations of Figure 7.14 when base holds no force.
+// Stops after limit (truncated). Pre: every assumption was issued by atms.
+[[nodiscard]] ChainOutcome consistent_combinations(atms::Atms& atms, std::span<const ObjectChoices> chain, atms::EnvId base,
+                                                   std::size_t limit);
+
 // Canonical order of combinations: object by object, translation then rotation, + before 0 before -.
 [[nodiscard]] bool combination_less(const std::vector<ObjectMotion>& a, const std::vector<ObjectMotion>& b);
 

@@ -66,20 +66,52 @@ void print_freedom(std::ostream& os, const Scene& scene, const SituationResult& 
             os << "    Rotational-Freedom (" << scene.objects[ObjectId{i}].name << ' ' << thesis_text(d) << ")\n";
 }
 
-void print_motions(std::ostream& os, const Scene& scene, const SituationResult& r) {
-    const std::uint64_t total = r.combination_count();
-    os << "  Motions: " << (r.complete ? "" : "at least ")
-       << (total == UINT64_MAX ? std::string("more than 2^64 combinations") : plural(total, "consistent combination"));
+namespace {
+
+std::string count_text(std::uint64_t n, bool complete, const char* what) {
+    return (complete ? "" : "at least ") +
+           (n == UINT64_MAX ? std::string("more than 2^64 ") + what + "s" : plural(n, what));
+}
+
+// The heading names the set listed, in the thesis' words (Figure 7.14: "consistent combinations of
+// motions"; section 6.2: the forces select among them), and counts the other set.
+void print_motions_heading(std::ostream& os, const SituationResult& r, MotionSet shown) {
+    const std::uint64_t selected = r.combination_count();
+    const std::uint64_t kinematic = r.kinematic_count();
+    if (shown == MotionSet::kinematic && !r.kinematic_computed) {
+        os << "  Motions: the kinematically consistent combinations are not computed in a scene this large "
+              "(start with --kinematic to compute them)";
+        return;
+    }
+    if (shown == MotionSet::kinematic) {
+        os << "  Motions: " << count_text(kinematic, r.kinematic_complete, "kinematically consistent combination")
+           << " (blocking, pushing and given motions alone, before the forces choose; the forces select "
+           << count_text(selected, r.complete, "combination") << ")";
+        if (!r.kinematic_complete) os << ", the first shown (enumeration stopped at --limit)";
+        return;
+    }
+    os << "  Motions: " << count_text(selected, r.complete, "consistent combination");
+    if (!r.kinematic_computed)
+        os << " selected by the forces (the kinematically consistent ones are not counted in a scene this large; "
+              "--kinematic counts and lists them)";
+    else if (r.complete && r.kinematic_complete && kinematic == selected)
+        os << " (every kinematically consistent one: the forces rule none out)";
+    else
+        os << " selected by the forces, of " << count_text(kinematic, r.kinematic_complete, "kinematically consistent combination")
+           << " (--kinematic lists them)";
     if (!r.complete) os << ", the first shown (enumeration stopped at --limit)";
-    if (r.chains.size() > 1) {
-        os << " (" << r.chains.size() << " kinematic chains, solved separately:";
-        for (std::size_t c = 0; c < r.chains.size(); ++c) os << (c ? " x " : " ") << r.chains[c].combinations.size();
+}
+
+void print_chains(std::ostream& os, const Scene& scene, const std::vector<ChainMotions>& chains) {
+    if (chains.size() > 1) {
+        os << " (" << chains.size() << " kinematic chains, solved separately:";
+        for (std::size_t c = 0; c < chains.size(); ++c) os << (c ? " x " : " ") << chains[c].combinations.size();
         os << ")";
     }
     os << "\n";
-    for (const ChainMotions& chain : r.chains) {
+    for (const ChainMotions& chain : chains) {
         std::string indent = "    ";
-        if (r.chains.size() > 1) {
+        if (chains.size() > 1) {
             os << "    Chain (";
             for (std::size_t k = 0; k < chain.objects.size(); ++k) os << (k ? " " : "") << scene.objects[chain.objects[k]].name;
             os << "): " << plural(chain.combinations.size(), "combination") << "\n";
@@ -90,24 +122,32 @@ void print_motions(std::ostream& os, const Scene& scene, const SituationResult& 
             print_combination(os, scene, chain, c, chain.combinations.size() > 1 ? indent + "  " : indent);
         }
     }
+}
+
+}  // namespace
+
+void print_motions(std::ostream& os, const Scene& scene, const SituationResult& r, MotionSet shown) {
+    const std::uint64_t total = r.combination_count();
+    print_motions_heading(os, r, shown);
+    print_chains(os, scene, shown == MotionSet::kinematic ? r.kinematic : r.chains);
     os << "  Stable: " << (r.stable ? "yes (the only possible motions are zero)" : total == 0 ? "no (no consistent motion)" : "no") << "\n";
 }
 
-void print_situation(std::ostream& os, const Scene& scene, const SituationResult& r) {
+void print_situation(std::ostream& os, const Scene& scene, const SituationResult& r, MotionSet shown) {
     os << "Situation " << r.index << "\n";
     print_freedom(os, scene, r);
-    print_motions(os, scene, r);
+    print_motions(os, scene, r, shown);
     for (const std::string& n : r.notes) os << "  Note: " << n << "\n";
 }
 
-void print_analysis(std::ostream& os, const Scene& scene, std::span<const SituationResult> results) {
+void print_analysis(std::ostream& os, const Scene& scene, std::span<const SituationResult> results, MotionSet shown) {
     // The header describes the scene; `--situation N` shows fewer results than it has situations.
     os << "Scene " << scene.name << " (" << scene.dimensions << "-D, " << plural(scene.objects.size(), "object") << ", "
        << plural(scene.situations.size(), "situation") << ")\n";
     if (scene.situations.empty()) os << "\nNo situations: the scene states no contacts or forces to analyse (Defstates)\n";
     for (const SituationResult& r : results) {
         os << '\n';
-        print_situation(os, scene, r);
+        print_situation(os, scene, r, shown);
     }
 }
 
@@ -142,7 +182,7 @@ void print_why(std::ostream& os, const WhyAnswer& w) {
     }
 }
 
-void write_situation_json(std::ostream& os, const Scene& scene, const SituationResult& r) {
+void write_situation_json(std::ostream& os, const Scene& scene, const SituationResult& r, MotionSet shown) {
     os << "{\"index\": " << r.index << ", \"freedom\": {";
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
         const Freedom& f = r.freedom[ObjectId{i}];
@@ -154,7 +194,7 @@ void write_situation_json(std::ostream& os, const Scene& scene, const SituationR
     }
     os << "}, \"motions\": [";
     bool first = true;
-    r.for_each_combination([&](const SceneMotion& m) {
+    for_each_combination(shown == MotionSet::kinematic ? r.kinematic : r.chains, [&](const SceneMotion& m) {
         os << (first ? "" : ", ") << '{';
         first = false;
         for (std::uint32_t i = 0; i < scene.objects.size(); ++i)
@@ -164,14 +204,20 @@ void write_situation_json(std::ostream& os, const Scene& scene, const SituationR
         os << '}';
         return true;
     });
-    os << "], \"stable\": " << (r.stable ? "true" : "false") << '}';
+    os << "], \"motion_set\": " << (shown == MotionSet::kinematic ? "\"kinematic\"" : "\"selected\"")
+       << ", \"combinations\": {\"selected\": " << r.combination_count() << ", \"selected_complete\": " << (r.complete ? "true" : "false")
+       << ", \"kinematic\": ";
+    if (r.kinematic_computed) os << r.kinematic_count();
+    else os << "null";
+    os << ", \"kinematic_complete\": " << (r.kinematic_computed && r.kinematic_complete ? "true" : "false")
+       << "}, \"stable\": " << (r.stable ? "true" : "false") << '}';
 }
 
-void write_analysis_json(std::ostream& os, const Scene& scene, std::span<const SituationResult> results) {
+void write_analysis_json(std::ostream& os, const Scene& scene, std::span<const SituationResult> results, MotionSet shown) {
     os << "{\"scene\": " << json_string(scene.name) << ", \"dimensions\": " << scene.dimensions << ", \"situations\": [";
     for (std::size_t i = 0; i < results.size(); ++i) {
         if (i) os << ", ";
-        write_situation_json(os, scene, results[i]);
+        write_situation_json(os, scene, results[i], shown);
     }
     os << "]}\n";
 }

@@ -10,15 +10,24 @@
 #include <span>
 
 namespace qm::analysis {
-void print_situation(std::ostream& os, const Scene& scene, const SituationResult& r);
+// Which combinations a listing shows: those the forces select (the default), or every kinematically
+// consistent one (--kinematic: blocking, pushing and given motions alone). Headings say which, and
+// count both.
+enum class MotionSet : std::uint8_t { selected, kinematic };
+
+void print_situation(std::ostream& os, const Scene& scene, const SituationResult& r, MotionSet shown = MotionSet::selected);
 void print_freedom(std::ostream& os, const Scene& scene, const SituationResult& r);  // its free directions
-void print_motions(std::ostream& os, const Scene& scene, const SituationResult& r);  // combinations, stability
-void print_analysis(std::ostream& os, const Scene& scene, std::span<const SituationResult> results);
+// The combinations of `shown`, both counts, and the stability verdict (of the selected ones).
+void print_motions(std::ostream& os, const Scene& scene, const SituationResult& r, MotionSet shown = MotionSet::selected);
+void print_analysis(std::ostream& os, const Scene& scene, std::span<const SituationResult> results,
+                    MotionSet shown = MotionSet::selected);
 void print_why(std::ostream& os, const WhyAnswer& w);
 
 // {"scene": NAME, "dimensions": N, "situations": [SITUATION...]} (docs/OUTPUT.md).
-void write_analysis_json(std::ostream& os, const Scene& scene, std::span<const SituationResult> results);
-// One situation object: {"index", "freedom", "motions", "stable"}.
-void write_situation_json(std::ostream& os, const Scene& scene, const SituationResult& r);
+void write_analysis_json(std::ostream& os, const Scene& scene, std::span<const SituationResult> results,
+                         MotionSet shown = MotionSet::selected);
+// One situation object: {"index", "freedom", "motions", "motion_set", "combinations", "stable"}.
+void write_situation_json(std::ostream& os, const Scene& scene, const SituationResult& r,
+                          MotionSet shown = MotionSet::selected);
 void write_why_json(std::ostream& os, const WhyAnswer& w);
 }  // namespace qm::analysis

@@ -214,6 +214,20 @@ const SceneItem* SceneFacts::item(engine::FactId f) const {
     return it == item_by_fact_.end() ? nullptr : &items_[it->second];
 }
 
+std::optional<atms::AssumptionId> SceneFacts::assumption_of(const Contact& c) const {
+    for (auto key : {std::pair{c.first.value, c.second.value}, std::pair{c.second.value, c.first.value}})
+        if (auto it = contact_by_pair_.find(key); it != contact_by_pair_.end()) return items_[it->second].assumption;
+    return std::nullopt;
+}
+
+std::optional<atms::AssumptionId> SceneFacts::assumption_of(const Force& f) {
+    if (f.cause.value >= scene_.causes.size()) return std::nullopt;
+    const std::vector<ValueId> key{predicate(v::external_force), object_symbols_[f.object.value], direction(f.direction),
+                                   direction(f.origin), engine_.values().symbol(scene_.causes[f.cause].name)};
+    auto it = item_by_fact_.find(key);
+    return it == item_by_fact_.end() ? std::nullopt : items_[it->second].assumption;
+}
+
 const SceneItem* SceneFacts::item(atms::AssumptionId a) const {
     auto it = item_by_assumption_.find(a.value);
     return it == item_by_assumption_.end() ? nullptr : &items_[it->second];

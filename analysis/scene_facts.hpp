@@ -52,6 +52,11 @@ public:
     [[nodiscard]] const SceneItem* item(atms::AssumptionId a) const;  // null if a is no scene item
     [[nodiscard]] const SceneItem* item(engine::FactId f) const;       // null if f is no scene item
     [[nodiscard]] bool matches(const SceneItem& item, const QueryFact& q) const;
+    [[nodiscard]] const std::vector<SceneItem>& all_items() const noexcept { return items_; }
+    // The assumption standing for this contact (in either order) or force, when some situation of
+    // the scene has it and the granularity is `item`: a what-if adding it reuses the labels.
+    [[nodiscard]] std::optional<atms::AssumptionId> assumption_of(const Contact& c) const;
+    [[nodiscard]] std::optional<atms::AssumptionId> assumption_of(const Force& f);
 
     [[nodiscard]] engine::ValueId symbol(ObjectId o) const { return object_symbols_[o.value]; }
     [[nodiscard]] std::optional<ObjectId> object_of(engine::ValueId v) const;

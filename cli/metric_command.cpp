@@ -23,6 +23,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <sstream>
 
 namespace qm::cli {
@@ -236,7 +237,10 @@ std::string axis_text(const g::Mechanism& m, g::PartId p, const g::CSpaceAxis& a
     os.precision(10);
     os << part.name << ": ";
     if (part.fixed()) return os.str() + "fixed";
-    os << (part.rotates() ? "rotation" : "translation") << ' ' << axis.lo << ".." << axis.hi << (axis.periodic ? " periodic" : "");
+    // In the units a person types (--config, the scene's `turn`): degrees for a rotation.
+    const double scale = part.rotates() ? 180.0 / std::numbers::pi : 1.0;
+    os << (part.rotates() ? "rotation" : "translation") << ' ' << axis.lo * scale << ".." << axis.hi * scale
+       << (part.rotates() ? " degrees" : "") << (axis.periodic ? " periodic" : "");
     return os.str();
 }
 
@@ -315,13 +319,15 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
         const bool from_cache = places.from_cache;
         text << "pair " << m->parts[pair.a].name << ' ' << m->parts[pair.b].name << " (q0 = " << axis_text(*m, pair.a, request.cspace.axes[0])
              << "; q1 = " << axis_text(*m, pair.b, request.cspace.axes[1]) << ")" << (from_cache ? " from cache" : "") << '\n';
-        g::write_place_text(text, vocabulary);
+        const auto svg = cspace_svg_options(*m, pair, 720, 540);
+        const std::array<g::AxisUnit, 2> units{svg.axes[0].unit, svg.axes[1].unit};
+        g::write_place_text(text, vocabulary, units);
         js << (k ? "," : "") << "{\"parts\":[";
         write_json_string(js, m->parts[pair.a].name);
         js << ',';
         write_json_string(js, m->parts[pair.b].name);
         js << "],\"from_cache\":" << (from_cache ? "true" : "false") << ",\"vocabulary\":";
-        g::write_place_json(js, request.cspace, vocabulary);
+        g::write_place_json(js, request.cspace, vocabulary, units);
         js << '}';
     }
     js << "],\"skipped\":[";

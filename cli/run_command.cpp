@@ -94,6 +94,8 @@ int run_command(std::span<const std::string> args, std::ostream& out, std::ostre
         print_diagnostics(diagnostics, err);
         return 2;
     }
+    print_diagnostics(diagnostics, err);  // warnings (a rule that can never fire, ...)
+    diagnostics = Diagnostics{};
     engine::Engine e(std::move(loaded->program), std::move(loaded->values));
     e.run(diagnostics);
     if (diagnostics.has_errors()) {

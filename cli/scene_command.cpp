@@ -59,17 +59,19 @@ std::optional<scene::Scene> load_scene(const SceneOptions& options, Diagnostics&
 // The results as asked: every situation or --situation's, each what-if result saying what it took
 // away (docs/OUTPUT.md); JSON has no place for notes, so they go to standard error there.
 void print_results(const analysis::Analysis& analysis, const SceneOptions& options, std::span<const scene::QueryFact> without,
-                   std::ostream& out, std::ostream& err) {
+                   std::span<const std::vector<std::string>> added, std::ostream& out, std::ostream& err) {
     // The results are printed where they are (a scene with many combinations holds them once);
     // only a what-if, which adds a note, prints a copy.
     std::span<const analysis::SituationResult> shown = analysis.situations();
     if (options.situation) shown = shown.subspan(*options.situation - 1, 1);
     std::vector<analysis::SituationResult> noted;
-    if (!without.empty()) {
+    if (!without.empty() || !options.with.empty()) {
         noted.assign(shown.begin(), shown.end());
-        for (analysis::SituationResult& r : noted)
+        for (analysis::SituationResult& r : noted) {
+            if (std::string note = scene::with_note(added[r.index - 1]); !note.empty()) r.notes.insert(r.notes.begin(), std::move(note));
             if (std::string note = scene::what_if_note(analysis.scene(), r.index, without); !note.empty())
                 r.notes.insert(r.notes.begin(), std::move(note));
+        }
         shown = noted;
     }
     // A truncated enumeration is said on standard error with --json, so a program reading the
@@ -77,24 +79,30 @@ void print_results(const analysis::Analysis& analysis, const SceneOptions& optio
     if (options.json)
         for (const analysis::SituationResult& r : shown)
             for (const std::string& n : r.notes) err << "qm-atms: note: situation " << r.index << ": " << n << '\n';
-    options.json ? analysis::write_analysis_json(out, analysis.scene(), shown)
-                 : analysis::print_analysis(out, analysis.scene(), shown);
+    const auto set = options.kinematic ? analysis::MotionSet::kinematic : analysis::MotionSet::selected;
+    options.json ? analysis::write_analysis_json(out, analysis.scene(), shown, set)
+                 : analysis::print_analysis(out, analysis.scene(), shown, set);
 }
 
 }  // namespace
 
 const char* scene_usage() noexcept {
-    return "usage: qm-atms SCENE.def [--json] [--why FACT [--situation N]] [--given 'OBJ TRANS ROT']...\n"
-           "                         [--without 'Contact A B' | 'Force OBJ [CAUSE]']... [--rules DIR] [--limit N] [-i]\n"
+    return "usage: qm-atms SCENE.def [--json] [--kinematic] [--why FACT [--situation N]] [--given 'OBJ TRANS ROT']...\n"
+           "                         [--without 'Contact A B' | 'Force OBJ [CAUSE]']... [--with 'Contact A B' | 'Force OBJ DIR ORIGIN [CAUSE]']...\n"
+           "                         [--rules DIR] [--limit N] [-i]\n"
            "                         [--config 'PART=VALUE, ...']   (a metric scene, at that configuration)\n"
            "  prints, for every situation, the free directions, every consistent combination of motions\n"
            "  and whether the structure is stable (thesis chapters 6-7)\n"
            "  --json          the same as JSON (docs/OUTPUT.md)\n"
+           "  --kinematic     list every kinematically consistent combination (blocking, pushing and given\n"
+           "                  motions alone, before the forces choose) instead of those the forces select\n"
            "  --why FACT      why a motion or freedom holds or was ruled out, e.g.\n"
            "                  --why 'Rotational-Motion (follower (-))' (situation 1 unless --situation N)\n"
            "  --given M       a current motion added to every situation, e.g. --given 'pallet (0 0) (+)'\n"
            "  --without F     take a contact or force away in every situation (what if): 'Contact A B',\n"
            "                  'Force OBJ' (every force on OBJ, gravity included) or 'Force OBJ CAUSE'\n"
+           "  --with F        add a contact or force to every situation (what if): 'Contact A B' or\n"
+           "                  'Force OBJ DIR ORIGIN [CAUSE]', e.g. --with 'Force block (+ 0) (0 0) push'\n"
            "  --rules DIR     the folder of laws (default: the rules/ installed with qm-atms)\n"
            "  --limit N       stop enumerating a chain's combinations after N (default 100000)\n"
            "  -i              answer queries typed on standard input (type help)\n"
@@ -116,6 +124,7 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     }
     analysis::AnalysisOptions ao;
     ao.combination_limit = options->limit;
+    ao.kinematic = options->kinematic;
     ao.given = scene::read_givens(*scene, options->given, d);
     // A --given motion replaces a Motion the scene gives the same object (a what-if, like --without),
     // said in a note at that Motion.
@@ -123,6 +132,13 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     const std::size_t situations = scene->situations.size();
     const std::size_t situation = options->situation.value_or(1);
     ao.without = scene::read_withouts(*scene, options->without, options->situation, d);
+    // --with adds contacts and forces to the scene before it is analysed (to situation N only with
+    // --situation N): each situation's result notes what it was given.
+    std::vector<std::vector<std::string>> added(situations);
+    if (!options->with.empty() && (!options->situation || situation <= situations)) {
+        const scene::Additions additions = scene::read_withs(*scene, options->with, options->situation, d);
+        if (!d.has_errors()) added = scene::add_to_scene(*scene, additions, options->situation.value_or(0));
+    }
     std::optional<scene::QueryFact> why;
     if (options->why)
         if (auto text = query_text(*options->why, "--why", d)) why = scene::parse_query_fact(*scene, *text, d, "--why");
@@ -140,10 +156,9 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     if (d.has_errors()) return 2;
     d = Diagnostics{};
     auto analysis = analysis::analyse(*scene, ao, d);
-    if (!analysis) {
-        d.print(err);
-        return 2;
-    }
+    d.print(err);  // errors, or warnings about the laws (engine/law_check.hpp, engine/predicate_check.hpp)
+    if (!analysis) return 2;
+    d = Diagnostics{};
     // Contacts the laws cannot use (a corner against a surface it cannot touch, Def 25): warned, located.
     Diagnostics inert;
     for (std::size_t s = 1; s <= analysis->situations().size(); ++s)
@@ -163,7 +178,7 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
         options->json ? analysis::write_why_json(out, *w) : analysis::print_why(out, *w);
         return 0;
     }
-    print_results(*analysis, *options, ao.without, out, err);
+    print_results(*analysis, *options, ao.without, added, out, err);
     return 0;
 }
 

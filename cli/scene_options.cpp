@@ -24,6 +24,7 @@ std::optional<SceneOptions> parse_scene_options(std::span<const std::string> arg
         };
         if (a == "--json") o.json = true;
         else if (a == "-i" || a == "--interactive") o.interactive = true;
+        else if (a == "--kinematic") o.kinematic = true;
         else if (a == "--why") {
             auto v = value("a fact, e.g. --why 'Rotational-Motion (follower (-))'");
             if (!v) return std::nullopt;
@@ -52,6 +53,10 @@ std::optional<SceneOptions> parse_scene_options(std::span<const std::string> arg
             auto v = value("a contact or force, e.g. --without 'Contact tb block-b-m', --without 'Force block' or --without 'Force block wind'");
             if (!v) return std::nullopt;
             o.without.push_back(*v);
+        } else if (a == "--with") {
+            auto v = value("a contact or force, e.g. --with 'Contact tb block-b-m' or --with 'Force block (0 -) (0 0)'");
+            if (!v) return std::nullopt;
+            o.with.push_back(*v);
         } else if (a == "--rules") {
             auto v = value("a folder of .rules files");
             if (!v) return std::nullopt;

@@ -17,9 +17,10 @@ struct SceneOptions {
     std::string scene;
     bool json = false;
     bool interactive = false;
+    bool kinematic = false;  // list the kinematically consistent combinations (docs/OUTPUT.md)
     std::optional<std::string> why;
     std::optional<std::size_t> situation;
-    std::vector<std::string> given, without;  // as written; read and checked by scene/what_if.hpp
+    std::vector<std::string> given, without, with;  // as written; read and checked by scene/what_if.hpp
     std::optional<std::string> rules;
     std::optional<std::string> config;  // metric scenes: the configuration (cli/metric_command.hpp)
     std::size_t limit = 100000;

@@ -2,18 +2,31 @@
 # Installs qm-atms' build dependencies from Debian 12 packages. Idempotent: packages already
 # present are skipped, and apt is not touched at all when nothing is missing.
 # Works as root, or through sudo when not root.
+#   bash cmake/install-deps.sh        everything: the executable, every test, benchmark and fuzz target
+#   bash cmake/install-deps.sh run    only what configuring the tree and building qm-atms need
+#                                     (`make run`): no clang, no browser, so a fresh machine gets
+#                                     its first answer sooner
 set -euo pipefail
 
-packages=(
+run_packages=(
   build-essential cmake pkg-config
   libboost-dev libboost-graph-dev      # Spirit X3 (header-only) and Boost.Graph
   libeigen3-dev                        # geometry
   libfcl-dev libccd-dev                # collision and distance
-  doctest-dev                          # unit tests
-  libbenchmark-dev                     # bench/
+  libedit-dev                          # line editing and history in the interactive mode (-i)
+  doctest-dev                          # unit tests (small; the configure step looks for it)
+  libbenchmark-dev                     # bench/ (small; the configure step looks for it)
+)
+test_packages=(
   clang libclang-rt-14-dev             # libFuzzer targets and sanitizer runtimes
   chromium chromium-driver python3-selenium  # the explorer page's test in a headless browser
 )
+
+case "${1:-all}" in
+  run) packages=("${run_packages[@]}") ;;
+  all) packages=("${run_packages[@]}" "${test_packages[@]}") ;;
+  *) echo "usage: bash cmake/install-deps.sh [run|all]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

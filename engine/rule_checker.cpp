@@ -70,6 +70,8 @@ bool check_program(const ProgramSpec& spec, Diagnostics& diagnostics, const Buil
     Checker checker(diagnostics, builtins);
     for (const AtomSpec& f : spec.facts) checker.use(f);
     for (const AtomSpec& a : spec.assumptions) checker.use(a);
+    for (const AtomSpec& a : spec.inputs) checker.use(a);
+    for (const AtomSpec& a : spec.outputs) checker.use(a);
     for (const RuleSpec& r : spec.rules) checker.rule(r);
     return checker.ok();
 }

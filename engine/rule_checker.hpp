@@ -10,6 +10,8 @@
 //               - an atom whose predicate is a builtin test (`fact (< 1 2)`, `not (< ?x 3)`, a test
 //                 among the atoms of a quantifier): in a condition `(< ...)` is always the test, so
 //                 no fact of such a predicate could ever be matched.
+//             (Where facts come from, unknown predicates and rules that never fire are
+//             predicate_check.hpp's, which load_programs() runs after these.)
 //             Each finding is a located error in diagnostics; several are reported in one run.
 // Errors:     only into diagnostics; never throws for bad input.
 // Knows nothing of the ATMS.

@@ -1,5 +1,6 @@
 // engine/rule_compiler.cpp: ProgramSpec -> CompiledProgram (slots, builtins, binding checks).
 #include "engine/rule_compiler.hpp"
+#include "engine/predicate_check.hpp"
 #include "engine/binding.hpp"
 #include "engine/stratify_rules.hpp"
 #include <set>
@@ -287,7 +288,8 @@ std::optional<LoadedProgram> load_program(const std::string& path, Diagnostics& 
     return load_programs(std::span<const std::string>(&path, 1), diagnostics);
 }
 
-std::optional<LoadedProgram> load_programs(std::span<const std::string> paths, Diagnostics& diagnostics) {
+std::optional<LoadedProgram> load_programs(std::span<const std::string> paths, Diagnostics& diagnostics,
+                                           const LawCheckOptions& laws) {
     ProgramSpec spec;
     SourceTexts sources;
     Diagnostics read;
@@ -297,7 +299,12 @@ std::optional<LoadedProgram> load_programs(std::span<const std::string> paths, D
     // with the source line it points at.
     Diagnostics found;
     bool checked = check_program(spec, found);
+    // Where predicates come from is checked only on a whole program: an item a syntax error dropped
+    // may be the one that states a predicate, which would make every use of it look misspelt.
+    if (!read.has_errors()) checked = check_predicates(spec, found) && checked;
     auto program = compile_program(spec, found);
+    check_laws(spec, laws, found);
+    if (program) program->citations = citations(spec);
     sources.attach_lines(read, diagnostics);
     sources.attach_lines(found, diagnostics);
     if (read.has_errors() || !checked || found.has_errors()) return std::nullopt;

@@ -12,9 +12,11 @@
 #pragma once
 #include "engine/builtin_registry.hpp"
 #include "engine/compiled_rule.hpp"
+#include "engine/law_check.hpp"
 #include "engine/rule_spec.hpp"
 #include "engine/value_table.hpp"
 #include "qm/diagnostics.hpp"
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -23,6 +25,7 @@ namespace qm::engine {
 struct LoadedProgram {
     CompiledProgram program;
     ValueTable values;
+    std::map<std::string, std::string> citations;  // file -> its `cite` texts (law_check.hpp); load only
 };
 
 // Empty (with diagnostics) if the program has errors.
@@ -31,6 +34,10 @@ struct LoadedProgram {
 // Reads path (and its includes), checks and compiles it. Every diagnostic carries its source line.
 [[nodiscard]] std::optional<LoadedProgram> load_program(const std::string& path, Diagnostics& diagnostics);
 // Loads several files (e.g. every law file of rules/) into one program, in the order given; a file
-// included by several of them is read once.
-[[nodiscard]] std::optional<LoadedProgram> load_programs(std::span<const std::string> paths, Diagnostics& diagnostics);
+// included by several of them is read once. Also where predicates come from (predicate_check.hpp;
+// skipped after a syntax error, which may have dropped a predicate's source) and, with law options,
+// the checks of law_check.hpp.
+// Warnings go into diagnostics beside a program that loads.
+[[nodiscard]] std::optional<LoadedProgram> load_programs(std::span<const std::string> paths, Diagnostics& diagnostics,
+                                                         const LawCheckOptions& laws = {});
 }  // namespace qm::engine

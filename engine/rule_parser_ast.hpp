@@ -1,6 +1,6 @@
 // engine/rule_parser_ast.hpp
 // Provides:   the AST of a rule file as the Spirit X3 grammar (rule_parser_def.hpp) produces it:
-//             one Item per top-level `include`, `fact`, `assume` or `rule`, with every condition,
+//             one Item per top-level `include`, `fact`, `assume`, `rule`, `input`, `output` or `cite`, with every condition,
 //             consequent and term as written. rule_parser_to_spec.hpp turns it into a ProgramSpec.
 // Ownership:  plain values. Every node derives from x3::position_tagged; the parser stores in
 //             id_first the byte offset where the node starts (after blanks and comments), so a
@@ -99,7 +99,10 @@ struct Rule : x3::position_tagged {
     std::vector<Condition> conditions;
     std::vector<Consequent> consequents;
 };
-struct Item : x3::variant<Include, Fact, Assumption, Rule> {
+struct Input : x3::position_tagged { Atom atom; };     // `input (p ?x)`: a driver asserts p
+struct Output : x3::position_tagged { Atom atom; };    // `output (p ?x)`: a driver reads p back
+struct Cite : x3::position_tagged { FileName text; };  // `cite "section 3.1, Table 3.1"`
+struct Item : x3::variant<Include, Fact, Assumption, Rule, Input, Output, Cite> {
     using base_type::base_type;
     using base_type::operator=;
 };

@@ -1,6 +1,6 @@
 // engine/rule_parser_def.hpp
 // Provides:   the Spirit X3 grammar of the rule language (docs/RULES.md is its reference): words,
-//             terms, atoms, builtin tests, conditions, consequents and the four top-level items.
+//             terms, atoms, builtin tests, conditions, consequents and the seven top-level items.
 //             Include only from rule_parser.cpp: X3's compile cost is paid in one translation unit.
 // Ownership:  rules are constants; per-parse state (text start, builtin registry, nesting depth, the
 //             recorded failure) comes in through x3::with<state_tag> (rule_parser_error_handler.hpp).
@@ -41,6 +41,9 @@ BOOST_FUSION_ADAPT_STRUCT(qm::engine::ast::Include, file)
 BOOST_FUSION_ADAPT_STRUCT(qm::engine::ast::Fact, atom)
 BOOST_FUSION_ADAPT_STRUCT(qm::engine::ast::Assumption, atom)
 BOOST_FUSION_ADAPT_STRUCT(qm::engine::ast::Rule, name, conditions, consequents)
+BOOST_FUSION_ADAPT_STRUCT(qm::engine::ast::Input, atom)
+BOOST_FUSION_ADAPT_STRUCT(qm::engine::ast::Output, atom)
+BOOST_FUSION_ADAPT_STRUCT(qm::engine::ast::Cite, text)
 
 namespace qm::engine::parser {
 
@@ -122,7 +125,8 @@ inline const auto integer_ahead = x3::lexeme[-x3::lit('-') >> +digit >> !word_ch
 
 // A keyword is a whole word: `not` but not `nothing`.
 inline auto kw(const char* word) { return x3::lexeme[x3::lit(word) >> !word_char]; }
-inline const auto top_keyword = bol >> (kw("rule") | kw("fact") | kw("assume") | kw("include"));
+inline const auto top_keyword =
+    bol >> (kw("rule") | kw("fact") | kw("assume") | kw("include") | kw("input") | kw("output") | kw("cite"));
 // A rule's consequents end at the end of the text or at a line whose first token (in column 1)
 // cannot continue them: only `(`, `[` and `false` can, so `assume` in column 1 is a top-level item,
 // and a misspelt top-level keyword costs only its own item, not the rule before it.
@@ -183,10 +187,14 @@ struct exactly_one_id : annotate {};
 struct consequent_id : annotate {};
 struct consequents_id : annotate {};
 struct file_name_id : annotate {};
+struct citation_text_id : annotate {};
 struct include_item_id : annotate {};
 struct fact_item_id : annotate {};
 struct assume_item_id : annotate {};
 struct rule_item_id : annotate {};
+struct input_item_id : annotate {};
+struct output_item_id : annotate {};
+struct cite_item_id : annotate {};
 struct top_item_id : annotate {};
 struct item_entry_id : annotate, first_failure {};
 struct atom_entry_id : annotate, first_failure {};
@@ -226,10 +234,14 @@ const x3::rule<consequent_id, ast::Consequent> consequent =
 const x3::rule<consequents_id, std::vector<ast::Consequent>> consequents =
     "a consequent (an atom, 'false', 'assume' or a bracketed quantifier)";
 const x3::rule<file_name_id, ast::FileName> file_name = "a file name in double quotes";
+const x3::rule<citation_text_id, ast::FileName> citation_text = "a citation in double quotes";
 const x3::rule<include_item_id, ast::Include> include_item = "'include'";
 const x3::rule<fact_item_id, ast::Fact> fact_item = "'fact'";
 const x3::rule<assume_item_id, ast::Assumption> assume_item = "'assume'";
 const x3::rule<rule_item_id, ast::Rule> rule_item = "'rule'";
+const x3::rule<input_item_id, ast::Input> input_item = "'input'";
+const x3::rule<output_item_id, ast::Output> output_item = "'output'";
+const x3::rule<cite_item_id, ast::Cite> cite_item = "'cite'";
 const x3::rule<top_item_id, ast::Item> top_item = top_item_name;
 const x3::rule<item_entry_id, ast::Item> item_entry = "a top-level item";
 const x3::rule<atom_entry_id, ast::Atom> atom_entry = "an atom";
@@ -296,7 +308,11 @@ const auto include_item_def = kw("include") > file_name;
 const auto fact_item_def = kw("fact") > atom_expected;
 const auto assume_item_def = kw("assume") > atom_expected;
 const auto rule_item_def = kw("rule") > rule_name > when_kw > conditions > then_kw > consequents;
-const auto top_item_def = bol >> (include_item | fact_item | assume_item | rule_item);
+const auto input_item_def = kw("input") > atom_expected;
+const auto output_item_def = kw("output") > atom_expected;
+const auto citation_text_def = file_name_def;
+const auto cite_item_def = kw("cite") > citation_text;
+const auto top_item_def = bol >> (include_item | fact_item | assume_item | rule_item | input_item | output_item | cite_item);
 const auto item_entry_def = x3::eps > top_item;
 const auto atom_entry_def = x3::eps > atom_expected > end_of_input;
 
@@ -305,6 +321,7 @@ BOOST_SPIRIT_DEFINE(name, predicate, function_name, rule_name, symbol, variable,
 BOOST_SPIRIT_DEFINE(atom, atom_expected, atoms, test, test_expected, where_clause, binder)
 BOOST_SPIRIT_DEFINE(negation, for_all_condition, exists_condition, aggregate, condition, conditions)
 BOOST_SPIRIT_DEFINE(falsity, assume_consequent, for_all_consequent, exactly_one, consequent, consequents)
-BOOST_SPIRIT_DEFINE(file_name, include_item, fact_item, assume_item, rule_item, top_item, item_entry, atom_entry)
+BOOST_SPIRIT_DEFINE(file_name, citation_text, include_item, fact_item, assume_item, rule_item, input_item, output_item, cite_item,
+                    top_item, item_entry, atom_entry)
 
 }  // namespace qm::engine::parser

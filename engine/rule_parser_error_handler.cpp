@@ -68,7 +68,8 @@ char closer_expected(const std::string& expected) {
 }
 
 bool is_top_keyword(const std::string& found) {
-    return found == "'rule'" || found == "'fact'" || found == "'assume'" || found == "'include'";
+    return found == "'rule'" || found == "'fact'" || found == "'assume'" || found == "'include'" || found == "'input'" ||
+           found == "'output'" || found == "'cite'";
 }
 
 }  // namespace

@@ -165,6 +165,9 @@ struct ItemVisitor {
     void operator()(const ast::Fact& f) const { spec.facts.push_back(to_atom_spec(f.atom, src)); }
     void operator()(const ast::Assumption& a) const { spec.assumptions.push_back(to_atom_spec(a.atom, src)); }
     void operator()(const ast::Rule& r) const { spec.rules.push_back(to_rule_spec(r, src)); }
+    void operator()(const ast::Input& i) const { spec.inputs.push_back(to_atom_spec(i.atom, src)); }
+    void operator()(const ast::Output& o) const { spec.outputs.push_back(to_atom_spec(o.atom, src)); }
+    void operator()(const ast::Cite& c) const { spec.citations.push_back(CitationSpec{c.text.text, at(c, src)}); }
 };
 
 }  // namespace

@@ -82,6 +82,9 @@ std::string print_atom(const AtomSpec& atom) { return "(" + atom.predicate + joi
 
 std::string print_program(const ProgramSpec& spec) {
     std::string out;
+    for (const CitationSpec& c : spec.citations) out += "cite \"" + c.text + "\"\n";
+    for (const AtomSpec& i : spec.inputs) out += "input " + print_atom(i) + "\n";
+    for (const AtomSpec& o : spec.outputs) out += "output " + print_atom(o) + "\n";
     for (const AtomSpec& f : spec.facts) out += "fact " + print_atom(f) + "\n";
     for (const AtomSpec& a : spec.assumptions) out += "assume " + print_atom(a) + "\n";
     for (const RuleSpec& r : spec.rules) {

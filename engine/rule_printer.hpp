@@ -1,6 +1,6 @@
 // engine/rule_printer.hpp
 // Provides:   print_program(), the inverse of the rule reader: ProgramSpec -> rule-language text
-//             (facts, then assumptions, then rules, each in spec order), and print_term() /
+//             (citations, inputs, outputs, facts, assumptions, then rules, each in spec order), and print_term() /
 //             print_atom() for single pieces. Reading the printed text back gives the same spec
 //             up to source locations (tests/engine/rule_printer_test.cpp checks this on every bundled
 //             file and on seeded random specs), which is what the reader-equivalence checks rely on.

@@ -63,9 +63,21 @@ struct RuleSpec {
     std::vector<ConsequentSpec> consequents;
 };
 
+// `cite "TEXT"`: the thesis section, table, definition or law a file encodes (docs/RULES.md).
+struct CitationSpec {
+    std::string text;
+    SourceLocation where;
+};
+
 struct ProgramSpec {
     std::vector<RuleSpec> rules;
     std::vector<AtomSpec> facts;
     std::vector<AtomSpec> assumptions;
+    // `input (p ?x ...)`: facts of p come from outside the program (a driver asserts them), so a
+    // condition on p is not a misspelling; `output (p ?x ...)`: a driver reads p back, so a rule
+    // concluding p is used (docs/RULES.md "Declarations"). Arguments are variables, for the reader.
+    std::vector<AtomSpec> inputs;
+    std::vector<AtomSpec> outputs;
+    std::vector<CitationSpec> citations;  // in reading order; a file may cite more than once
 };
 }  // namespace qm::engine

@@ -10,15 +10,27 @@ void point(std::ostream& os, const Eigen::Vector2d& p) { os << '[' << p.x() << '
 void direction(std::ostream& os, QualDirection d) { os << '[' << int{d.s[0]} << ',' << int{d.s[1]} << ']'; }
 
 
+const char* unit_name(AxisUnit u) {
+    switch (u) {
+        case AxisUnit::degrees: return "radian";  // the coordinate is an angle in radians (shown in degrees)
+        case AxisUnit::length: return "length";
+        case AxisUnit::fixed: return "fixed";
+        case AxisUnit::plain: break;
+    }
+    return nullptr;
+}
+
 }  // namespace
 
-void write_place_json(std::ostream& os, const CSpaceRequest& space, const PlaceVocabulary& v) {
+void write_place_json(std::ostream& os, const CSpaceRequest& space, const PlaceVocabulary& v, const std::array<AxisUnit, 2>& units) {
     const auto precision = os.precision(17);
     os << "{\"schema\":\"qm-place-vocabulary/1\",\"axes\":[";
     for (int k = 0; k < 2; ++k) {
         const auto& a = space.axes[static_cast<std::size_t>(k)];
         os << (k ? "," : "") << "{\"lo\":" << a.lo << ",\"hi\":" << a.hi << ",\"periodic\":" << (a.periodic ? "true" : "false")
-           << ",\"samples\":" << a.samples << '}';
+           << ",\"samples\":" << a.samples;
+        if (const char* unit = unit_name(units[static_cast<std::size_t>(k)])) os << ",\"unit\":\"" << unit << '"';
+        os << '}';
     }
     os << "],\"boundary_tolerance\":" << space.boundary_tolerance << ",\"places\":[";
     for (std::size_t i = 0; i < v.places.size(); ++i) {

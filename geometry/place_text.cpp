@@ -1,9 +1,11 @@
 // geometry/place_text.cpp
 #include "geometry/place_text.hpp"
+#include <numbers>
 
 namespace qm::geometry {
 
-void write_place_text(std::ostream& os, const PlaceVocabulary& v) {
+void write_place_text(std::ostream& os, const PlaceVocabulary& v, const std::array<AxisUnit, 2>& units) {
+    auto shown = [&](int axis, double x) { return units[static_cast<std::size_t>(axis)] == AxisUnit::degrees ? x * 180.0 / std::numbers::pi : x; };
     os << "places " << v.places.size() << " (cseg " << v.count(PlaceKind::cseg) << ", join " << v.count(PlaceKind::join)
        << ", fsd " << v.count(PlaceKind::fsd) << ", external-division " << v.count(PlaceKind::external_division)
        << ", face " << v.count(PlaceKind::face);
@@ -20,7 +22,7 @@ void write_place_text(std::ostream& os, const PlaceVocabulary& v) {
         if (p.concave) os << (*p.concave ? " concave" : " convex");
         if (p.axis >= 0) os << " along q" << p.axis;
         if (!p.label.empty()) os << " \"" << p.label << '"';
-        if (!p.points.empty()) os << " at (" << p.points.front().x() << ' ' << p.points.front().y() << ')';
+        if (!p.points.empty()) os << " at (" << shown(0, p.points.front().x()) << ' ' << shown(1, p.points.front().y()) << ')';
         os << '\n';
     }
     for (const Adjacency& a : v.adjacency)

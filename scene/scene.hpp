@@ -176,6 +176,15 @@ struct QueryFact {
     friend bool operator==(const QueryFact&, const QueryFact&) = default;
 };
 
+// A force to add to a situation (`--with 'Force ...'`). Its cause is force.cause when the scene has
+// it (a cause named by an entry); otherwise `new_cause` holds the cause to add to the scene, whose
+// id the adder assigns.
+struct AddedForce {
+    Force force;
+    std::optional<Cause> new_cause;
+    friend bool operator==(const AddedForce&, const AddedForce&) = default;
+};
+
 // "+", "0" or "-".
 [[nodiscard]] char sign_char(Sign s) noexcept;
 

@@ -7,6 +7,7 @@
 #include "scene/scene_checker.hpp"
 
 #include "scene/detail/scene_checker.hpp"
+#include "qm/spelling.hpp"
 
 namespace qm::scene {
 namespace detail {
@@ -161,7 +162,11 @@ void SceneChecker::individuals(const ast::Individuals& ind) {
 std::optional<ObjectId> SceneChecker::object(const ast::Name& n, const char* section) {
     const std::string name = lower(n.text);
     auto id = find_object(name);
-    if (!id) cx_.error(n, "object '" + name + "' in " + section + " is not declared in Individuals");
+    if (!id) {
+        std::vector<std::string_view> names;
+        for (const Object& o : scene_.objects) names.push_back(o.name);
+        cx_.error(n, "object '" + name + "' in " + section + " is not declared in Individuals" + did_you_mean(name, names));
+    }
     return id;
 }
 

@@ -6,6 +6,8 @@
 //             different faces of their own object, Def 18) and linkages (two different declared
 //             objects, each pair once; Def 21). Also the checks
 //             of a `--given` motion and of a query fact against an already checked Scene.
+//             Warnings (the scene still means something): a contact between two faces whose
+//             normals are not opposite (section 3.1.1), normals_not_opposite().
 // Ownership:  pure functions; the result is a value owned by the caller.
 // Errors:     every problem found is reported into `diags` (located via the PositionTable filled
 //             by the same parse, with the source line for the caret); the result is empty when
@@ -25,6 +27,15 @@ namespace qm::scene {
 [[nodiscard]] std::optional<Motion> check_given(const ast::MotionEntry& given, const Scene& scene,
                                                 const PositionTable& positions, const SourceText& src,
                                                 Diagnostics& diags);
+
+[[nodiscard]] std::optional<AddedForce> check_force_text(const ast::ForceEntry& entry, const Scene& scene,
+                                                        const PositionTable& positions, const SourceText& src,
+                                                        Diagnostics& diags);
+
+// Empty when surfaces a and b could touch as faces: one of them is a corner, or their normals are
+// opposite (section 3.1.1: "the direction of the surface normal of one will be opposite to the
+// direction of the surface normal of the other"); else the warning naming both normals.
+[[nodiscard]] std::string normals_not_opposite(const Scene& scene, SurfaceId a, SurfaceId b);
 
 [[nodiscard]] std::optional<QueryFact> check_query(const ast::QueryFact& fact, const Scene& scene,
                                                    const PositionTable& positions, const SourceText& src,

@@ -5,16 +5,36 @@
 #include "scene/scene_checker.hpp"
 
 #include "scene/detail/scene_checker.hpp"
+#include "scene/direction_text.hpp"
+#include "qm/spelling.hpp"
 
 #include <algorithm>
 
 namespace qm::scene {
+
+std::string normals_not_opposite(const Scene& scene, SurfaceId a, SurfaceId b) {
+    const Surface& x = scene.surfaces[a];
+    const Surface& y = scene.surfaces[b];
+    if (x.corner || y.corner || x.normal.empty() || y.normal.empty()) return {};  // a corner takes the other's reverse (3.1.1)
+    Direction reverse = y.normal;
+    for (Sign& s : reverse) s = s == Sign::plus ? Sign::minus : s == Sign::minus ? Sign::plus : Sign::zero;
+    if (x.normal == reverse) return {};
+    return "Contact (" + x.name + " " + y.name + "): the surface normals " + thesis_text(x.normal) + " of '" + x.name +
+           "' and " + thesis_text(y.normal) + " of '" + y.name +
+           "' are not opposite, but those of two surfaces in contact are (section 3.1.1): the laws will use each "
+           "surface's own normal; check the surfaces named or their normals";
+}
+
 namespace detail {
 
 std::optional<SurfaceId> SceneChecker::surface_ref(const ast::Name& n) {
     const std::string name = lower(n.text);
     auto id = find_surface(name);
-    if (!id) cx_.error(n, "unknown surface '" + name + "'");
+    if (!id) {
+        std::vector<std::string_view> names;
+        for (const Surface& s : scene_.surfaces) names.push_back(s.name);
+        cx_.error(n, "unknown surface '" + name + "'" + did_you_mean(name, names));
+    }
     return id;
 }
 
@@ -41,6 +61,7 @@ struct SceneChecker::DescriptorVisitor {
                                "'; a contact joins two different objects");
         } else {
             out.contacts.push_back({*a, *b, c.cx_.where(e)});
+            if (std::string why = normals_not_opposite(c.scene_, *a, *b); !why.empty()) c.cx_.warning(e, why);
         }
     }
     void operator()(const ast::ForceEntry& e) const {
@@ -83,6 +104,22 @@ std::optional<Motion> check_given(const ast::MotionEntry& given, const Scene& sc
     return c.cx_.errors() > 0 ? std::nullopt : m;
 }
 
+std::optional<AddedForce> check_force_text(const ast::ForceEntry& entry, const Scene& scene, const PositionTable& positions,
+                                           const SourceText& src, Diagnostics& diags) {
+    detail::SceneChecker c(positions, src, diags);
+    c.adopt(scene);
+    auto f = c.check_force(entry);
+    if (!f || c.cx_.errors() > 0) return std::nullopt;
+    AddedForce out{*f, std::nullopt};
+    // check_force numbers a cause the scene lacks after the adopted scene's causes: a named new
+    // cause, or an implicit one for an entry without a name.
+    if (f->cause.value >= scene.causes.size()) {
+        const std::string implicit = "with#" + std::to_string(f->cause.value + 1);
+        out.new_cause = entry.cause ? Cause{detail::lower(entry.cause->text), true} : Cause{implicit, false};
+    }
+    return out;
+}
+
 std::optional<QueryFact> check_query(const ast::QueryFact& fact, const Scene& scene, const PositionTable& positions,
                                      const SourceText& src, Diagnostics& diags) {
     detail::SceneChecker c(positions, src, diags);
@@ -95,9 +132,16 @@ std::optional<QueryFact> check_query(const ast::QueryFact& fact, const Scene& sc
         {"contact", K::contact}, {"force", K::force}};
     auto it = kinds.find(pred);
     if (it == kinds.end()) {
+        static const std::vector<std::string_view> spelled = {"Translational-Motion", "Rotational-Motion",
+                                                             "Translational-Freedom", "Rotational-Freedom", "Contact", "Force"};
+        std::vector<std::string> lowered;
+        for (std::string_view k : spelled) lowered.push_back(detail::lower(std::string(k)));
+        std::string hint;
+        if (auto near = nearest_spelling(pred, lowered))
+            hint = "; did you mean '" + std::string(spelled[static_cast<std::size_t>(std::find(lowered.begin(), lowered.end(), *near) - lowered.begin())]) + "'?";
         c.cx_.error(fact.predicate, "unknown predicate '" + fact.predicate.text +
                                         "': expected Translational-Motion, Rotational-Motion, Translational-Freedom, "
-                                        "Rotational-Freedom, Contact or Force");
+                                        "Rotational-Freedom, Contact or Force" + hint);
         return std::nullopt;
     }
     QueryFact out;

@@ -64,6 +64,15 @@ std::optional<Motion> parse_given(const Scene& scene, std::string_view text, Dia
     return check_given(given, scene, positions, src, diags);
 }
 
+std::optional<AddedForce> parse_force(const Scene& scene, std::string_view text, Diagnostics& diags, std::string origin) {
+    const SourceText src(std::move(origin), std::string(text));
+    PositionTable positions;
+    ast::ForceEntry force;
+    if (!run(parser::force_text, "a force like 'Force block (0 -) (0 0) [cause]'", src, positions, diags, force))
+        return std::nullopt;
+    return check_force_text(force, scene, positions, src, diags);
+}
+
 std::optional<QueryFact> parse_query_fact(const Scene& scene, std::string_view text, Diagnostics& diags,
                                           std::string origin) {
     const SourceText src(std::move(origin), std::string(text));

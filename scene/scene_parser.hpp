@@ -3,7 +3,8 @@
 //             parse_scene_ast (text -> raw AST, either notation), read_scene (parse + check ->
 //             Scene), and the two command-line forms: parse_given (`--given 'obj trans rot'`) and
 //             parse_query_fact (`--why` / `--without`: `Rotational-Motion (follower (-))`,
-//             `Translational-Freedom (block (0 +))`, `Contact a b`, `Force obj`).
+//             `Translational-Freedom (block (0 +))`, `Contact a b`, `Force obj`), and parse_force
+//             (`--with 'Force obj dir origin [cause]'`).
 // Ownership:  results are values owned by the caller; the SourceText must outlive nothing.
 // Errors:     bad input never throws: every problem goes into `diags` as a located error
 //             (`file:line:col: error: expected ... but found ...`, with the source line for the
@@ -41,6 +42,12 @@ struct ParsedScene {
 // `origin` names the input in diagnostics (column = position in `text`).
 [[nodiscard]] std::optional<Motion> parse_given(const Scene& scene, std::string_view text, Diagnostics& diags,
                                                 std::string origin = "--given");
+
+// `Force obj dir origin [cause]` (parentheses around the entry optional), e.g. `Force block (0 -)
+// (0 0) wind`: a force to add (--with), checked against `scene`; a cause it names that the scene
+// lacks, or none, is a new cause (AddedForce).
+[[nodiscard]] std::optional<AddedForce> parse_force(const Scene& scene, std::string_view text, Diagnostics& diags,
+                                                    std::string origin = "--with");
 
 // One fact: `<Predicate> [(] <args> [)]` with Predicate one of Translational-Motion,
 // Rotational-Motion, Translational-Freedom, Rotational-Freedom (args: object direction),

@@ -155,6 +155,7 @@ QM_SCENE_RULE_ID(scenario_kw_class);
 struct scene_file_class : annotate, report_errors {};
 struct given_class : annotate, report_errors {};
 struct query_class : annotate, report_errors {};
+struct force_text_class : annotate, report_errors {};
 
 // --- rules -----------------------------------------------------------------------------------
 const x3::rule<name_class, ast::Name> name = "a name";
@@ -223,6 +224,7 @@ const x3::rule<scenario_kw_class, ast::Scenario> scenario_kw = "a scene";
 const x3::rule<scene_file_class, ast::Scenario> scene_file = "a scene";
 const x3::rule<given_class, ast::MotionEntry> given = "a motion like 'pallet (0 0) (+)'";
 const x3::rule<query_class, ast::QueryFact> query = "a fact";
+const x3::rule<force_text_class, ast::ForceEntry> force_text = "a force like 'Force block (0 -) (0 0)'";
 
 
 // Rules with semantic actions get their attribute as `unused` in on_success, so each is an
@@ -485,6 +487,8 @@ const auto scene_file_def = (&x3::lit('(') >> scenario_sx) | scenario_kw;
 const auto given_def = name > direction > direction > end_of_input;
 // The parentheses around the arguments are optional; balance is checked before parsing.
 const auto query_def = name > -x3::lit('(') > name > -name > -direction > -x3::lit(')') > end_of_input;
+// `--with 'Force obj dir origin [cause]'`: a force entry after the keyword, parentheses optional.
+const auto force_text_def = kw("force") > -x3::lit('(') > force_body > -x3::lit(')') > end_of_input;
 
 BOOST_SPIRIT_DEFINE(name_inner, sign_inner, direction_inner, dimensions_inner, situation_sx_inner, situation_kw_inner,
                     situation_braces_inner, contact_list_inner, situations_kw_inner, bare_constraints_inner,
@@ -501,7 +505,7 @@ BOOST_SPIRIT_DEFINE(individuals_sx, individuals_kw, descriptions_sx, description
                     linkages_kw, section_sx, section_kw,
                     name_list, name_items, description_list_kw, surface_groups_kw, surface_list_kw, corner_groups_kw,
                     corner_list_kw, constraint_list_kw, direction_list, force_list_kw, linkage_list_kw, defscenario_kw, sx_section_end, kw_section_end, end_of_input, colon, defstates,
-                    scenario_sx, header_scenario, scenario_kw, scene_file, given, query, brace_items, brace_close,
+                    scenario_sx, header_scenario, scenario_kw, scene_file, given, query, force_text, brace_items, brace_close,
                     descriptor_list_kw,
                     brace_situations, situations_braces, contact_pairs, contact_list_end, sx_states, figure_tail,
                     figure_body, keyword_body, scene_body)

@@ -5,6 +5,7 @@
 // Invariants: every name is a kebab-case predicate of the rule language, as the thesis names it.
 // Knows no law of mechanics.
 #pragma once
+#include <array>
 #include <string_view>
 
 namespace qm::scene::vocabulary {
@@ -32,4 +33,13 @@ inline constexpr std::string_view rot_constraint = "rot-constraint";
 inline constexpr std::string_view trans_nearness = "trans-nearness";      // (trans-nearness O T K), Def 38
 inline constexpr std::string_view rot_nearness = "rot-nearness";
 inline constexpr std::string_view touch = "touch";                        // (touch P Q NORMALS), Def 19: a contact the laws use
+
+// The driver's declaration to the laws: rules/scene_facts.rules states these as `input` and
+// `output` items (docs/RULES.md "Declarations"); tests/analysis/scene_vocabulary_test.cpp keeps the
+// two equal, so the rule checker knows every fact the driver asserts.
+inline constexpr std::array asserted = {dimensions,   rigid_body, surface, surface_normal, origin_dir, corner,
+                                        frame_trans_constraint, frame_rot_constraint, linkage, contact,
+                                        external_force, given_motion};
+inline constexpr std::array read_back = {trans_motion,     rot_motion,     trans_freedom, rot_freedom, trans_constraint,
+                                         rot_constraint, trans_nearness, rot_nearness,  touch};
 }  // namespace qm::scene::vocabulary

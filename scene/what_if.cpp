@@ -1,9 +1,11 @@
-// scene/what_if.cpp: --given, --without, `given` and `whatif`: their meaning on the scene model and
-// their checks (docs/ANALYSIS.md "What if").
+// scene/what_if.cpp: --given, --without, --with, `given`, `whatif` and `with`: their meaning on the
+// scene model and their checks (docs/ANALYSIS.md "What if").
 #include "scene/what_if.hpp"
 #include "scene/direction_text.hpp"
+#include "scene/scene_checker.hpp"
 #include "scene/scene_parser.hpp"
 #include <algorithm>
+#include <cctype>
 
 namespace qm::scene {
 namespace {
@@ -154,6 +156,162 @@ std::string what_if_note(const Scene& scene, std::size_t s, std::span<const Quer
                                                     : q.cause                          ? "the " + item_text(scene, q)
                                                                                        : "every " + item_text(scene, q));
     return taken.empty() ? taken : "what-if: analysed without " + taken + " (--without)";
+}
+
+}  // namespace qm::scene
+
+// What-if, the other way: contacts and forces added (scene/what_if.hpp, Additions).
+namespace qm::scene {
+namespace {
+
+bool same_force(const Scene& scene, const Force& f, const AddedForce& a) {
+    if (f.object != a.force.object || f.direction != a.force.direction || f.origin != a.force.origin) return false;
+    // A new cause is never the cause of a force the scene has.
+    return !a.new_cause && f.cause == a.force.cause && scene.causes[f.cause].is_explicit;
+}
+
+bool situation_has(const Scene& scene, std::size_t s, const Contact& c) {
+    const Situation& situation = scene.situations[s - 1];
+    return std::any_of(situation.contacts.begin(), situation.contacts.end(), [&](const Contact& x) {
+        return (x.first == c.first && x.second == c.second) || (x.first == c.second && x.second == c.first);
+    });
+}
+
+bool situation_has(const Scene& scene, std::size_t s, const AddedForce& f) {
+    auto same = [&](const Force& x) { return same_force(scene, x, f); };
+    const Situation& situation = scene.situations[s - 1];
+    return std::any_of(scene.forces.begin(), scene.forces.end(), same) ||
+           std::any_of(situation.forces.begin(), situation.forces.end(), same);
+}
+
+const char* add_expected = "expected 'Contact A B' or 'Force OBJ DIR ORIGIN [CAUSE]' to add, but found '";
+
+// One item of `--with` or `with`: a contact or a force; its situations checked by `lacks`.
+template <class Lacks>
+void read_addition(const Scene& scene, const std::string& text, const std::string& origin, Additions& out, Diagnostics& diags,
+                   Lacks lacks) {
+    const std::string t = trim(text);
+    const bool force = t.size() >= 5 && std::equal(t.begin(), t.begin() + 5, "force", [](char a, char b) {
+                           return std::tolower(static_cast<unsigned char>(a)) == b;
+                       });
+    if (force) {
+        auto f = parse_force(scene, t, diags, origin);
+        if (!f) return;
+        if (auto where = lacks(*f)) diags.error({origin, 1, 1}, "expected a force to add, but " + *where + " has " + added_text(scene, *f) + " already");
+        else out.forces.push_back(*f);
+        return;
+    }
+    auto q = parse_query_fact(scene, t, diags, origin);
+    if (!q) return;
+    if (q->kind != QueryFact::Kind::contact) {
+        diags.error({origin, 1, 1}, add_expected + t + "'");
+        return;
+    }
+    const Contact c{*q->first, *q->second, {origin, 1, 1}};
+    if (c.first == c.second) {
+        diags.error({origin, 1, 1}, "a surface cannot be in contact with itself");
+        return;
+    }
+    if (scene.owner(c.first) == scene.owner(c.second)) {
+        diags.error({origin, 1, 1}, "surfaces '" + scene.surfaces[c.first].name + "' and '" + scene.surfaces[c.second].name +
+                                        "' both belong to '" + scene.objects[scene.owner(c.first)].name +
+                                        "'; a contact joins two different objects");
+        return;
+    }
+    if (auto where = lacks(c)) {
+        diags.error({origin, 1, 1}, "expected a contact to add, but " + *where + " has " + added_text(scene, c) + " already");
+        return;
+    }
+    if (std::string why = normals_not_opposite(scene, c.first, c.second); !why.empty()) {
+        Diagnostic w;
+        w.severity = Severity::warning;
+        w.where = SourceLocation{origin, 1, 1};
+        w.message = std::move(why);
+        diags.add(std::move(w));
+    }
+    out.contacts.push_back(c);
+}
+
+}  // namespace
+
+std::string added_text(const Scene& scene, const Contact& c) {
+    return "Contact (" + scene.surfaces[c.first].name + " " + scene.surfaces[c.second].name + ")";
+}
+
+std::string added_text(const Scene& scene, const AddedForce& f) {
+    const std::string cause = f.new_cause ? (f.new_cause->is_explicit ? " " + f.new_cause->name : std::string())
+                              : scene.causes[f.force.cause].is_explicit ? " " + scene.causes[f.force.cause].name
+                                                                         : std::string();
+    return "Force (" + scene.objects[f.force.object].name + " " + thesis_text(f.force.direction) + " " +
+           thesis_text(f.force.origin) + cause + ")";
+}
+
+Additions read_withs(const Scene& scene, std::span<const std::string> texts, std::optional<std::size_t> only,
+                     Diagnostics& diags) {
+    Additions out;
+    const std::size_t situations = scene.situations.size();
+    for (const std::string& text : texts)
+        read_addition(scene, text, "--with", out, diags, [&](const auto& item) -> std::optional<std::string> {
+            if (only) {
+                if (*only > situations || !situation_has(scene, *only, item)) return std::nullopt;
+                return "situation " + std::to_string(*only);
+            }
+            for (std::size_t s = 1; s <= situations; ++s)
+                if (!situation_has(scene, s, item)) return std::nullopt;
+            return std::string(situations == 1 ? "the scene's only situation" : "every situation");
+        });
+    return out;
+}
+
+Additions read_with(const Scene& scene, std::size_t s, const std::string& text, Diagnostics& diags) {
+    Additions out;
+    for (std::size_t from = 0; from <= text.size();) {
+        const auto semi = text.find(';', from);
+        const std::string part = trim(text.substr(from, semi == std::string::npos ? std::string::npos : semi - from));
+        read_addition(scene, part, "with", out, diags, [&](const auto& item) -> std::optional<std::string> {
+            if (!situation_has(scene, s, item)) return std::nullopt;
+            return "situation " + std::to_string(s);
+        });
+        if (semi == std::string::npos) break;
+        from = semi + 1;
+    }
+    return out;
+}
+
+std::vector<std::vector<std::string>> add_to_scene(Scene& scene, const Additions& added, std::size_t s) {
+    std::vector<std::vector<std::string>> texts(scene.situations.size());
+    // New causes first, so that forces naming the same new cause share it.
+    std::vector<Force> forces;
+    for (const AddedForce& f : added.forces) {
+        Force force = f.force;
+        if (f.new_cause) {
+            auto existing = f.new_cause->is_explicit ? scene.find_cause(f.new_cause->name) : std::nullopt;
+            force.cause = existing ? *existing : scene.causes.push_back(*f.new_cause);
+        }
+        forces.push_back(force);
+    }
+    for (std::size_t k = 1; k <= scene.situations.size(); ++k) {
+        if (s != 0 && k != s) continue;
+        Situation& situation = scene.situations[k - 1];
+        for (const Contact& c : added.contacts)
+            if (!situation_has(scene, k, c)) {
+                situation.contacts.push_back(c);
+                texts[k - 1].push_back(added_text(scene, c));
+            }
+        for (std::size_t i = 0; i < forces.size(); ++i)
+            if (!situation_has(scene, k, added.forces[i])) {
+                situation.forces.push_back(forces[i]);
+                texts[k - 1].push_back(added_text(scene, added.forces[i]));
+            }
+    }
+    return texts;
+}
+
+std::string with_note(std::span<const std::string> added, const char* origin) {
+    if (added.empty()) return {};
+    std::string out = "what-if: analysed with ";
+    for (std::size_t i = 0; i < added.size(); ++i) out += (i ? ", " : "") + added[i];
+    return out + " (" + origin + ")";
 }
 
 }  // namespace qm::scene

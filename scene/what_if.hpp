@@ -13,7 +13,11 @@
 //               object in any situation (one motion at a time, Law 1), said in a note at that Motion;
 //             - replaced_by(), what_if_scene(): a situation alone with given motions and without the
 //               items of a what-if (for analysing it afresh);
-//             - what_if_note(): what a what-if result says it took away.
+//             - what_if_note(): what a what-if result says it took away;
+//             - Additions, read_withs(), read_with(), add_to_scene(), with_note(): what `--with` and
+//               the interactive `with` add (a contact, a force), checked the same way: an item the
+//               situation already has is an error, a contact of two faces whose normals are not
+//               opposite a warning (section 3.1.1).
 // Errors:     bad texts go into the Diagnostics (bad input), as `--given:1:1: error: ...`.
 // Knows the scene model only (no engine, no law).
 #pragma once
@@ -59,5 +63,28 @@ void replace_given_motions(Scene& scene, std::span<const Motion> given, std::spa
 // "what-if: analysed without Contact (a b), every force on 'block' (--without)", or empty when
 // situation s has none of the items.
 [[nodiscard]] std::string what_if_note(const Scene& scene, std::size_t s, std::span<const QueryFact> without);
+
+// What a what-if adds to a situation: contacts and forces (issue 17 item 5).
+struct Additions {
+    std::vector<Contact> contacts;
+    std::vector<AddedForce> forces;
+    [[nodiscard]] bool empty() const noexcept { return contacts.empty() && forces.empty(); }
+};
+
+// Every `--with` text read as `Contact A B` or `Force OBJ DIR ORIGIN [CAUSE]`, each added to every
+// situation (to situation `only` when given) that does not have it already: one that every such
+// situation has is an error, located at the option.
+[[nodiscard]] Additions read_withs(const Scene& scene, std::span<const std::string> texts, std::optional<std::size_t> only,
+                                   Diagnostics& diags);
+// The interactive `with FACT[; FACT]...`: contacts or forces that situation s does not have.
+[[nodiscard]] Additions read_with(const Scene& scene, std::size_t s, const std::string& text, Diagnostics& diags);
+// Adds `added` to situation s (from 1; every situation when s is 0) where it is not already, new
+// causes included. Returns, per situation (0-based), the thesis notation of what was added there.
+std::vector<std::vector<std::string>> add_to_scene(Scene& scene, const Additions& added, std::size_t s = 0);
+// "Contact (a b)", "Force (block (0 -) (0 0) wind)": an added item in the scene's notation.
+[[nodiscard]] std::string added_text(const Scene& scene, const Contact& c);
+[[nodiscard]] std::string added_text(const Scene& scene, const AddedForce& f);
+// "what-if: analysed with Contact (a b), Force (...) (--with)", or empty when nothing was added.
+[[nodiscard]] std::string with_note(std::span<const std::string> added, const char* origin = "--with");
 
 }  // namespace qm::scene

@@ -11,6 +11,7 @@
 #include "analysis/scene_facts.hpp"
 #include "engine/engine.hpp"
 #include "engine/rule_compiler.hpp"
+#include "scene/what_if.hpp"
 #include <memory>
 #include <optional>
 #include <vector>
@@ -30,13 +31,22 @@ struct Analysis::State {
     std::vector<engine::ContextRun> runs;     // by situation, 0-based
     std::vector<SituationResult> results;     // by situation, 0-based
 
-    // Runs the laws in situation s (1-based) less `without`; nullopt if they report errors.
+    // Runs the laws in situation s (1-based) less `without`, plus the `added` assumptions (items of
+    // other situations a what-if adds); nullopt if they report errors.
     [[nodiscard]] std::optional<engine::ContextRun> run(std::size_t s, std::span<const QueryFact> without,
-                                                        Diagnostics& diagnostics);
+                                                        Diagnostics& diagnostics,
+                                                        std::span<const atms::AssumptionId> added = {});
     // Reads freedom, motions and stability of situation s in its context environment env; if
     // branches_of is given, the branching sets enumerated with each chain of the result.
     [[nodiscard]] SituationResult read(std::size_t s, atms::EnvId env,
                                        std::vector<std::vector<std::uint32_t>>* branches_of = nullptr);
+    // Fills r.kinematic: the kinematically consistent combinations of situation s less `without`
+    // (the forces taken away; analysis/kinematic_set.cpp). Pre: choices are read.
+    // A stable verdict that relies on the forces gets a note saying so.
+    void add_kinematic(SituationResult& r, std::size_t s, std::span<const QueryFact> without,
+                       std::span<const atms::AssumptionId> added = {});
+    void kinematic_set(SituationResult& r, std::size_t s, std::span<const QueryFact> without,
+                       std::span<const atms::AssumptionId> added);
     // run, then read.
     [[nodiscard]] std::optional<SituationResult> solve(std::size_t s, std::span<const QueryFact> without,
                                                        Diagnostics& diagnostics);
@@ -51,7 +61,8 @@ struct Analysis::State {
     // A new State for situation s alone, with `without` taken away and `given` motions added.
     [[nodiscard]] std::unique_ptr<State> restricted(std::size_t s, std::span<const QueryFact> without,
                                                     std::span<const Motion> given, Diagnostics& diagnostics,
-                                                    std::optional<Granularity> granularity = std::nullopt) const;
+                                                    std::optional<Granularity> granularity = std::nullopt,
+                                                    const scene::Additions* added = nullptr) const;
 };
 
 // Builds a State: loads nothing (program is given), asserts the scene, runs every situation.

@@ -39,6 +39,7 @@ public:
     [[nodiscard]] std::string at(const ast::x3::position_tagged& node) const { return line_column(where(node)); }
     void error(const ast::x3::position_tagged& node, std::string message, std::vector<std::string> notes = {});
     [[nodiscard]] std::size_t errors() const noexcept { return errors_; }
+    void warning(const ast::x3::position_tagged& node, std::string message);
 
     // One sign token; variables (`?x`) only when allowed (constraint entries).
     std::optional<PatternSlot> slot(const ast::SignToken& t, bool allow_variable);
@@ -70,6 +71,8 @@ public:
     // scene_checker_situations.cpp
     std::optional<Motion> motion(const ast::MotionEntry& e);
     std::optional<SurfaceId> surface_ref(const ast::Name& n);
+    // scene_checker_constraints.cpp: one force entry; a cause the scene lacks is added to scene_.
+    std::optional<Force> check_force(const ast::ForceEntry& e);
 
     CheckContext cx_;
     Scene scene_;
@@ -114,7 +117,6 @@ private:
     // constraint either way).
     std::optional<bool> bare_kind(const std::vector<ast::Section>& sections, std::size_t i);
     void constraints(const std::vector<ast::ConstraintEntry>& entries, bool translational);
-    std::optional<Force> check_force(const ast::ForceEntry& e);
     void linkages(const ast::Linkages& l);
 
     // scene_checker_situations.cpp

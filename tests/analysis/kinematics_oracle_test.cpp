@@ -19,6 +19,9 @@
 
 #include <doctest/doctest.h>
 
+#include <fstream>
+#include <iterator>
+
 #include <algorithm>
 #include <array>
 #include <cstdlib>
@@ -998,6 +1001,54 @@ TEST_CASE("analysis/kinematics_oracle: the product agrees with the oracle on the
             CHECK(compare(laws, s, s.situations[k], e, a.situations()[k]).diff == "");
         }
     }
+}
+
+// The kinematically consistent combinations (SituationResult::kinematic, `--kinematic`; issue 17) are
+// what blocking and pushing alone allow, before the forces choose: on scenes with forces they must be
+// exactly the oracle's consistent combinations, which know no force. The thesis' scenes get gravity
+// on every movable object; the crate on a shim on an incline is scenarios/alex/crate_shim.def.
+TEST_CASE("analysis/kinematics_oracle: with forces, the kinematically consistent set is the oracle's") {
+    auto with_gravity = [](std::string text, std::initializer_list<const char*> objects) {
+        std::string forces = " Forces (";
+        for (const char* o : objects) forces += std::string("(") + o + " (0 -) (0 0)) ";
+        const std::size_t defstates = text.find("\n(Defstates");
+        REQUIRE(defstates != std::string::npos);
+        text.insert(defstates - 1, forces + ")");  // inside the Defscenario's last parenthesis
+        return text;
+    };
+    std::ifstream crate(std::string(QM_SOURCE_DIR) + "/scenarios/alex/crate_shim.def");
+    const std::string crate_text((std::istreambuf_iterator<char>(crate)), std::istreambuf_iterator<char>());
+    REQUIRE(!crate_text.empty());
+    std::size_t narrowed = 0;  // situations whose forces select fewer combinations than kinematics allows
+    for (const std::string& src : {with_gravity(block_text, {"block"}), with_gravity(arch_text, {"cross-bar", "left", "right"}),
+                                   crate_text}) {
+        const Scene s = read_ok(src);
+        REQUIRE(!s.forces.empty());
+        const oracle::Laws laws(s);
+        Analysis a = analyse_ok(s);
+        for (std::size_t k = 0; k < s.situations.size(); ++k) {
+            INFO(s.name << " situation " << k + 1);
+            const Expected e = expect(laws, s, s.situations[k], 100000);
+            SituationResult kinematic = a.situations()[k];
+            REQUIRE(kinematic.kinematic_computed);
+            CHECK(kinematic.kinematic_complete);
+            const std::uint64_t selected = kinematic.combination_count();
+            kinematic.chains = kinematic.kinematic;
+            const Verdict v = compare(laws, s, s.situations[k], e, kinematic);
+            INFO(v.diff);
+            CHECK_FALSE((v.freedom || v.partition || v.extra || v.missing || v.narrowed || v.emptied));
+            std::uint64_t count = 1;
+            for (const auto& chain : e.chains) count *= chain.combinations.size();
+            CHECK(kinematic.kinematic_count() == count);
+            CHECK(selected <= count);
+            if (selected < count) ++narrowed;
+            if (s.name == "crate-on-shim") {
+                CHECK(selected == 1);
+                CHECK(count == 150);
+            }
+        }
+    }
+    CHECK(narrowed >= 3);  // the forces do select somewhere: block 2, arch, crate
 }
 
 TEST_CASE("analysis/kinematics_oracle: the product agrees with the oracle on seeded random scenes") {

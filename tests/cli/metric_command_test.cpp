@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include "../support/json_value.hpp"
 #include <doctest/doctest.h>
+#include <regex>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -201,7 +202,7 @@ TEST_CASE("cli/metric_command: --places prints each pair's vocabulary, reuses th
     const Result first = qm_atms("--places " + scene("scotch_yoke.def") + " --cache " + cache);
     CHECK(first.status == 0);
     CHECK(first.out.find("mechanism scotch-yoke: 1 kinematic pair\n") == 0);
-    CHECK(first.out.find("pair crank yoke (q0 = crank: rotation 0..6.283185307 periodic; q1 = yoke: translation -1.4..0.2)\n") != std::string::npos);
+    CHECK(first.out.find("pair crank yoke (q0 = crank: rotation 0..360 degrees periodic; q1 = yoke: translation -1.4..0.2)\n") != std::string::npos);
     CHECK(first.out.find("from cache") == std::string::npos);
     CHECK(count(first.out, "\nplace ") > 10);
     CHECK(count(first.out, "(adjacent ") > 50);
@@ -226,4 +227,34 @@ TEST_CASE("cli/metric_command: --places prints each pair's vocabulary, reuses th
                                " --no-cache");
     CHECK(far.status == 0);
     CHECK(far.out.find("no configuration space for a b: their motion envelopes do not intersect, so they never touch (Def 20)") != std::string::npos);
+}
+
+// Issue 17 item 4: a coordinate a person reads is one they can type. The text of --places gives a
+// rotation in degrees, as --config and --emit-def take it: a join place's point, typed back as a
+// configuration, puts the two parts in contact; the JSON keeps radians and says so per axis.
+TEST_CASE("cli/metric_command: --places prints rotations in degrees, the unit --emit-def and --config take") {
+    const Result text = qm_atms("--places " + scene("scotch_yoke.def") + " --no-cache");
+    REQUIRE(text.status == 0);
+    const Result json = qm_atms("--places " + scene("scotch_yoke.def") + " --no-cache --json");
+    REQUIRE(json.status == 0);
+    CHECK(json.out.find("\"periodic\":true,\"samples\":64,\"unit\":\"radian\"}") != std::string::npos);
+    CHECK(json.out.find("\"samples\":64,\"unit\":\"length\"}") != std::string::npos);
+    const std::regex place(R"(place (\d+) join [^\n]* at \(([-0-9.e]+) ([-0-9.e]+)\)\n)");
+    std::size_t checked = 0, beyond_a_radian = 0;
+    for (auto it = std::sregex_iterator(text.out.begin(), text.out.end(), place); it != std::sregex_iterator() && checked < 6;
+         ++it, ++checked) {
+        const std::string id = (*it)[1], crank = (*it)[2], yoke = (*it)[3];
+        CAPTURE(id);
+        // The same point in the JSON, in radians.
+        const std::regex point("\\{\"id\":" + id + ",[^\\n]*\"points\":\\[\\[([-0-9.e]+),");
+        std::smatch m;
+        REQUIRE(std::regex_search(json.out, m, point));
+        CHECK(std::stod(crank) == doctest::Approx(std::stod(m[1]) * 180.0 / 3.14159265358979323846).epsilon(1e-5));
+        if (std::stod(crank) > 6.3) ++beyond_a_radian;
+        const Result at = qm_atms("--emit-def " + scene("scotch_yoke.def") + " 'crank=" + crank + ", yoke=" + yoke + "'");
+        CHECK(at.status == 0);
+        CHECK(at.out.find("(Contact crank-") != std::string::npos);
+    }
+    CHECK(checked == 6);
+    CHECK(beyond_a_radian > 0);  // read as radians, these would be other configurations
 }

@@ -59,9 +59,17 @@ std::size_t check_schema(const Json& doc, std::size_t objects) {
     const auto& situations = doc["situations"].array();
     for (std::size_t i = 0; i < situations.size(); ++i) {
         const Json& s = situations[i];
-        CHECK(s.object().size() == 4);
+        CHECK(s.object().size() == 6);
         CHECK(s["index"].number() == static_cast<double>(i + 1));
         CHECK(s["stable"].is_bool());
+        // Which set `motions` lists, and both counts (docs/OUTPUT.md "Kinematic and selected").
+        CHECK(s["motion_set"].string() == "selected");
+        const Json& counts = s["combinations"];
+        CHECK(counts.object().size() == 4);
+        CHECK(counts["selected"].number() == static_cast<double>(s["motions"].array().size()));
+        CHECK(counts["selected_complete"].boolean());
+        CHECK(counts["kinematic"].number() >= counts["selected"].number());
+        CHECK(counts["kinematic_complete"].is_bool());
         REQUIRE(s["freedom"].object().size() == objects);
         for (const auto& [name, f] : s["freedom"].object()) {
             CAPTURE(name);
@@ -188,7 +196,7 @@ TEST_CASE("cli/scene_command: the interactive mode answers without reloading") {
                        "whatif Contact tb block-b-l; Contact tb block-b-m; Contact tb block-b-r\n"
                        "given block (0 +) (0)\njson on\nmotions\nbogus\nwhy Contact tb block-b-l\nquit\nfreedom\n");
     CHECK(r.status == 0);
-    CHECK(r.out.find("whatif FACT") != std::string::npos);                       // help
+    CHECK(r.out.find("  whatif Contact A B | Force OBJ [CAUSE] [; ...]") != std::string::npos);                       // help
     CHECK(r.out.find("Translational-Freedom (block (- -))") != std::string::npos);  // situation 1 freedom
     CHECK(r.out.find("Stable: yes") != std::string::npos);                       // situation 2 motions
     CHECK(r.out.find("ruled out") != std::string::npos);                         // why
@@ -443,4 +451,90 @@ TEST_CASE("cli/scene_command: --why about a consistent motion the --limit cut of
     CHECK(r.status == 2);
     CHECK(r.err.find("--why:1:1: error: cannot tell whether Rotational-Motion (follower (-)) is predicted") == 0);
     CHECK(qm_atms(scene("gears.def") + " --why 'Rotational-Motion (follower (-))'").out.find("holds") != std::string::npos);
+}
+
+// The set of combinations a JSON answer lists, each as one string (objects in name order).
+std::multiset<std::string> combinations_of(const Result& r, std::size_t situation = 0) {
+    auto doc = Json::parse(r.out);
+    REQUIRE(doc.has_value());
+    std::multiset<std::string> out;
+    for (const Json& m : (*doc)["situations"].array()[situation]["motions"].array()) {
+        std::string one;
+        for (const auto& [name, motion] : m.object()) one += name + motion["translation"].string() + motion["rotation"].string() + " ";
+        out.insert(one);
+    }
+    return out;
+}
+
+// Issue 17 item 3: the kinematically consistent combinations are those of the same scene with every
+// force taken away (computed here the other way: --without each force, a fresh analysis).
+TEST_CASE("cli/scene_command: --kinematic lists what blocking and pushing alone allow; both counts are shown") {
+    const std::string crate = scene("crate_shim.def");
+    Result text = qm_atms(crate);
+    REQUIRE(text.status == 0);
+    CHECK(text.out.find("  Motions: 1 consistent combination selected by the forces, of 150 kinematically consistent "
+                        "combinations (--kinematic lists them)\n") != std::string::npos);
+    Result listed = qm_atms(crate + " --kinematic");
+    CHECK(listed.out.find("  Motions: 150 kinematically consistent combinations (blocking, pushing and given motions alone, "
+                          "before the forces choose; the forces select 1 combination)\n") != std::string::npos);
+    CHECK(listed.out.find("    Combination 150\n") != std::string::npos);
+    Result json = qm_atms(crate + " --kinematic --json");
+    auto doc = Json::parse(json.out);
+    REQUIRE(doc.has_value());
+    const Json& s = (*doc)["situations"].array()[0];
+    CHECK(s["motion_set"].string() == "kinematic");
+    CHECK(s["combinations"]["selected"].number() == 1);
+    CHECK(s["combinations"]["kinematic"].number() == 150);
+    CHECK(s["motions"].array().size() == 150);
+    Result forceless = qm_atms(crate + " --json --without 'Force crate' --without 'Force shim'");
+    REQUIRE(forceless.status == 0);
+    CHECK(combinations_of(json) == combinations_of(forceless));
+    // Where the forces rule nothing out, the heading says so.
+    CHECK(qm_atms(scene("gears.def")).out.find("Motions: 6 consistent combinations (every kinematically consistent one: "
+                                                "the forces rule none out)\n") != std::string::npos);
+    // A stable verdict that only the forces hold says so (issue 17 item 6).
+    Result block = qm_atms(scene("block.def") + " --situation 2");
+    CHECK(block.out.find("  Stable: yes (the only possible motions are zero)\n  Note: stable only because of the forces: "
+                         "blocking and pushing alone would let block translate (+ +), (+ 0), (0 +), (- +) or (- 0) (6 "
+                         "kinematically consistent combinations, --kinematic lists them); the forces select not moving\n") !=
+          std::string::npos);
+}
+
+// Issue 17 item 5: --with adds; checked against the same scene written with the item.
+TEST_CASE("cli/scene_command: --with adds a contact or a force, and says so") {
+    // Situation 1 of block.def with situation 2's contacts added is situation 2.
+    Result added = qm_atms(scene("block.def") + " --json --situation 1 --with 'Contact tb block-b-l' --with 'Contact tb "
+                                                "block-b-m' --with 'Contact (block-b-r tb)'");
+    REQUIRE(added.status == 0);
+    CHECK(added.err.find("what-if: analysed with Contact (tb block-b-l), Contact (tb block-b-m), Contact (block-b-r tb) "
+                         "(--with)") != std::string::npos);
+    Result two = qm_atms(scene("block.def") + " --json --situation 2");
+    CHECK(combinations_of(added) == combinations_of(two));
+    // A force taken away and added back gives the original answer.
+    const std::string wind = std::string(QM_BINARY_DIR) + "/scene_cli_with_wind.def";
+    std::ofstream(wind) << "(Defscenario 2 wind\n"
+                           "  Individuals (boulder table)\n"
+                           "  Surfaces ((boulder (bo-b (0 -) (0 +))) (table (tb (0 +) (0 0))))\n"
+                           "  Translational-Constraints ((table (?x ?y)))\n"
+                           "  Rotational-Constraints ((table (?r)))\n"
+                           "  Forces ((boulder (0 -) (0 0) gravity)))\n"
+                           "(Defstates ((Contact bo-b tb) (Force boulder (+ 0) (0 0) wind)))\n";
+    Result windy = qm_atms(wind + " --json");
+    Result back = qm_atms(wind + " --json --without 'Force boulder wind' --with 'Force boulder (+ 0) (0 0) gust'");
+    REQUIRE(back.status == 0);
+    CHECK(combinations_of(back) == combinations_of(windy));
+    CHECK(combinations_of(back) != combinations_of(qm_atms(wind + " --json --without 'Force boulder wind'")));
+    Result text = qm_atms(wind + " --without 'Force boulder wind' --with 'Force (boulder (+ 0) (0 0) gust)'");
+    CHECK(text.out.find("  Note: what-if: analysed with Force (boulder (+ 0) (0 0) gust) (--with)\n") != std::string::npos);
+    // What the situation has already, a bad item, and a contact of faces that cannot touch.
+    Result again = qm_atms(scene("block.def") + " --situation 2 --with 'Contact tb block-b-m'");
+    CHECK(again.status == 2);
+    CHECK(again.err == "--with:1:1: error: expected a contact to add, but situation 2 has Contact (tb block-b-m) already\n");
+    Result motion = qm_atms(scene("block.def") + " --with 'Rotational-Motion (block (+))'");
+    CHECK(motion.status == 2);
+    CHECK(motion.err.find("expected 'Contact A B' or 'Force OBJ DIR ORIGIN [CAUSE]' to add, but found") != std::string::npos);
+    Result facing = qm_atms(scene("block.def") + " --situation 1 --with 'Contact tb block-t-m'");
+    CHECK(facing.status == 0);
+    CHECK(facing.err.find("--with:1:1: warning: Contact (tb block-t-m): the surface normals (0 +) of 'tb' and (0 +) of "
+                          "'block-t-m' are not opposite") == 0);
 }

@@ -5,6 +5,7 @@
 #include "engine/engine.hpp"
 #include "engine/ground_atom_text.hpp"
 #include "engine/rule_compiler.hpp"
+#include "engine/rule_spec_reader.hpp"
 #include <doctest/doctest.h>
 #include <filesystem>
 #include <fstream>
@@ -17,6 +18,31 @@
 
 namespace qm::test {
 
+// `input (p ?a1 .. ?an)` for every predicate rules/ declares as input or output or concludes.
+inline const std::vector<std::string>& theory_inputs() {
+    static const std::vector<std::string> lines = [] {
+        std::vector<std::string> files;
+        for (const auto& e : std::filesystem::directory_iterator(std::string(QM_SOURCE_DIR) + "/rules"))
+            if (e.path().extension() == ".rules") files.push_back(e.path().string());
+        engine::ProgramSpec spec;
+        Diagnostics d;
+        engine::read_rule_files(files, spec, d);
+        std::set<std::string> out;
+        auto add = [&](const engine::AtomSpec& a) {
+            std::string line = "input (" + a.predicate;
+            for (std::size_t i = 0; i < a.args.size(); ++i) line += " ?a" + std::to_string(i);
+            out.insert(line + ")");
+        };
+        for (const auto& a : spec.inputs) add(a);
+        for (const auto& a : spec.outputs) add(a);
+        for (const auto& r : spec.rules)
+            for (const auto& c : r.consequents)
+                if (c.kind != engine::ConsequentSpec::Kind::falsity) add(c.atom);
+        return std::vector<std::string>(out.begin(), out.end());
+    }();
+    return lines;
+}
+
 class Laws {
 public:
     // laws: file names in rules/ ("contact.rules"); facts: rule-language text (fact ... lines).
@@ -28,6 +54,11 @@ public:
         {
             std::ofstream out(path);
             for (const auto& l : laws) out << "include \"" << QM_SOURCE_DIR << "/rules/" << l << "\"\n";
+            // The rule checker must know where the facts of a law's conditions come from. A few
+            // laws alone are part of the theory: what the driver asserts (rules/scene_facts.rules),
+            // and what the laws left out conclude (motions, freedoms, touches, pushes), come in as
+            // inputs, which a test's facts may state.
+            for (const std::string& line : theory_inputs()) out << line << '\n';
             out << facts << '\n';
         }
         Diagnostics d;

@@ -136,7 +136,7 @@ TEST_CASE("scenarios/chapter3: every bundled scene loads and is analysed") {
     for (const char* name : {"arch.def", "block.def", "block_3d.def", "block_boulder.def", "block_stack.def",
                              "corner_contacts.def", "force_feedback.def", "gears.def", "lever.def",
                              "recoil_escapement.def", "wedge_ramp.def", "wedge_ramp_catch.def", "linked_gears.def",
-                             "squeeze.def", "wedge_push.def"}) {
+                             "squeeze.def", "wedge_push.def", "crate_shim.def"}) {
         CAPTURE(name);
         const scene::Scene scene = load_scene(name);
         analysis::Analysis a = analyse(scene);

@@ -363,7 +363,7 @@ TEST_CASE("scene/scene_parser: --given motions") {
     CHECK_FALSE(parse_given(s, "palet (0 0) (+)", bad).has_value());
     std::ostringstream os;
     bad.print(os);
-    CHECK(os.str() == "--given:1:1: error: object 'palet' in a motion is not declared in Individuals\n"
+    CHECK(os.str() == "--given:1:1: error: object 'palet' in a motion is not declared in Individuals; did you mean 'pallet'?\n"
                       "  palet (0 0) (+)\n  ^\n");
 
     qm::Diagnostics arity;
@@ -417,11 +417,11 @@ TEST_CASE("scene/scene_parser: query facts") {
     };
     CHECK(err("Rotational-Motion (follower (+ +))") ==
           "29: a rotation needs 1 sign in a 2-D scene but has 2");
-    CHECK(err("Rotational-Motion (folower (+))") == "20: object 'folower' in the fact is not declared in Individuals");
+    CHECK(err("Rotational-Motion (folower (+))") == "20: object 'folower' in the fact is not declared in Individuals; did you mean 'follower'?");
     CHECK(err("Spinning (driver (+))") ==
           "1: unknown predicate 'Spinning': expected Translational-Motion, Rotational-Motion, Translational-Freedom, "
           "Rotational-Freedom, Contact or Force");
-    CHECK(err("Contact l-1 d-9") == "13: unknown surface 'd-9'");
+    CHECK(err("Contact l-1 d-9") == "13: unknown surface 'd-9'; did you mean 'd-1'?");
     CHECK(err("Contact l-1") == "9: Contact needs two surfaces");
     CHECK(err("Rotational-Motion (driver)") == "20: rotational-motion needs a direction after the object, like (driver (0 +))");
     CHECK(err("Rotational-Motion (driver (--))") ==
