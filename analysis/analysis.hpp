@@ -17,6 +17,7 @@
 #pragma once
 #include "analysis/fwd.hpp"
 #include "analysis/granularity.hpp"
+#include "engine/run_options.hpp"
 #include "scene/scene.hpp"
 #include "qm/diagnostics.hpp"
 #include "qm/id.hpp"
@@ -39,6 +40,9 @@ struct AnalysisOptions {
     // Empty: `item` when every situation has at most auto_item_limit items, else `situation`.
     std::optional<Granularity> granularity;
     static constexpr std::size_t auto_item_limit = 64;
+    // Bounds on the engine's facts and environments (engine/run_options.hpp); reaching one throws
+    // qm::LimitReached out of analyse() or a query (the Analysis must then be dropped).
+    engine::EngineLimits limits;
 };
 
 // Free directions of one object (zero included), canonical order.

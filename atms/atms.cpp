@@ -290,22 +290,22 @@ std::size_t Atms::for_each_interpretation(std::span<const std::vector<Assumption
             owner[a.value] = static_cast<std::int64_t>(s);
         }
     }
-    return enumerate_interpretations(nogoods_, assumption_nodes_.size(), choice_sets, envs_[base], visit);
+    // A copy: a visitor may intern environments (interpretations() does), which moves the table's.
+    const Environment base_env = envs_[base];
+    return enumerate_interpretations(nogoods_, assumption_nodes_.size(), choice_sets, base_env, visit);
 }
 
 std::vector<EnvId> Atms::interpretations(std::span<const std::vector<AssumptionId>> choice_sets, EnvId base) {
-    std::vector<Environment> found;
-    for_each_interpretation(choice_sets, base, [&](const Environment& e) {
-        found.push_back(e);
-        return true;
-    });
+    // Each interpretation is interned as it is found, so that the environment limit
+    // (limit_environments) bounds the enumeration: collecting them first let 40 binary choice
+    // sets fill the memory before the limit was consulted.
     std::vector<EnvId> out;
-    out.reserve(found.size());
     std::unordered_set<EnvId> seen;  // a choice repeated within a set gives the same env twice
-    for (const Environment& e : found) {
+    for_each_interpretation(choice_sets, base, [&](const Environment& e) {
         const EnvId id = envs_.intern(e, nogoods_);
         if (seen.insert(id).second) out.push_back(id);
-    }
+        return true;
+    });
     return out;
 }
 

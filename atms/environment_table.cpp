@@ -2,6 +2,7 @@
 #include "atms/environment_table.hpp"
 
 #include "qm/assert.hpp"
+#include "qm/limit_reached.hpp"
 #include <utility>
 
 namespace qm::atms {
@@ -18,6 +19,7 @@ EnvId EnvironmentTable::intern_consistent(const Environment& e, const NogoodData
 }
 
 EnvId EnvironmentTable::add(const Environment& e, bool nogood) {
+    if (limit_ && envs_.size() >= *limit_) throw LimitReached(LimitReached::Kind::environments, *limit_);
     Entry entry;
     entry.env = e;
     entry.count = e.size();
