@@ -61,11 +61,23 @@ std::optional<IdVector<ObjectId, ObjectChoices>> read_choices(const Scene& scene
 std::vector<std::string> law_files(const std::filesystem::path& dir, Diagnostics& diagnostics) {
     std::error_code ec;
     std::vector<std::string> files;
-    if (std::filesystem::is_directory(dir, ec))
-        for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
-            if (entry.is_regular_file() && entry.path().extension() == ".rules") files.push_back(entry.path().string());
-    if (files.empty())
-        diagnostics.error({dir.string(), 1, 1}, "expected a folder of .rules files (the laws), but found none here");
+    // Why the folder gives no laws, in words a user can act on (issue 19: an unreadable folder
+    // said `found none here`).
+    auto refuse = [&](const std::string& why) {
+        diagnostics.error({dir.string(), 1, 1}, "expected a folder of .rules files (the laws), but " + why);
+        return std::vector<std::string>{};
+    };
+    const std::filesystem::file_status st = std::filesystem::status(dir, ec);
+    if (ec && ec != std::errc::no_such_file_or_directory) return refuse("it cannot be read: " + ec.message());
+    if (!std::filesystem::exists(st)) return refuse("there is no such folder");
+    if (!std::filesystem::is_directory(st)) return refuse("it is a file, not a folder");
+    std::filesystem::directory_iterator it(dir, ec), end;
+    if (ec) return refuse("it cannot be read: " + ec.message());
+    for (; it != end; it.increment(ec)) {
+        if (ec) return refuse("it cannot be read: " + ec.message());
+        if (it->is_regular_file(ec) && it->path().extension() == ".rules") files.push_back(it->path().string());
+    }
+    if (files.empty()) return refuse("it holds none");
     std::sort(files.begin(), files.end());
     return files;
 }
@@ -236,6 +248,7 @@ std::unique_ptr<Analysis::State> build_state(const Scene& scene, const AnalysisO
     state->options = options;
     state->program = program;
     state->engine = std::make_unique<engine::Engine>(program.program, program.values);
+    state->engine->set_limits(options.limits);
     Granularity granularity = Granularity::item;
     if (options.granularity) granularity = *options.granularity;
     else

@@ -18,6 +18,7 @@
 #include "analysis/fwd.hpp"
 #include "analysis/granularity.hpp"
 #include "engine/law_check.hpp"
+#include "engine/run_options.hpp"
 #include "scene/scene.hpp"
 #include "scene/what_if.hpp"
 #include "qm/diagnostics.hpp"
@@ -46,6 +47,9 @@ struct AnalysisOptions {
     // scene analysed one assumption per situation (docs/ANALYSIS.md "Kinematic and selected").
     bool kinematic = false;
     static constexpr std::size_t kinematic_count_cap = 1000;
+    // Bounds on the engine's facts and environments (engine/run_options.hpp); reaching one throws
+    // qm::LimitReached out of analyse() or a query (the Analysis must then be dropped).
+    engine::EngineLimits limits;
 };
 
 // Free directions of one object (zero included), canonical order.

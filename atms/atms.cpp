@@ -243,29 +243,29 @@ const Environment& Atms::env(EnvId e) const {
 std::size_t Atms::for_each_interpretation(std::span<const std::vector<AssumptionId>> choice_sets, EnvId base,
                                           const std::function<bool(const Environment&)>& visit) const {
     require_env(base);
-    // The preconditions on the sets (known ids, disjoint) are checked there.
-    return enumerate_interpretations(nogoods_, assumption_nodes_.size(), choice_sets, envs_[base], visit);
+    // The preconditions on the sets (known ids, disjoint) are checked there. A copy of the base: a
+    // visitor may intern environments (interpretations() does), which moves the table's.
+    const Environment base_env = envs_[base];
+    return enumerate_interpretations(nogoods_, assumption_nodes_.size(), choice_sets, base_env, visit);
 }
 
 std::vector<EnvId> Atms::interpretations(std::span<const std::vector<AssumptionId>> choice_sets, EnvId base) {
-    std::vector<Environment> found;
-    for_each_interpretation(choice_sets, base, [&](const Environment& e) {
-        found.push_back(e);
-        return true;
-    });
+    // Each interpretation is interned as it is found, so that the environment limit
+    // (limit_environments) bounds the enumeration: collecting them first let 40 binary choice
+    // sets fill the memory before the limit was consulted.
     std::vector<EnvId> out;
-    out.reserve(found.size());
-    for (const Environment& e : found) out.push_back(envs_.intern_consistent(e, nogoods_));  // found consistent
-    // A choice repeated within a set gives the same env twice: keep the first.
+    // A choice repeated within a set gives the same env twice: keep the first (checked only then).
     const bool repeats = std::any_of(choice_sets.begin(), choice_sets.end(), [](const std::vector<AssumptionId>& set) {
         std::vector<AssumptionId> sorted = set;
         std::sort(sorted.begin(), sorted.end());
         return std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
     });
-    if (repeats) {
-        std::unordered_set<EnvId> seen;
-        std::erase_if(out, [&](EnvId id) { return !seen.insert(id).second; });
-    }
+    std::unordered_set<EnvId> seen;
+    for_each_interpretation(choice_sets, base, [&](const Environment& e) {
+        const EnvId id = envs_.intern_consistent(e, nogoods_);  // found consistent
+        if (!repeats || seen.insert(id).second) out.push_back(id);
+        return true;
+    });
     return out;
 }
 

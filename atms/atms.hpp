@@ -89,6 +89,9 @@ public:
     [[nodiscard]] std::size_t assumption_count() const noexcept { return assumption_nodes_.size(); }
     [[nodiscard]] std::size_t justification_count() const noexcept { return justs_.size(); }
     [[nodiscard]] std::size_t environment_count() const noexcept { return envs_.size(); }
+    // At most `n` environments (none: no limit, the default): interning one more throws
+    // qm::LimitReached (qm/limit_reached.hpp), after which this Atms must only be destroyed.
+    void limit_environments(std::optional<std::size_t> n) { envs_.set_limit(n); }
     // Pre (all node queries): the id was issued by this Atms.
     [[nodiscard]] DatumId datum(NodeId n) const;
     [[nodiscard]] bool is_premise(NodeId n) const;

@@ -2,6 +2,7 @@
 #include "atms/environment_table.hpp"
 
 #include "qm/assert.hpp"
+#include "qm/limit_reached.hpp"
 #include <bit>
 #include <utility>
 
@@ -42,6 +43,7 @@ void EnvironmentTable::grow() {
 }
 
 EnvId EnvironmentTable::add(const Environment& e, std::size_t hash, bool nogood) {
+    if (limit_ && envs_.size() >= *limit_) throw LimitReached(LimitReached::Kind::environments, *limit_);
     Entry entry;
     entry.env = e;
     entry.hash = hash;

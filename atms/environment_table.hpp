@@ -9,6 +9,10 @@
 // Invariants: the nogood flag of an env is true iff some nogood of the NogoodDatabase passed to
 //             intern()/join() is a subset of it, provided the owner calls mark_nogood on every
 //             superset when a nogood is added (Atms does).
+// Limit:      an optional bound on the number of environments (set_limit): interning one more
+//             throws qm::LimitReached (qm/limit_reached.hpp) before anything changes here; the
+//             caller (an Atms mid-update) must then be discarded. Without it a runaway program
+//             fills the machine's memory with environments (issue 19).
 // Knows nothing of justifications or rules.
 #pragma once
 #include "qm/assert.hpp"
@@ -36,6 +40,8 @@ public:
     EnvId join(EnvId x, EnvId y, const NogoodDatabase& nogoods);
 
     [[nodiscard]] std::size_t size() const noexcept { return envs_.size(); }
+    // At most `n` environments from now on (none: no limit).
+    void set_limit(std::optional<std::size_t> n) { limit_ = n; }
     [[nodiscard]] bool contains(EnvId e) const noexcept { return envs_.contains(e); }
     // Pre (checked, also in release builds: an unknown id is an InternalError): e valid.
     [[nodiscard]] const Environment& operator[](EnvId e) const { return entry(e).env; }
@@ -75,5 +81,6 @@ private:
     std::unordered_map<std::uint64_t, EnvId> joins_;  // key: (min id << 32) | max id
     std::vector<std::vector<EnvId>> by_assumption_;   // indexed by AssumptionId::value
     std::vector<EnvId> none_;
+    std::optional<std::size_t> limit_;
 };
 }  // namespace qm::atms

@@ -140,10 +140,10 @@ int draw_command(std::span<const std::string> args, std::ostream& out, std::ostr
         for (std::uint32_t i = 0; i < m->parts.size(); ++i) drawn.push_back(g::PartId{i});
         const auto contacts = g::mechanism_contacts(*m, *q, drawn);
         for (const auto& pair : contacts.overlapping)
-            diags.add({Severity::warning, pair.where,
+            diags.add(Severity::warning, pair.where,
                        "'" + m->parts[pair.a].name + "' and '" + m->parts[pair.b].name + "' overlap at " +
                            (a.config.empty() ? std::string("the drawn configuration") : "'" + a.config + "'") + " (drawn all the same)",
-                       m->source ? m->source->line_of(pair.where) : std::string(), {}});
+                      m->source ? m->source->line_of(pair.where) : std::string_view());
         diags.print(err);
         title = m->name + (a.config.empty() ? std::string(" as drawn") : " at " + a.config);
         g::write_parts_svg(svg, g::drawn_parts(*m, *q, drawn), contacts.marks, {a.width, a.height, title, true, m->settings.normal_zero_tolerance});

@@ -6,10 +6,12 @@
 #include "envision_command.hpp"
 #include "explore_command.hpp"
 #include "metric_command.hpp"
+#include "resource_limits.hpp"
 #include "run_command.hpp"
 #include "scene_command.hpp"
 #include <exception>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -17,7 +19,7 @@ namespace {
 
 constexpr const char* usage =
     "usage: qm-atms SCENE.def [options]          analyse a scene (thesis chapters 6-7)\n"
-    "       qm-atms run PROGRAM.rules [--why 'FACT'] [--json]\n"
+    "       qm-atms run PROGRAM.rules [--why 'FACT'] [--json] [--max-facts N] [--max-environments N] [--max-memory SIZE]\n"
     "       qm-atms envision METRIC-SCENE [options]    the envisionment of a mechanism (thesis chapters 8-9)\n"
     "       qm-atms check [RULES-DIR | FILE.rules]... [--dimensions 2|3]\n"
     "       qm-atms --help\n";
@@ -63,6 +65,16 @@ int main(int argc, char** argv) {
         }
         doing = "analysing " + args[0];
         return qm::cli::scene_command(args, std::cin, std::cout, std::cerr);
+    } catch (const qm::LimitReached& e) {  // a resource limit (cli/resource_limits.hpp): bad input at these settings
+        std::cerr << qm::cli::limit_message(e, doing);
+        return 2;
+    } catch (const std::bad_alloc&) {
+        if (auto m = qm::cli::memory_limit_message(doing)) {
+            std::cerr << *m;
+            return 2;
+        }
+        std::cerr << "qm-atms: internal error: out of memory (while " << doing << ")\n";
+        return 1;
     } catch (const qm::InternalError& e) {
         std::cerr << "qm-atms: internal error: " << e.what() << " (while " << doing << ")\n";
         return 1;

@@ -40,7 +40,7 @@ a::DirectionPattern any_translation() { return {a::PatternSlot{std::nullopt, "x"
 a::DirectionPattern any_rotation() { return {a::PatternSlot{std::nullopt, "r"}}; }
 
 void warn(Diagnostics& diags, const g::Mechanism& m, const SourceLocation& where, std::string message) {
-    diags.add({Severity::warning, where, std::move(message), m.source ? m.source->line_of(where) : std::string(), {}});
+    diags.add(Severity::warning, where, std::move(message), m.source ? m.source->line_of(where) : std::string_view());
 }
 
 // Builds the Alex model of the mechanism at one configuration.

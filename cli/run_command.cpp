@@ -9,6 +9,7 @@
 #include "engine/run_report.hpp"
 #include "engine/why.hpp"
 #include "engine/why_printer.hpp"
+#include "resource_limits.hpp"
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -20,36 +21,33 @@ struct RunOptions {
     std::string program;
     std::optional<std::string> why;
     bool json = false;
+    ResourceLimits limits;  // --max-facts, --max-environments, --max-memory
 };
 
 std::optional<RunOptions> parse(std::span<const std::string> args, std::ostream& err) {
     RunOptions o;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
+    CommandLine cl(args, err);
+    while (cl.next()) {
+        const std::string& a = cl.arg();
         if (a == "--json") {
             o.json = true;
         } else if (a == "--why") {
-            if (i + 1 >= args.size()) {
-                err << "qm-atms: error: --why needs a fact, e.g. --why '(queen 1 2)'\n";
-                return std::nullopt;
-            }
-            if (o.why) {  // one explanation per run: a second --why would silently replace the first
-                err << "qm-atms: error: --why is given twice ('" << *o.why << "', '" << args[i + 1] << "')\n";
-                return std::nullopt;
-            }
-            o.why = args[++i];
-        } else if (!a.empty() && a[0] == '-') {
-            err << "qm-atms: error: unknown option '" << a << "'\n";
+            // One explanation per run: a second --why would silently replace the first.
+            if (!cl.single(o.why, "a fact, e.g. --why '(queen 1 2)'", "ask one at a time")) return std::nullopt;
+        } else if (auto read = read_limit_option(cl, o.limits)) {
+            if (!*read) return std::nullopt;
+        } else if (cl.is_option()) {
+            cl.unknown();
             return std::nullopt;
         } else if (o.program.empty()) {
             o.program = a;
         } else {
-            err << "qm-atms: error: more than one program given ('" << o.program << "', '" << a << "')\n";
+            cl.error("more than one program given ('" + o.program + "', '" + a + "')");
             return std::nullopt;
         }
     }
     if (o.program.empty()) {
-        err << "qm-atms: error: no program given\n";
+        cl.error("no program given");
         return std::nullopt;
     }
     return o;
@@ -73,13 +71,14 @@ void print_diagnostics(const Diagnostics& diagnostics, std::ostream& err) {
 
 }  // namespace
 
-const char* run_usage() noexcept {
+std::string run_usage() {
     return "usage: qm-atms run PROGRAM.rules [--why 'FACT'] [--json]\n"
            "  runs a rule program; prints each fact with its label, the minimal nogoods and the\n"
            "  interpretations of the declared choice sets\n"
            "  --why 'FACT'  explain FACT, e.g. '(queen 1 2)': its justifications, or the nogoods ruling it out\n"
            "  --json        print {\"facts\": [...], \"nogoods\": [...], \"interpretations\": [...]};\n"
-           "                with --why, the explanation as JSON (docs/RULES.md)\n";
+           "                with --why, the explanation as JSON (docs/RULES.md)\n" +
+           std::string(limits_usage());
 }
 
 int run_command(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
@@ -88,6 +87,7 @@ int run_command(std::span<const std::string> args, std::ostream& out, std::ostre
         err << run_usage();
         return 2;
     }
+    apply_memory_limit(options->limits);
     Diagnostics diagnostics;
     auto loaded = engine::load_program(options->program, diagnostics);
     if (!loaded || diagnostics.has_errors()) {
@@ -97,6 +97,7 @@ int run_command(std::span<const std::string> args, std::ostream& out, std::ostre
     print_diagnostics(diagnostics, err);  // warnings (a rule that can never fire, ...)
     diagnostics = Diagnostics{};
     engine::Engine e(std::move(loaded->program), std::move(loaded->values));
+    e.set_limits(options->limits.engine_limits());
     e.run(diagnostics);
     if (diagnostics.has_errors()) {
         print_diagnostics(diagnostics, err);
@@ -128,7 +129,13 @@ int run_command(std::span<const std::string> args, std::ostream& out, std::ostre
         else out << engine::print_why(answer);
         return 0;
     }
-    engine::RunReport report = engine::make_report(e);
+    engine::RunReport report;
+    try {
+        report = engine::make_report(e);
+    } catch (LimitReached& limit) {
+        if (limit.doing.empty()) limit.doing = "enumerating the interpretations of " + options->program;
+        throw;
+    }
     if (options->json) out << engine::to_json(report) << '\n';
     else out << engine::print_report(report);
     return 0;

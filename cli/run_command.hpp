@@ -14,5 +14,5 @@
 namespace qm::cli {
 // args: the arguments after `run`.
 [[nodiscard]] int run_command(std::span<const std::string> args, std::ostream& out, std::ostream& err);
-[[nodiscard]] const char* run_usage() noexcept;
+[[nodiscard]] std::string run_usage();
 }  // namespace qm::cli

@@ -11,39 +11,42 @@
 #include "scene/scene_parser.hpp"
 #include "scene/what_if.hpp"
 #include "scene_options.hpp"
+#include "qm/file_text.hpp"
+#include "qm/source_text.hpp"
 #include "session.hpp"
 #include <cctype>
-#include <fstream>
+#include <charconv>
 #include <optional>
+#include <sstream>
 
 namespace qm::cli {
 namespace {
 
-// A metric scene (docs/METRIC_SCENE_FORMAT.md) opens with `(Defmechanism`, after blanks and `;`
-// comments; an Alex scene does not.
-bool is_metric_scene(const std::string& path) {
-    std::ifstream in(path);
-    std::string word;
-    char c = 0;
-    while (in.get(c)) {
-        if (c == ';') {
-            std::string rest;
-            std::getline(in, rest);
-        } else if (!std::isspace(static_cast<unsigned char>(c))) {
-            if (c != '(') return false;
-            while (in.get(c) && std::isspace(static_cast<unsigned char>(c))) {
-            }
-            do word += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-            while (in.get(c) && std::isalnum(static_cast<unsigned char>(c)));
-            return word == "defmechanism";
-        }
+// A metric scene (docs/METRIC_SCENE_FORMAT.md) opens with `(Defmechanism`, after a byte-order
+// mark, blanks and `;` comments; an Alex scene does not.
+bool is_metric_scene(std::string_view text) {
+    std::size_t i = text.starts_with(SourceText::byte_order_mark) ? SourceText::byte_order_mark.size() : 0;
+    for (;;) {
+        while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+        if (i >= text.size() || text[i] != ';') break;
+        while (i < text.size() && text[i] != '\n') ++i;
     }
-    return false;
+    if (i >= text.size() || text[i] != '(') return false;
+    for (++i; i < text.size() && std::isspace(static_cast<unsigned char>(text[i]));) ++i;
+    std::string word;
+    for (; i < text.size() && std::isalnum(static_cast<unsigned char>(text[i])) && word.size() < 12; ++i)
+        word += static_cast<char>(std::tolower(static_cast<unsigned char>(text[i])));
+    return word == "defmechanism";
 }
 
 // The scene of options.scene: a metric scene at --config, else an Alex scene. Errors in d.
 std::optional<scene::Scene> load_scene(const SceneOptions& options, Diagnostics& d, std::ostream& err) {
-    if (is_metric_scene(options.scene)) {
+    FileText file = read_file_text(options.scene);
+    if (!file.text) {
+        d.error({options.scene, 1, 1}, "cannot read scene file '" + options.scene + "': " + file.why_not);
+        return std::nullopt;
+    }
+    if (is_metric_scene(*file.text)) {
         // A metric scene is analysed at a configuration, as the Alex scene --emit-def would write.
         auto scene = metric_scene_at(options.scene, options.config.value_or(""), d);
         if (scene && !d.items().empty()) {
@@ -53,7 +56,19 @@ std::optional<scene::Scene> load_scene(const SceneOptions& options, Diagnostics&
         return scene;
     }
     if (options.config) d.error({"--config", 1, 1}, "expected a metric scene (Defmechanism) with --config");
-    return scene::read_scene_file(options.scene, d);
+    return scene::read_scene(options.scene, std::move(*file.text), d);
+}
+
+// --situation N against a scene of `situations` situations, located like every other
+// out-of-range value of a command-line query.
+std::optional<std::size_t> check_situation(const std::string& text, std::size_t situations, Diagnostics& d) {
+    long long n = 0;
+    const auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+    const bool number = ec == std::errc{} && p == text.data() + text.size() && !text.empty();
+    if (number && n >= 1 && static_cast<unsigned long long>(n) <= situations) return static_cast<std::size_t>(n);
+    d.error({"--situation", 1, 1}, "expected a situation from 1 to " + std::to_string(situations) + ", but found " +
+                                       (number ? std::to_string(n) : "'" + text + "'"));
+    return std::nullopt;
 }
 
 // The results as asked: every situation or --situation's, each what-if result saying what it took
@@ -86,7 +101,7 @@ void print_results(const analysis::Analysis& analysis, const SceneOptions& optio
 
 }  // namespace
 
-const char* scene_usage() noexcept {
+std::string scene_usage() {
     return "usage: qm-atms SCENE.def [--json] [--kinematic] [--why FACT [--situation N]] [--given 'OBJ TRANS ROT']...\n"
            "                         [--without 'Contact A B' | 'Force OBJ [CAUSE]']... [--with 'Contact A B' | 'Force OBJ DIR ORIGIN [CAUSE]']...\n"
            "                         [--rules DIR] [--limit N] [-i]\n"
@@ -107,7 +122,8 @@ const char* scene_usage() noexcept {
            "  --limit N       stop enumerating a chain's combinations after N (default 100000)\n"
            "  -i              answer queries typed on standard input (type help)\n"
            "  --config C      a metric scene (docs/METRIC_SCENE_FORMAT.md) is analysed at configuration C,\n"
-           "                  e.g. 'wheel=12, pallets=-3' (degrees or lengths; parts not named stay as drawn)\n";
+           "                  e.g. 'wheel=12, pallets=-3' (degrees or lengths; parts not named stay as drawn)\n" +
+           std::string(limits_usage());
 }
 
 int scene_command(std::span<const std::string> args, std::istream& in, std::ostream& out, std::ostream& err) {
@@ -116,6 +132,7 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
         err << scene_usage();
         return 2;
     }
+    apply_memory_limit(options->limits);
     Diagnostics d;
     std::optional<scene::Scene> scene = load_scene(*options, d, err);
     if (!scene || d.has_errors()) {
@@ -125,11 +142,13 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     analysis::AnalysisOptions ao;
     ao.combination_limit = options->limit;
     ao.kinematic = options->kinematic;
+    ao.limits = options->limits.engine_limits();
     ao.given = scene::read_givens(*scene, options->given, d);
     // A --given motion replaces a Motion the scene gives the same object (a what-if, like --without),
     // said in a note at that Motion.
     if (!d.has_errors()) scene::replace_given_motions(*scene, ao.given, options->given, d);
     const std::size_t situations = scene->situations.size();
+    if (options->situation_text && situations > 0) options->situation = check_situation(*options->situation_text, situations, d);
     const std::size_t situation = options->situation.value_or(1);
     ao.without = scene::read_withouts(*scene, options->without, options->situation, d);
     // --with adds contacts and forces to the scene before it is analysed (to situation N only with
@@ -142,13 +161,10 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     std::optional<scene::QueryFact> why;
     if (options->why)
         if (auto text = query_text(*options->why, "--why", d)) why = scene::parse_query_fact(*scene, *text, d, "--why");
-    if (situations == 0 && (options->why || options->situation || options->interactive))
+    if (situations == 0 && (options->why || options->situation_text || options->interactive))
         d.error({options->interactive ? "-i" : options->why ? "--why" : "--situation", 1, 1},
                 "expected a scene with situations to ask about, but " + options->scene +
                     " states none (no Defstates, Situation or CONTACT list)");
-    else if ((options->why || options->situation) && situation > situations)
-        d.error({"--situation", 1, 1}, "expected a situation from 1 to " + std::to_string(situations) + ", but found " +
-                                           std::to_string(situation));
     if (options->rules) ao.rules_directory = *options->rules;
     else if (auto dir = default_rules_directory()) ao.rules_directory = *dir;
     else d.error({"--rules", 1, 1}, "expected the folder of laws: none installed beside qm-atms; give --rules DIR");
@@ -169,16 +185,20 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
         run_session(*analysis, options->json, in, out, err);
         return 0;
     }
+    // The answer is written whole or not at all: a limit reached while it is being made
+    // (qm/limit_reached.hpp, --max-memory) leaves standard output empty.
+    std::ostringstream answer;
     if (why) {
         auto w = analysis->why(*why, situation, d);
         if (!w) {
             d.print(err);
             return 2;
         }
-        options->json ? analysis::write_why_json(out, *w) : analysis::print_why(out, *w);
-        return 0;
+        options->json ? analysis::write_why_json(answer, *w) : analysis::print_why(answer, *w);
+    } else {
+        print_results(*analysis, *options, ao.without, added, answer, err);
     }
-    print_results(*analysis, *options, ao.without, added, out, err);
+    out << answer.str();
     return 0;
 }
 

@@ -15,5 +15,5 @@
 namespace qm::cli {
 [[nodiscard]] int scene_command(std::span<const std::string> args, std::istream& in, std::ostream& out,
                                 std::ostream& err);
-[[nodiscard]] const char* scene_usage() noexcept;
+[[nodiscard]] std::string scene_usage();
 }  // namespace qm::cli

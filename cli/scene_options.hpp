@@ -1,9 +1,11 @@
 // cli/scene_options.hpp
 // Provides:   SceneOptions, the options of `qm-atms SCENE.def` (cli/scene_command.hpp, whose usage
-//             text lists them), read by parse_scene_options(); and positive(), a positive decimal
-//             number as --situation, --limit and the interactive `situation N` take it.
-// Errors:     a bad command line is reported on err as `qm-atms: error: ...` and gives nullopt.
+//             text lists them), read by parse_scene_options().
+// Errors:     a bad command line is reported on err as `qm-atms: error: ...` (cli/command_line.hpp)
+//             and gives nullopt; --situation is checked against the scene once it is read.
 #pragma once
+#include "command_line.hpp"
+#include "resource_limits.hpp"
 #include <cstddef>
 #include <optional>
 #include <ostream>
@@ -19,14 +21,15 @@ struct SceneOptions {
     bool interactive = false;
     bool kinematic = false;  // list the kinematically consistent combinations (docs/OUTPUT.md)
     std::optional<std::string> why;
-    std::optional<std::size_t> situation;
+    std::optional<std::string> situation_text;  // --situation as given
+    std::optional<std::size_t> situation;       // --situation once checked against the scene
     std::vector<std::string> given, without, with;  // as written; read and checked by scene/what_if.hpp
     std::optional<std::string> rules;
     std::optional<std::string> config;  // metric scenes: the configuration (cli/metric_command.hpp)
     std::size_t limit = 100000;
+    ResourceLimits limits;  // --max-facts, --max-environments, --max-memory
 };
 
 [[nodiscard]] std::optional<SceneOptions> parse_scene_options(std::span<const std::string> args, std::ostream& err);
-[[nodiscard]] std::optional<std::size_t> positive(const std::string& s);
 
 }  // namespace qm::cli

@@ -35,6 +35,9 @@ BuiltinResult BuiltinRegistry::apply(BuiltinId id, ValueTable& values, std::span
     if (const ValueTable::Application* known = values.remembered(key, args))
         return BuiltinResult{known->value, known->holds, known->error};
     BuiltinResult r = b.fn(values, args);
+    if (r.value && values.print(*r.value).size() > max_value_text)
+        r = BuiltinResult::fail("'" + b.name + "' would make a value of " + std::to_string(values.print(*r.value).size()) +
+                                " characters, more than the " + std::to_string(max_value_text) + " a value may have");
     values.remember(key, args, {r.value, r.holds, r.error});
     return r;
 }

@@ -8,6 +8,9 @@
 //             always give the same result, so a rule firing can be replayed from its binding.
 // Errors:     a builtin applied to values outside its domain (e.g. `neg` of a symbol) reports an error
 //             text; the engine turns it into a located diagnostic. It never throws for bad values.
+//             So does a result longer than max_value_text when printed: a set made of the previous
+//             one twice over, `(set-add ?s ?s)`, doubles its text at each firing, and a value is
+//             printed (and interned by its text, value_table.hpp) whole.
 // Knows nothing of the ATMS or of mechanics.
 #pragma once
 #include "engine/fwd.hpp"
@@ -50,6 +53,9 @@ public:
                   BuiltinFn fn);
     [[nodiscard]] std::optional<BuiltinId> find(std::string_view name) const;
     [[nodiscard]] const Builtin& get(BuiltinId id) const;  // Pre: id valid
+    // The longest printed text a builtin's result may have: above the largest `range` (100000
+    // integers of up to 20 characters each print in at most 2,100,001 characters).
+    static constexpr std::size_t max_value_text = 4000000;
     // Applies builtin id to args. Pre: args.size() within the builtin's arity.
     [[nodiscard]] BuiltinResult apply(BuiltinId id, ValueTable& values, std::span<const ValueId> args) const;
     [[nodiscard]] std::size_t size() const noexcept { return builtins_.size(); }

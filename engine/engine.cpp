@@ -1,6 +1,7 @@
 // engine/engine.cpp: building the engine's facts and nodes; queries.
 #include "engine/engine.hpp"
 #include "qm/assert.hpp"
+#include "qm/limit_reached.hpp"
 #include <algorithm>
 
 namespace qm::engine {
@@ -40,6 +41,11 @@ Engine::Engine(CompiledProgram program, ValueTable values, const BuiltinRegistry
 
 Engine::~Engine() { atms_.remove_consumer(*this); }
 
+void Engine::set_limits(const EngineLimits& limits) {
+    limits_ = limits;
+    atms_.limit_environments(limits.max_environments);
+}
+
 atms::DatumId Engine::new_datum(Datum d) { return datums_.push_back(d); }
 
 atms::InformantId Engine::new_firing(Firing f) {
@@ -50,6 +56,10 @@ atms::InformantId Engine::new_firing(Firing f) {
 FactId Engine::intern_fact(ValueId predicate, std::span<const ValueId> args) {
     QM_REQUIRE(values_.value(predicate).kind == ValueKind::symbol, "a predicate is a symbol");
     auto [f, fresh] = facts_.intern(predicate, args);
+    // Checked after interning (one lookup): the store then holds a fact without a node, but an
+    // engine that threw is only destroyed (set_limits).
+    if (fresh && limits_.max_facts && facts_.size() > *limits_.max_facts)
+        throw LimitReached(LimitReached::Kind::facts, *limits_.max_facts);
     if (fresh) {
         atms::NodeId n = atms_.add_node(new_datum({Datum::Kind::fact, f.value}));
         [[maybe_unused]] FactId check = fact_nodes_.push_back(FactNodes{n, std::nullopt});

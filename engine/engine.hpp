@@ -66,6 +66,11 @@ public:
     FactId add_fact(ValueId predicate, std::span<const ValueId> args, std::span<const FactId> from,
                     SourceLocation where = {"<api>", 1, 1});
 
+    // Bounds the facts and environments of this engine from now on (run_options.hpp). Reaching
+    // one throws qm::LimitReached, naming the rule being fired or matched when one was; the
+    // engine must then only be destroyed.
+    void set_limits(const EngineLimits& limits);
+
     // ---- running --------------------------------------------------------------------------------
     // Runs every stratum to quiescence; `not` and aggregates are decided generically (a fact whose
     // label depends on assumptions makes them undecidable: a diagnostic). With options.max_steps,
@@ -182,6 +187,7 @@ private:
     std::vector<Context> contexts_;
     bool closed_world_used_ = false;
     RunOptions options_;                                 // of the current run
+    EngineLimits limits_;
     std::size_t steps_ = 0;                              // taken by the current run
     bool stopped_ = false;                               // the current run ran out of steps
     std::size_t rule_firings_ = 0;

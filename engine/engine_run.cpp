@@ -1,6 +1,7 @@
 // engine/engine_run.cpp: the strata loop, semi-naive matching and the agenda.
 #include "engine/engine.hpp"
 #include "qm/assert.hpp"
+#include "qm/limit_reached.hpp"
 #include <algorithm>
 #include <string>
 
@@ -76,7 +77,18 @@ bool Engine::drain(std::uint32_t s, std::optional<std::uint32_t> context, Diagno
         }
         woken_.resize(kept);
         if (agenda_.empty() && pending_activation_.empty()) return changed;
-        if (!agenda_.empty()) execute(agenda_.pop(), diagnostics);
+        if (!agenda_.empty()) {
+            const RuleInstance instance = agenda_.pop();
+            try {
+                execute(instance, diagnostics);
+            } catch (LimitReached& limit) {
+                // The innermost place that knows which rule was at work says so.
+                const CompiledRule& rule = program_.rules[instance.rule];
+                if (limit.doing.empty()) limit.doing = "firing rule '" + rule.name + "'";
+                if (!limit.where) limit.where = rule.where;
+                throw;
+            }
+        }
         changed = true;
     }
 }
@@ -152,17 +164,23 @@ void Engine::match_rule(RuleId r, std::optional<Seed> seed, std::optional<std::u
     std::set<std::pair<std::string, std::string>> reported;
     bool urgent = std::any_of(rule.consequents.begin(), rule.consequents.end(),
                               [](const CompiledConsequent& c) { return c.kind == CompiledConsequent::Kind::falsity; });
-    matcher.match(
-        rule, rule_plans_[r], seed,
-        [&](const Binding& b, std::span<const FactId> ants) {
-            agenda_.push(RuleInstance{r, b, std::vector<FactId>(ants.begin(), ants.end()), rule_context}, urgent);
-        },
-        [&](const MatchError& e) {
-            std::string where = e.where.file + ":" + std::to_string(e.where.line) + ":" + std::to_string(e.where.column);
-            if (reported.insert({where, e.message}).second)
-                diagnostics.error(e.where, "rule '" + rule.name + "': " + e.message);
-        },
-        initial);
+    try {
+        matcher.match(
+            rule, rule_plans_[r], seed,
+            [&](const Binding& b, std::span<const FactId> ants) {
+                agenda_.push(RuleInstance{r, b, std::vector<FactId>(ants.begin(), ants.end()), rule_context}, urgent);
+            },
+            [&](const MatchError& e) {
+                std::string where = e.where.file + ":" + std::to_string(e.where.line) + ":" + std::to_string(e.where.column);
+                if (reported.insert({where, e.message}).second)
+                    diagnostics.error(e.where, "rule '" + rule.name + "': " + e.message);
+            },
+            initial);
+    } catch (LimitReached& limit) {  // deciding a `not` in a context may intern environments
+        if (limit.doing.empty()) limit.doing = "matching rule '" + rule.name + "'";
+        if (!limit.where) limit.where = rule.where;
+        throw;
+    }
     steps_ += matcher.steps();
     if (matcher.stopped()) stop(rule, rule.where, diagnostics);
 }

@@ -114,11 +114,7 @@ Diagnostic syntax_error(const SourceText& src, std::size_t failure, const std::s
     message += " but found " + found;
     if (expected == top_item_name && is_top_keyword(found) && where.column != 1)
         message += " in column " + std::to_string(where.column);
-    Diagnostic d;
-    d.where = where;
-    d.message = std::move(message);
-    d.source_line = src.line(where.line);
-    return d;
+    return make_diagnostic(Severity::error, where, std::move(message), src.line(where.line));
 }
 
 }  // namespace qm::engine::parser

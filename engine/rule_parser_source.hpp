@@ -32,10 +32,10 @@ public:
     // Appends every diagnostic of `from` to `to`, giving each one that has no source line the line
     // it points at, when its file was read.
     void attach_lines(const Diagnostics& from, Diagnostics& to) const {
-        for (Diagnostic d : from.items()) {
-            if (d.source_line.empty())
-                if (const SourceText* t = find(d.where.file)) d.source_line = t->line(d.where.line);
-            to.add(std::move(d));
+        for (const Diagnostic& d : from.items()) {
+            const SourceText* t = d.source_line.empty() ? find(d.where.file) : nullptr;
+            if (t) to.add(d.severity, d.where, d.message, t->line(d.where.line), d.notes);
+            else to.add(d);
         }
     }
 

@@ -2,24 +2,14 @@
 #include "engine/rule_spec_reader.hpp"
 #include "engine/rule_parser.hpp"
 #include "engine/rule_parser_to_spec.hpp"
+#include "qm/file_text.hpp"
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <set>
-#include <sstream>
 
 namespace qm::engine {
 namespace {
 
-std::optional<std::string> slurp(const std::string& path) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 std::string normal(const std::string& path) { return std::filesystem::path(path).lexically_normal().string(); }
 
@@ -32,12 +22,12 @@ public:
     void top_file(const std::string& path) {
         const std::string key = normal(path);
         if (read_.count(key)) return;
-        auto text = slurp(key);
-        if (!text) {
-            diagnostics_.error({path, 1, 1}, "cannot open rule file '" + path + "'");
+        FileText file = read_file_text(key);
+        if (!file.text) {
+            diagnostics_.error({path, 1, 1}, "cannot open rule file '" + path + "': " + file.why_not);
             return;
         }
-        text_of(key, std::move(*text));
+        text_of(key, std::move(*file.text));
     }
 
     // Reads `text` as the file `key` (a normalised path), unless it was read already.
@@ -65,14 +55,14 @@ private:
             return;
         }
         if (read_.count(target)) return;  // each file is read once
-        auto text = inc.file.text.empty() ? std::nullopt : slurp(target);
-        if (!text) {
+        FileText file = inc.file.text.empty() ? FileText{std::nullopt, "no file named"} : read_file_text(target);
+        if (!file.text) {
             diagnostics_.error(from.locate(static_cast<std::size_t>(inc.file.id_first)),
-                               "cannot open included file '" + target + "'",
+                               "cannot open included file '" + target + "': " + file.why_not,
                                from.line_at(static_cast<std::size_t>(inc.file.id_first)));
             return;
         }
-        text_of(target, std::move(*text));
+        text_of(target, std::move(*file.text));
     }
 
     ProgramSpec& spec_;

@@ -24,7 +24,7 @@ bool Mechanism::same_shaft(PartId a, PartId b) const {
 }
 
 void Mechanism::error(Diagnostics& diags, const SourceLocation& w, std::string message) const {
-    diags.error(w, std::move(message), source ? source->line_of(w) : std::string());
+    diags.error(w, std::move(message), source ? source->line_of(w) : std::string_view());
 }
 
 }  // namespace qm::geometry

@@ -5,9 +5,8 @@
 #include "geometry/metric_scene_checker.hpp"
 #include "geometry/metric_scene_parser_def.hpp"
 
+#include "qm/file_text.hpp"
 #include "qm/sexpr_text.hpp"
-#include <fstream>
-#include <sstream>
 
 namespace qm::geometry {
 namespace {
@@ -41,14 +40,12 @@ std::optional<Mechanism> read_mechanism(std::string file, std::string text, Diag
 }
 
 std::optional<Mechanism> read_mechanism_file(const std::string& path, Diagnostics& diags) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        diags.error({path, 1, 1}, "cannot read metric scene file '" + path + "'");
+    FileText file = read_file_text(path);
+    if (!file.text) {
+        diags.error({path, 1, 1}, "cannot read metric scene file '" + path + "': " + file.why_not);
         return std::nullopt;
     }
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return read_mechanism(path, ss.str(), diags);
+    return read_mechanism(path, std::move(*file.text), diags);
 }
 
 std::optional<Configuration> parse_configuration(const Mechanism& m, std::string_view text, Diagnostics& diags, std::string origin) {

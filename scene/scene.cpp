@@ -14,10 +14,16 @@ bool matches(const DirectionPattern& pattern, const Direction& d) {
 
 namespace {
 template <class K, class V>
-std::optional<K> find_by_name(const IdVector<K, V>& table, std::string_view name) {
-    for (std::uint32_t i = 0; i < table.size(); ++i)
-        if (table[K{i}].name == name) return K{i};
-    return std::nullopt;
+std::optional<K> find_by_name(const IdVector<K, V>& table, Scene::NameIndex& index, std::string_view name) {
+    if (index.seen > table.size()) index = {};  // entries were taken away: start afresh
+    for (; index.seen < table.size(); ++index.seen) {
+        const auto i = static_cast<std::uint32_t>(index.seen);
+        index.ids.emplace(table[K{i}].name, i);  // the first of a name stays
+    }
+    const auto it = index.ids.find(std::string(name));
+    if (it == index.ids.end()) return std::nullopt;
+    QM_ASSERT(table[K{it->second}].name == name, "a scene entry was renamed after it was looked up");
+    return K{it->second};
 }
 
 template <class K, class V>
@@ -26,9 +32,9 @@ bool same_table(const IdVector<K, V>& a, const IdVector<K, V>& b) {
 }
 }  // namespace
 
-std::optional<ObjectId> Scene::find_object(std::string_view n) const { return find_by_name(objects, n); }
-std::optional<SurfaceId> Scene::find_surface(std::string_view n) const { return find_by_name(surfaces, n); }
-std::optional<CauseId> Scene::find_cause(std::string_view n) const { return find_by_name(causes, n); }
+std::optional<ObjectId> Scene::find_object(std::string_view n) const { return find_by_name(objects, object_index_, n); }
+std::optional<SurfaceId> Scene::find_surface(std::string_view n) const { return find_by_name(surfaces, surface_index_, n); }
+std::optional<CauseId> Scene::find_cause(std::string_view n) const { return find_by_name(causes, cause_index_, n); }
 
 ObjectId Scene::owner(SurfaceId s) const {
     QM_REQUIRE(surfaces.contains(s), "surface id out of range");

@@ -25,6 +25,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 namespace qm::scene {
@@ -151,6 +152,9 @@ struct Scene {
     std::vector<Situation> situations;
     SourceLocation where;
 
+    // The first entry of that name, by hash (a scan per lookup made reading a scene quadratic in
+    // its size, issue 19). Pre: an entry's name is not changed once it is in the table (the
+    // index learns entries as they are added).
     [[nodiscard]] std::optional<ObjectId> find_object(std::string_view name) const;
     [[nodiscard]] std::optional<SurfaceId> find_surface(std::string_view name) const;
     [[nodiscard]] std::optional<CauseId> find_cause(std::string_view name) const;
@@ -161,6 +165,14 @@ struct Scene {
     [[nodiscard]] std::size_t translation_arity() const noexcept { return static_cast<std::size_t>(dimensions); }
 
     friend bool operator==(const Scene& a, const Scene& b);
+
+    // The index behind find_*: the ids of the first `seen` entries of a table by name, extended
+    // at each lookup with the entries added since.
+    struct NameIndex {
+        std::size_t seen = 0;
+        std::unordered_map<std::string, std::uint32_t> ids;
+    };
+    mutable NameIndex object_index_, surface_index_, cause_index_;
 };
 
 // A single fact named on the command line: `Rotational-Motion (follower (-))`,

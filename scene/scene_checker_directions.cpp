@@ -26,7 +26,7 @@ SourceLocation CheckContext::where(const ast::x3::position_tagged& node) const {
 
 void CheckContext::error(const ast::x3::position_tagged& node, std::string message, std::vector<std::string> notes) {
     const std::size_t off = pos_.offset_of(node);
-    diags_.add({Severity::error, src_.locate(off), std::move(message), src_.line_at(off), std::move(notes)});
+    diags_.add(Severity::error, src_.locate(off), std::move(message), src_.line_at(off), std::move(notes));
     ++errors_;
 }
 

@@ -5,9 +5,8 @@
 #include "scene/scene_checker.hpp"
 #include "scene/scene_parser_def.hpp"
 
+#include "qm/file_text.hpp"
 #include "qm/sexpr_text.hpp"
-#include <fstream>
-#include <sstream>
 
 namespace qm::scene {
 namespace {
@@ -22,12 +21,6 @@ bool run(const Rule& rule, const std::string& what, const SourceText& src, Posit
         return false;
     }
     return x3_parse::parse_sexpr(rule, what, src, positions, diags, parser::punctuation, out);
-}
-
-std::string slurp(std::ifstream& in) {
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
 }
 
 }  // namespace
@@ -48,12 +41,12 @@ std::optional<Scene> read_scene(std::string file, std::string text, Diagnostics&
 }
 
 std::optional<Scene> read_scene_file(const std::string& path, Diagnostics& diags) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        diags.error({path, 1, 1}, "cannot read scene file '" + path + "'");
+    FileText file = read_file_text(path);
+    if (!file.text) {
+        diags.error({path, 1, 1}, "cannot read scene file '" + path + "': " + file.why_not);
         return std::nullopt;
     }
-    return read_scene(path, slurp(in), diags);
+    return read_scene(path, std::move(*file.text), diags);
 }
 
 std::optional<Motion> parse_given(const Scene& scene, std::string_view text, Diagnostics& diags, std::string origin) {

@@ -5,13 +5,16 @@
 //             rule files) locates its errors through it.
 // Ownership:  a value type owning its text.
 // Invariants: a column counts bytes from the start of the line (a tab is one column); offsets past
-//             the end are clamped to the end.
+//             the end are clamped to the end. A UTF-8 byte-order mark at the start of the text (which
+//             some editors write) is not part of it: every reader sees the text after it, and columns
+//             of the first line count from there.
 #pragma once
 #include "qm/diagnostics.hpp"
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace qm {
@@ -19,6 +22,7 @@ namespace qm {
 class SourceText {
 public:
     SourceText(std::string file, std::string text) : file_(std::move(file)), text_(std::move(text)) {
+        if (text_.starts_with(byte_order_mark)) text_.erase(0, byte_order_mark.size());
         line_starts_.push_back(0);
         for (std::size_t i = 0; i < text_.size(); ++i)
             if (text_[i] == '\n') line_starts_.push_back(i + 1);
@@ -30,23 +34,27 @@ public:
         return {file_, static_cast<std::uint32_t>(line + 1),
                 static_cast<std::uint32_t>(std::min(offset, text_.size()) - line_starts_[line] + 1)};
     }
-    // The whole line holding `offset`, without its line end.
-    [[nodiscard]] std::string line_at(std::size_t offset) const { return line(static_cast<std::uint32_t>(line_index(offset) + 1)); }
-    // Line number n (1-based); empty if there is no such line.
-    [[nodiscard]] std::string line(std::uint32_t n) const {
+    // The whole line holding `offset`, without its line end (a view into the text).
+    [[nodiscard]] std::string_view line_at(std::size_t offset) const {
+        return line(static_cast<std::uint32_t>(line_index(offset) + 1));
+    }
+    // Line number n (1-based), a view into the text; empty if there is no such line.
+    [[nodiscard]] std::string_view line(std::uint32_t n) const {
         if (n == 0 || n > line_starts_.size()) return {};
         const std::size_t b = line_starts_[n - 1];
         std::size_t e = text_.find('\n', b);
         if (e == std::string::npos) e = text_.size();
         if (e > b && text_[e - 1] == '\r') --e;
-        return text_.substr(b, e - b);
+        return std::string_view(text_).substr(b, e - b);
     }
     // The line of a location this text produced (for diagnostics made after parsing).
-    [[nodiscard]] std::string line_of(const SourceLocation& where) const { return line(where.line); }
-    // An error at `offset`, with its line for the caret.
+    [[nodiscard]] std::string_view line_of(const SourceLocation& where) const { return line(where.line); }
+    // An error at `offset`, with (an excerpt of) its line for the caret.
     void error(Diagnostics& diags, std::size_t offset, std::string message) const {
         diags.error(locate(offset), std::move(message), line_at(offset));
     }
+
+    static constexpr std::string_view byte_order_mark = "\xEF\xBB\xBF";
 
 private:
     [[nodiscard]] std::size_t line_index(std::size_t offset) const {

@@ -9,6 +9,7 @@
 //             letter, so the reader reports it as a located syntax error.
 // Used by:    the readers of Alex scenes, metric scenes and command-line queries (cli/query_text.cpp).
 #pragma once
+#include "qm/x3_words.hpp"
 #include <boost/spirit/home/x3.hpp>
 #include <string>
 

@@ -16,6 +16,7 @@
 // Ownership:  handlers are stateless.
 #pragma once
 #include "qm/position_table.hpp"
+#include "qm/x3_words.hpp"
 #include <boost/spirit/home/x3.hpp>
 #include <cstddef>
 #include <string>

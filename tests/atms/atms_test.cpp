@@ -1,6 +1,7 @@
 // tests/atms/atms_test.cpp: the Atms facade on de Kleer-style worked examples, and one case for
 // every precondition (each must be a clear qm::InternalError, never UB).
 #include "atms/atms.hpp"
+#include "qm/limit_reached.hpp"
 
 #include <doctest/doctest.h>
 #include <algorithm>
@@ -243,4 +244,40 @@ TEST_CASE("atms/atms: every precondition violation is an InternalError") {
     CHECK_THROWS_WITH_AS((void)atms.interpretations(twice), doctest::Contains("two choice sets"), qm::InternalError);
     // Nothing was recorded by the failed calls.
     CHECK(atms.justification_count() == 0);
+}
+
+TEST_CASE("atms/atms: the environment limit stops interning, also while interpretations are enumerated") {
+    // Ten binary choice sets: 1024 interpretations. Counted without a limit first.
+    auto build = [](Atms& atms) {
+        std::vector<std::vector<AssumptionId>> sets;
+        for (std::uint32_t i = 0; i < 10; ++i) {
+            const NodeId x = atms.add_assumption(DatumId{2 * i}), y = atms.add_assumption(DatumId{2 * i + 1});
+            sets.push_back({*atms.assumption_of(x), *atms.assumption_of(y)});
+        }
+        return sets;
+    };
+    Atms free;
+    const auto sets = build(free);
+    const std::size_t before = free.environment_count();
+    CHECK(free.interpretations(sets).size() == 1024);
+    const std::size_t needed = free.environment_count();
+    CHECK(needed >= before + 1024);
+    Atms exact;
+    exact.limit_environments(needed);
+    const auto exact_sets = build(exact);
+    CHECK(exact.interpretations(exact_sets).size() == 1024);
+    Atms short_of_one;
+    short_of_one.limit_environments(needed - 1);
+    const auto short_sets = build(short_of_one);
+    try {
+        (void)short_of_one.interpretations(short_sets);
+        FAIL("the limit was not reached");
+    } catch (const qm::LimitReached& l) {
+        CHECK(l.kind == qm::LimitReached::Kind::environments);
+        CHECK(l.limit == needed - 1);
+        CHECK(short_of_one.environment_count() == needed - 1);  // nothing interned past it
+    }
+    Atms tiny;
+    tiny.limit_environments(3);
+    CHECK_THROWS_AS((void)build(tiny), qm::LimitReached);
 }

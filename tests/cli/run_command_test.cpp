@@ -295,7 +295,7 @@ TEST_CASE("cli/run_command: bad input exits 2 with located diagnostics and a car
     CHECK(ground.err.find("--why:1:8: error: expected a constant but found the variable ?r") == 0);
     Result missing = qm_atms("run /no/such/file.rules");
     CHECK(missing.status == 2);
-    CHECK(missing.err == "/no/such/file.rules:1:1: error: cannot open rule file '/no/such/file.rules'\n");
+    CHECK(missing.err == "/no/such/file.rules:1:1: error: cannot open rule file '/no/such/file.rules': no such file\n");
     CHECK(qm_atms("run " + scenario("queens4.rules") + " --bogus").status == 2);
     CHECK(qm_atms("run " + scenario("queens4.rules") + " --why").status == 2);
     CHECK(qm_atms("run " + scenario("queens4.rules") + " --why '(queen 1 1)' --why '(queen 1 2)'").status == 2);

@@ -88,3 +88,32 @@ TEST_CASE("engine/builtin_registry: range is exact at both ends of the 64-bit in
     CHECK(v.value(*cap.value).elements.size() == 100000);
     CHECK(!apply(v, "range", {v.integer(INT64_MAX - 100000), v.integer(INT64_MAX)}).error.empty());
 }
+
+TEST_CASE("engine/builtin_registry: a result longer than max_value_text is an error, not a runaway") {
+    // (set-add ?s ?s) doubles the printed text at each application (issue 19: a rule doing so
+    // filled the memory).
+    ValueTable v;
+    auto start = apply(v, "range", {v.integer(1), v.integer(1000)});
+    REQUIRE(start.value.has_value());
+    ValueId s = *start.value;
+    std::string error;
+    int doublings = 0;
+    for (; doublings < 40; ++doublings) {
+        const std::size_t before = v.print(s).size();
+        auto r = apply(v, "set-add", {s, s});
+        if (!r.error.empty()) {
+            error = r.error;
+            // Refused only when the result would indeed have been too long (it holds s whole).
+            CHECK(before + 2 > BuiltinRegistry::max_value_text / 2);
+            break;
+        }
+        REQUIRE(r.value.has_value());
+        CHECK(v.print(*r.value).size() <= BuiltinRegistry::max_value_text);
+        CHECK(v.print(*r.value).size() > before);
+        s = *r.value;
+    }
+    CHECK(doublings < 40);
+    CHECK(error.rfind("'set-add' would make a value of ", 0) == 0);
+    CHECK(error.find("characters, more than the " + std::to_string(BuiltinRegistry::max_value_text) +
+                     " a value may have") != std::string::npos);
+}

@@ -107,6 +107,6 @@ TEST_CASE("engine/rule_spec_reader: syntax errors are located and reading resume
           "t.rules:2:1: expected a consequent (an atom, 'false', 'assume' or a bracketed quantifier) but found 'fact'\n"
           "t.rules:2:6: expected an atom like (p ?x) but found 'p'\n"
           "t.rules:3:29: expected a direction of signs or a builtin function name but found '7'\n"
-          "t.rules:5:9: cannot open included file 'no-such-file.rules'\n");
+          "t.rules:5:9: cannot open included file 'no-such-file.rules': no such file\n");
     CHECK(spec.rules.size() == 1);  // rule c
 }

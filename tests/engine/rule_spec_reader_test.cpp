@@ -95,14 +95,14 @@ TEST_CASE("engine/rule_spec_reader: an unreadable file or include is a located e
     ProgramSpec spec;
     read_rule_file(dir + "/main.rules", spec, d);
     REQUIRE(d.size() == 3);
-    CHECK(d.items()[0].message == "cannot open included file '" + dir + "/folder.rules'");
+    CHECK(d.items()[0].message == "cannot open included file '" + dir + "/folder.rules': it is a directory, not a file");
     CHECK(d.items()[0].where.line == 2);
     CHECK(d.items()[0].where.column == 9);
     CHECK(d.items()[1].where.line == 3);
-    CHECK(d.items()[2].message == "cannot open included file '" + dir + "/gone.rules'");
+    CHECK(d.items()[2].message == "cannot open included file '" + dir + "/gone.rules': no such file");
     CHECK(spec.facts.size() == 1);
     qm::Diagnostics top;
     read_rule_file(dir + "/folder.rules", spec, top);
     REQUIRE(top.size() == 1);
-    CHECK(top.items()[0].message == "cannot open rule file '" + dir + "/folder.rules'");
+    CHECK(top.items()[0].message == "cannot open rule file '" + dir + "/folder.rules': it is a directory, not a file");
 }

@@ -84,3 +84,25 @@ TEST_CASE("scene/scene: equality compares content, never source locations") {
     CHECK(sign_char(Sign::zero) == '0');
     CHECK(sign_char(Sign::plus) == '+');
 }
+
+TEST_CASE("scene/scene: find_* by hash agree with a scan, also for entries added after a lookup") {
+    // The index learns entries as they are added (issue 19: a scan per lookup made reading quadratic).
+    Scene s;
+    auto scan = [&](const std::string& name) -> std::optional<ObjectId> {
+        for (std::uint32_t i = 0; i < s.objects.size(); ++i)
+            if (s.objects[ObjectId{i}].name == name) return ObjectId{i};
+        return std::nullopt;
+    };
+    for (int round = 0; round < 50; ++round) {
+        Object o;
+        o.name = "o" + std::to_string(round % 37);  // repeats from round 37 on: the first stays
+        s.objects.push_back(o);
+        for (int q = 0; q < 40; ++q) {
+            const std::string name = "o" + std::to_string(q);
+            CHECK(s.find_object(name) == scan(name));
+        }
+    }
+    const Scene copy = s;
+    CHECK(copy.find_object("o36") == scan("o36"));
+    CHECK(!copy.find_object("o37"));
+}

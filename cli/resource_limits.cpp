@@ -1,0 +1,145 @@
+// cli/resource_limits.cpp: the limit options and their messages (cli/resource_limits.hpp).
+#include "resource_limits.hpp"
+#include <cctype>
+#include <charconv>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <new>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#if defined(__SANITIZE_ADDRESS__)
+#define QM_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define QM_UNDER_ASAN 1
+#endif
+#endif
+
+namespace qm::cli {
+namespace {
+
+constexpr std::uint64_t kib = 1024, mib = kib * 1024, gib = mib * 1024, tib = gib * 1024;
+
+std::optional<std::uint64_t> applied_memory_limit;  // set by apply_memory_limit()
+
+// A size: digits with an optional unit K, M, G or T (powers of 1024; a trailing B or iB allowed,
+// any case), e.g. 4G, 512M, 1500000000.
+std::optional<std::uint64_t> size_of(std::string_view s) {
+    std::uint64_t n = 0;
+    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), n);
+    if (ec != std::errc{} || p == s.data() || n == 0) return std::nullopt;
+    std::string unit(p, s.data() + s.size());
+    for (char& c : unit) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (unit.ends_with("IB")) unit.erase(unit.size() - 2);
+    else if (unit.size() == 2 && unit[1] == 'B') unit.erase(1);
+    std::uint64_t scale = 1;
+    if (unit == "K") scale = kib;
+    else if (unit == "M") scale = mib;
+    else if (unit == "G") scale = gib;
+    else if (unit == "T") scale = tib;
+    else if (!unit.empty() && unit != "B") return std::nullopt;
+    if (n > UINT64_MAX / scale) return std::nullopt;
+    return n * scale;
+}
+
+// Ends the process when an exception cannot be thrown on (a std::bad_alloc in a noexcept function
+// under the memory limit): the same message as main's, exit 2.
+[[noreturn]] void on_terminate() {
+    if (std::exception_ptr e = std::current_exception()) {
+        try {
+            std::rethrow_exception(e);
+        } catch (const std::bad_alloc&) {
+            if (applied_memory_limit) {
+                const std::string m = "qm-atms: error: memory limit " + size_text(*applied_memory_limit) +
+                                      " reached; raise it with --max-memory\n";
+                [[maybe_unused]] auto w = ::write(2, m.data(), m.size());
+                ::_exit(2);
+            }
+        } catch (...) {
+        }
+    }
+    std::abort();
+}
+
+}  // namespace
+
+std::uint64_t ResourceLimits::default_max_memory() {
+    const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+    if (pages <= 0 || page <= 0) return 4 * gib;
+    return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page) / 2;
+}
+
+std::optional<bool> read_limit_option(CommandLine& cl, ResourceLimits& limits) {
+    const std::string& a = cl.arg();
+    if (a != "--max-facts" && a != "--max-environments" && a != "--max-memory") return std::nullopt;
+    std::optional<std::string> text;
+    if (a == "--max-memory") {
+        constexpr const char* what = "a size like 4G, 512M or 2000000000 (bytes)";
+        if (!cl.single(limits.given.memory, what)) return false;
+        auto n = size_of(*limits.given.memory);
+        if (!n) return cl.bad_value(what, *limits.given.memory);
+        limits.max_memory = *n;
+        return true;
+    }
+    const bool facts = a == "--max-facts";
+    std::optional<std::string>& seen = facts ? limits.given.facts : limits.given.environments;
+    constexpr const char* what = "a positive number";
+    if (!cl.single(seen, what)) return false;
+    auto n = positive(*seen);
+    if (!n) return cl.bad_value(what, *seen);
+    (facts ? limits.max_facts : limits.max_environments) = *n;
+    return true;
+}
+
+const char* limits_usage() noexcept {
+    return "  --max-facts N   stop with an error when the laws hold more than N facts (default 500000)\n"
+           "  --max-environments N\n"
+           "                  stop with an error when the ATMS holds more than N environments (default 1000000)\n"
+           "  --max-memory SIZE\n"
+           "                  stop with an error when the process needs more memory, e.g. 4G or 512M\n"
+           "                  (default: half the machine's)\n";
+}
+
+void apply_memory_limit(const ResourceLimits& limits) {
+    std::set_terminate(on_terminate);
+#ifndef QM_UNDER_ASAN
+    rlimit r{};
+    if (::getrlimit(RLIMIT_AS, &r) != 0) return;
+    const rlim_t want = static_cast<rlim_t>(limits.max_memory);
+    if (r.rlim_max != RLIM_INFINITY && want > r.rlim_max) return;  // a lower hard limit is already set
+    r.rlim_cur = want;
+    if (::setrlimit(RLIMIT_AS, &r) == 0) applied_memory_limit = limits.max_memory;
+#else
+    (void)limits;
+#endif
+}
+
+std::string limit_message(const LimitReached& limit, const std::string& doing) {
+    std::string where = "qm-atms: ";
+    if (limit.where)
+        where = limit.where->file + ":" + std::to_string(limit.where->line) + ":" + std::to_string(limit.where->column) + ": ";
+    const bool facts = limit.kind == LimitReached::Kind::facts;
+    return where + "error: " + limit_noun(limit.kind) + " limit " + std::to_string(limit.limit) + " reached while " +
+           (limit.doing.empty() ? doing : limit.doing) + "; raise it with " + (facts ? "--max-facts" : "--max-environments") + "\n";
+}
+
+std::optional<std::string> memory_limit_message(const std::string& doing) {
+    if (!applied_memory_limit) return std::nullopt;
+    return "qm-atms: error: memory limit " + size_text(*applied_memory_limit) + " reached while " + doing +
+           "; raise it with --max-memory\n";
+}
+
+std::string size_text(std::uint64_t bytes) {
+    for (auto [scale, unit] : {std::pair{tib, 'T'}, std::pair{gib, 'G'}, std::pair{mib, 'M'}, std::pair{kib, 'K'}}) {
+        if (bytes < scale) continue;
+        if (bytes % scale == 0) return std::to_string(bytes / scale) + unit;
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.1f%c", static_cast<double>(bytes) / static_cast<double>(scale), unit);
+        return buf;
+    }
+    return std::to_string(bytes) + " bytes";
+}
+
+}  // namespace qm::cli

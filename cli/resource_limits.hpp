@@ -1,0 +1,60 @@
+// cli/resource_limits.hpp
+// Provides:   the resource limits of the commands that run laws or rule programs (`qm-atms
+//             SCENE.def`, `qm-atms run`; an envisioner command takes the same): ResourceLimits, the
+//             options that set them (--max-facts N, --max-environments N, --max-memory SIZE) read
+//             by read_limit_option(), their usage text, apply_memory_limit() (the process' address
+//             space, RLIMIT_AS), and the message a reached limit ends a run with:
+//               grow.rules:2:1: error: fact limit 500000 reached while firing rule 'grow'; raise it with --max-facts
+//               qm-atms: error: memory limit 11.7 GB reached while running grow.rules; raise it with --max-memory
+//             (exit 2: a program or scene that needs more is bad input at these settings; nothing
+//             is written to standard output, issue 19 item 3).
+// Defaults:   chosen so that the runaway programs of issue 19 stop within seconds while the
+//             bundled scenes, rule programs and benchmarks stay far below them (docs/PERFORMANCE.md
+//             "Resource limits" has the measurements); memory: half the machine's.
+// Ownership:  values; apply_memory_limit() changes the process (call it once, from main's commands).
+#pragma once
+#include "engine/run_options.hpp"
+#include "qm/limit_reached.hpp"
+#include "command_line.hpp"
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace qm::cli {
+
+struct ResourceLimits {
+    static constexpr std::size_t default_max_facts = 500000;
+    static constexpr std::size_t default_max_environments = 1000000;
+    std::size_t max_facts = default_max_facts;
+    std::size_t max_environments = default_max_environments;
+    std::uint64_t max_memory = default_max_memory();  // bytes of address space
+    struct Given {  // the options' texts as given (a second one is an error)
+        std::optional<std::string> facts, environments, memory;
+    } given;
+
+    // Half the machine's physical memory (4 GB if it cannot be found).
+    [[nodiscard]] static std::uint64_t default_max_memory();
+    [[nodiscard]] engine::EngineLimits engine_limits() const { return {max_facts, max_environments}; }
+};
+
+// Reads one of the limit options at the command line's current argument. Returns nullopt when the
+// argument is not one of them, false after reporting a bad or repeated value, true when read.
+[[nodiscard]] std::optional<bool> read_limit_option(CommandLine& cl, ResourceLimits& limits);
+
+// The options' lines for a usage text.
+[[nodiscard]] const char* limits_usage() noexcept;
+
+// Limits this process' address space to limits.max_memory (RLIMIT_AS; not under AddressSanitizer,
+// which reserves terabytes of address space for its shadow memory), so that an allocation beyond it
+// fails with std::bad_alloc, reported by report_memory_limit().
+void apply_memory_limit(const ResourceLimits& limits);
+
+// The message of a reached limit (`doing`: what the command was doing, when the limit does not say).
+[[nodiscard]] std::string limit_message(const LimitReached& limit, const std::string& doing);
+// The message of a std::bad_alloc under the memory limit apply_memory_limit() set; nullopt when none was set.
+[[nodiscard]] std::optional<std::string> memory_limit_message(const std::string& doing);
+
+// "11.7 GB", "512 MB", "900 bytes".
+[[nodiscard]] std::string size_text(std::uint64_t bytes);
+
+}  // namespace qm::cli

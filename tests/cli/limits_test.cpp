@@ -1,0 +1,192 @@
+// tests/cli/limits_test.cpp: the resource limits and the uniform option errors of the command
+// line (issue 19 items 3 and 4), end to end through the built qm-atms. A program that counts for
+// ever, 40 binary choice sets (2^40 interpretations) and a scene analysed under a tiny limit stop
+// with `error: ... limit N reached while ...; raise it with --...`, exit 2 and an empty standard
+// output; every option error names the option and what it expected (exact texts); a scene or rule
+// file that starts with a UTF-8 byte-order mark reads as without it; a folder given as a scene
+// says so.
+#include "qm_atms_run.hpp"
+#include <doctest/doctest.h>
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#if defined(__SANITIZE_ADDRESS__)
+#define QM_TEST_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define QM_TEST_UNDER_ASAN 1
+#endif
+#endif
+
+using qm::test::qm_atms;
+
+namespace {
+const std::string dir = QM_BINARY_DIR;
+const std::string src = QM_SOURCE_DIR;
+
+std::string write(const std::string& name, const std::string& text) {
+    const std::string path = dir + "/limits_test_" + name;
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+}
+
+const std::string grow = write("grow.rules", "fact (n 0)\nrule grow\n  when (n ?x)\n  then (n (+ ?x 1))\n");
+
+std::string choices(int n) {
+    std::string text;
+    for (int i = 1; i <= n; ++i) text += "fact (o " + std::to_string(i) + ")\n";
+    return text + "rule pick\n  when (o ?x)\n  then [exactly one ?v in {a b}: assume (v ?x ?v)]\n";
+}
+}  // namespace
+
+TEST_CASE("cli/limits: a program that counts for ever stops at --max-facts, located at the rule, nothing written") {
+    auto r = qm_atms("run " + grow + " --max-facts 1000 --json", "limits");
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err == grow + ":2:1: error: fact limit 1000 reached while firing rule 'grow'; raise it with --max-facts\n");
+}
+
+TEST_CASE("cli/limits: the default limits stop the runaway programs") {
+#ifndef QM_TEST_UNDER_ASAN  // 500000 facts: seconds in Release, too long for a sanitizer build's test
+    auto r = qm_atms("run " + grow, "limits");
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err == grow + ":2:1: error: fact limit 500000 reached while firing rule 'grow'; raise it with --max-facts\n");
+#endif
+    // 2^40 interpretations: stopped while they are enumerated (they were once all collected first).
+    const std::string forty = write("forty.rules", choices(40));
+    auto c = qm_atms("run " + forty + " --max-environments 20000", "limits");
+    CHECK(c.status == 2);
+    CHECK(c.out.empty());
+    CHECK(c.err == "qm-atms: error: environment limit 20000 reached while enumerating the interpretations of " + forty +
+                       "; raise it with --max-environments\n");
+}
+
+TEST_CASE("cli/limits: a limit that is not reached changes nothing") {
+    const std::string ten = write("ten.rules", choices(10));
+    auto free = qm_atms("run " + ten + " --json", "limits");
+    REQUIRE(free.status == 0);
+    CHECK(free.out.find("\"interpretations\"") != std::string::npos);
+    auto bounded = qm_atms("run " + ten + " --json --max-facts 1000 --max-environments 100000 --max-memory 2G", "limits");
+    CHECK(bounded.status == 0);
+    CHECK(bounded.out == free.out);
+    const std::string scene = src + "/scenarios/alex/arch.def --rules " + src + "/rules";
+    auto analysed = qm_atms(scene + " --json", "limits");
+    REQUIRE(analysed.status == 0);
+    CHECK(qm_atms(scene + " --json --max-facts 100000 --max-environments 1000000", "limits").out == analysed.out);
+}
+
+TEST_CASE("cli/limits: a scene analysed under a tiny limit stops with exit 2 and writes nothing") {
+    const std::string scene = src + "/scenarios/alex/arch.def --rules " + src + "/rules";
+    for (const std::string& extra : {std::string(" --json"), std::string(""), std::string(" --why 'Translational-Freedom (cross-bar (+ +))'")}) {
+        auto f = qm_atms(scene + extra + " --max-facts 10", "limits");
+        CHECK(f.status == 2);
+        CHECK(f.out.empty());
+        CHECK(f.err.find("error: fact limit 10 reached while ") != std::string::npos);
+        CHECK(f.err.ends_with("; raise it with --max-facts\n"));
+        auto e = qm_atms(scene + extra + " --max-environments 10", "limits");
+        CHECK(e.status == 2);
+        CHECK(e.out.empty());
+        CHECK(e.err.ends_with("environment limit 10 reached while analysing " + src +
+                              "/scenarios/alex/arch.def; raise it with --max-environments\n"));
+    }
+}
+
+#ifndef QM_TEST_UNDER_ASAN  // AddressSanitizer reserves terabytes of address space: no --max-memory there
+TEST_CASE("cli/limits: --max-memory stops a program that needs more, exit 2, nothing written") {
+    auto r = qm_atms("run " + grow + " --max-facts 100000000 --max-memory 200M", "limits");
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err == "qm-atms: error: memory limit 200M reached while running " + grow + "; raise it with --max-memory\n");
+}
+#endif
+
+TEST_CASE("cli/options: every option error names the option and what it expected") {
+    const std::string scene = src + "/scenarios/alex/arch.def";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"run", "no program given"},
+        {"run x.rules --max-facts", "--max-facts expects a positive number, but nothing follows it"},
+        {"run x.rules --max-facts ten", "--max-facts expects a positive number, not 'ten'"},
+        {"run x.rules --max-facts 0", "--max-facts expects a positive number, not '0'"},
+        {"run x.rules --max-environments -5", "--max-environments expects a positive number, not '-5'"},
+        {"run x.rules --max-facts 5 --max-facts 6", "--max-facts is given twice ('5', '6'): give it once"},
+        {"run x.rules --max-memory 4Q", "--max-memory expects a size like 4G, 512M or 2000000000 (bytes), not '4Q'"},
+        {"run x.rules --max-memory 0", "--max-memory expects a size like 4G, 512M or 2000000000 (bytes), not '0'"},
+        {"run x.rules --max-memory 512M --max-memory 1G", "--max-memory is given twice ('512M', '1G'): give it once"},
+        {"run x.rules --why a --why b", "--why is given twice ('a', 'b'): ask one at a time"},
+        {"run x.rules --why", "--why expects a fact, e.g. --why '(queen 1 2)', but nothing follows it"},
+        {"run x.rules --lmit 3", "unknown option '--lmit'"},
+        {"run x.rules y.rules", "more than one program given ('x.rules', 'y.rules')"},
+        {scene + " --limit", "--limit expects a positive number of combinations, but nothing follows it"},
+        {scene + " --limit 0", "--limit expects a positive number of combinations, not '0'"},
+        {scene + " --limit 3 --limit 4", "--limit is given twice ('3', '4'): give it once"},
+        {scene + " --rules a --rules b", "--rules is given twice ('a', 'b'): give it once"},
+        {scene + " --config a --config b", "--config is given twice ('a', 'b'): give it once"},
+        {scene + " --situation 1 --situation 2", "--situation is given twice ('1', '2'): give it once"},
+        {scene + " --max-facts 1 --max-facts 1", "--max-facts is given twice ('1', '1'): give it once"},
+        {scene + " --bogus", "unknown option '--bogus'"},
+    };
+    for (const auto& [args, message] : cases) {
+        CAPTURE(args);
+        auto r = qm_atms(args, "options");
+        CHECK(r.status == 2);
+        CHECK(r.out.empty());
+        CHECK(r.err.rfind("qm-atms: error: " + message + "\n", 0) == 0);
+    }
+}
+
+TEST_CASE("cli/options: --situation out of range is located however it is wrong") {
+    const std::string scene = src + "/scenarios/alex/arch.def --rules " + src + "/rules";
+    for (const auto& [value, found] : std::vector<std::pair<std::string, std::string>>{
+             {"0", "0"}, {"-1", "-1"}, {"999", "999"}, {"abc", "'abc'"}, {"1x", "'1x'"}}) {
+        auto r = qm_atms(scene + " --situation " + value, "options");
+        CHECK(r.status == 2);
+        CHECK(r.err == "--situation:1:1: error: expected a situation from 1 to 1, but found " + found + "\n");
+    }
+}
+
+TEST_CASE("cli/files: a folder or a missing file says so; a file given as the rules folder too") {
+    auto folder = qm_atms(src + "/scenarios", "files");
+    CHECK(folder.status == 2);
+    CHECK(folder.err == src + "/scenarios:1:1: error: cannot read scene file '" + src + "/scenarios': it is a directory, not a file\n");
+    auto missing = qm_atms(dir + "/no_such_scene.def", "files");
+    CHECK(missing.status == 2);
+    CHECK(missing.err == dir + "/no_such_scene.def:1:1: error: cannot read scene file '" + dir + "/no_such_scene.def': no such file\n");
+    const std::string scene = src + "/scenarios/alex/arch.def";
+    auto rules_file = qm_atms(scene + " --rules " + scene, "files");
+    CHECK(rules_file.status == 2);
+    CHECK(rules_file.err == scene + ":1:1: error: expected a folder of .rules files (the laws), but it is a file, not a folder\n");
+    auto no_rules = qm_atms(scene + " --rules " + dir + "/no_such_folder", "files");
+    CHECK(no_rules.err == dir + "/no_such_folder:1:1: error: expected a folder of .rules files (the laws), but there is no such folder\n");
+    auto empty = qm_atms(scene + " --rules " + src + "/docs", "files");
+    CHECK(empty.err == src + "/docs:1:1: error: expected a folder of .rules files (the laws), but it holds none\n");
+}
+
+TEST_CASE("cli/files: a UTF-8 byte-order mark at the start of a scene, metric scene or rule file is accepted") {
+    const std::string bom = "\xEF\xBB\xBF";
+    for (const std::string name : {"arch.def", "block_stack.def"}) {
+        const std::string original = src + "/scenarios/alex/" + name;
+        const std::string marked = write("bom_" + name, bom + qm::test::slurp(original));
+        const std::string rules = " --rules " + src + "/rules --json";
+        auto a = qm_atms(original + rules, "files"), b = qm_atms(marked + rules, "files");
+        REQUIRE(a.status == 0);
+        CHECK(b.status == 0);
+        CHECK(b.out == a.out);
+        CHECK(b.err == a.err);
+    }
+    const std::string metric = qm::test::metric_scene("cam.def");
+    const std::string marked_metric = write("bom_cam.def", bom + qm::test::slurp(metric));
+    auto m = qm_atms(metric + " --rules " + src + "/rules --json", "files");
+    auto mb = qm_atms(marked_metric + " --rules " + src + "/rules --json", "files");
+    REQUIRE(m.status == 0);
+    CHECK(mb.status == 0);
+    CHECK(mb.out == m.out);
+    const std::string queens = src + "/scenarios/rules/queens5.rules";
+    const std::string marked_queens = write("bom_queens5.rules", bom + qm::test::slurp(queens));
+    auto q = qm_atms("run " + queens + " --json", "files"), qb = qm_atms("run " + marked_queens + " --json", "files");
+    REQUIRE(q.status == 0);
+    CHECK(qb.status == 0);
+    CHECK(qb.out == q.out);
+}
