@@ -193,6 +193,17 @@ struct SceneText {
     std::string text;
 };
 
+// The pair's FCL oracle, or a located error when FCL cannot build a part's model (out of memory:
+// the scene checker keeps models within the build limits, but memory may still run out).
+std::unique_ptr<g::FclPairOracle> pair_oracle_or_error(const g::Mechanism& m, const g::PairSpec& pair, Diagnostics& diags) {
+    try {
+        return g::pair_oracle(m, pair);
+    } catch (const g::ModelBuildError& e) {
+        m.error(diags, pair.where, std::string(e.what()) + "; raise chordal-tolerance to build smaller models");
+        return nullptr;
+    }
+}
+
 std::optional<SceneText> scene_at(const std::string& path, const std::string& config, Diagnostics& diags) {
     const auto m = g::read_mechanism_file(path, diags);
     if (!m) return std::nullopt;
@@ -202,7 +213,8 @@ std::optional<SceneText> scene_at(const std::string& path, const std::string& co
     const g::ContactRequest request{m->settings.contact_tolerance, m->settings.normal_zero_tolerance};
     bool ok = true;
     for (const auto& pair : g::kinematic_pairs(*m).modelled) {
-        const auto oracle = g::pair_oracle(*m, pair);
+        const auto oracle = pair_oracle_or_error(*m, pair, diags);
+        if (!oracle) return std::nullopt;
         const auto r = g::detect_contacts(*oracle, {q->at(pair.a), q->at(pair.b)}, request);
         if (r.status == g::ContactStatus::overlapping) {
             m->error(diags, pair.where, r.message + (config.empty() ? " (as drawn)" : " (CONFIG '" + config + "')"));
@@ -307,6 +319,10 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
         if (ec) return usage_error(err, "cannot create the SVG directory '" + svg_dir->string() + "'");
     }
     const auto selection = g::kinematic_pairs(*m);
+    if (!g::check_grid_limit(*m, selection, diags)) {
+        diags.print(err);
+        return 2;
+    }
     std::ostringstream text, js;
     text << "mechanism " << m->name << ": " << selection.modelled.size() << " kinematic pair" << (selection.modelled.size() == 1 ? "" : "s") << '\n';
     js << "{\"schema\":\"qm-metric-places/1\",\"mechanism\":";
@@ -314,7 +330,11 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
     js << ",\"pairs\":[";
     for (std::size_t k = 0; k < selection.modelled.size(); ++k) {
         const auto& pair = selection.modelled[k];
-        const auto oracle = g::pair_oracle(*m, pair);
+        const auto oracle = pair_oracle_or_error(*m, pair, diags);
+        if (!oracle) {
+            diags.print(err);
+            return 2;
+        }
         const auto request = g::place_request(*m, pair);
         g::PlaceVocabulary vocabulary;
         bool from_cache = false;
