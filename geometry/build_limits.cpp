@@ -31,11 +31,16 @@ double least_resolvable_length(double magnitude) noexcept {
 }
 
 double chordal_tolerance_for_limit(const Part& p, double relative, double pair_size) noexcept {
-    // Chords go as 1 / sqrt(tolerance); step up from that estimate until the count fits.
-    const double n = chords_needed(p, relative * pair_size);
-    double r = n > max_chords_per_part ? relative * (n / max_chords_per_part) * (n / max_chords_per_part) : relative;
-    for (int i = 0; i < 64 && chords_needed(p, r * pair_size) > max_chords_per_part; ++i) r *= 1.1;
-    return r;
+    // The count falls as the tolerance grows: bisect (in log space) for the least tolerance at
+    // which it fits, to a millionth.
+    if (chords_needed(p, relative * pair_size) <= max_chords_per_part) return relative;
+    double lo = relative, hi = 2 * relative;
+    while (chords_needed(p, hi * pair_size) > max_chords_per_part && hi < 1e300) hi *= 2;
+    while (hi / lo > 1 + 1e-6) {
+        const double mid = std::sqrt(lo * hi);
+        (chords_needed(p, mid * pair_size) > max_chords_per_part ? lo : hi) = mid;
+    }
+    return hi;
 }
 
 }  // namespace qm::geometry

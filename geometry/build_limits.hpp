@@ -35,8 +35,9 @@ inline constexpr std::uint64_t max_grid_samples = std::uint64_t{4096} * 4096;
 [[nodiscard]] double coordinate_magnitude(const Part& p) noexcept;
 // The least absolute tolerance that double arithmetic resolves on coordinates of that magnitude.
 [[nodiscard]] double least_resolvable_length(double magnitude) noexcept;
-// The relative chordal tolerance at which the part needs at most max_chords_per_part chords, when
-// its pairs' smaller part has size `pair_size` (a little above the exact threshold).
+// The least relative chordal tolerance (to a millionth) at which the part needs at most
+// max_chords_per_part chords, when its pairs' smaller part has size `pair_size`; `relative`
+// itself if that is enough.
 [[nodiscard]] double chordal_tolerance_for_limit(const Part& p, double relative, double pair_size) noexcept;
 
 }  // namespace qm::geometry

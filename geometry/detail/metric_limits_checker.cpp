@@ -94,8 +94,10 @@ void Checker::limits(const Mechanism& m) {
         const Partner& partner = partners[i];
         if (!partner.id || !(partner.size >= min_part_size)) continue;  // no pair, or the partner is refused itself
         const double pair_size = std::min(size, partner.size);
-        const std::string smaller = partner.size < size ? "'" + m.parts[*partner.id].name + "', " + num(partner.size) + " across"
-                                                        : "'" + p.name + "' itself, " + num(size) + " across";
+        const std::string smaller =
+            partner.size < size ? "'" + m.parts[*partner.id].name + "', " + num(partner.size) + " across, " +
+                                      (m.pairs_declared ? "the smaller part of its pair" : "the smallest part it may pair with, as no Pairs section names the pairs")
+                                : "its own size, " + num(size);
         // Precision: the tolerances must be lengths that double arithmetic resolves where the
         // part goes; beyond, contacts and chords are decided by rounding.
         const double reach = coordinate_magnitude(p), least = least_resolvable_length(reach);
@@ -106,8 +108,7 @@ void Checker::limits(const Mechanism& m) {
             precise = false;
             const double needed = round_up(least / pair_size);
             fail(id, "part '" + p.name + "' reaches " + num(reach) + " from the origin as it moves, where double arithmetic resolves " +
-                         "lengths of about " + num(least) + "; its " + name + " (" + num(relative) + " of " + smaller +
-                         ", the smaller part of its pairs) is finer than that: " +
+                         "lengths of about " + num(least) + "; its " + name + " (" + num(relative) + " of " + smaller + ") is finer than that: " +
                          (needed < 0.5 ? "raise " + std::string(name) + " to at least " + num(needed) + ", or draw the scene nearer the origin"
                                        : std::string("draw the scene nearer the origin, or its small parts larger")));
         }
@@ -117,7 +118,7 @@ void Checker::limits(const Mechanism& m) {
         if (chords <= max_chords_per_part) continue;
         const double needed = round_up(chordal_tolerance_for_limit(p, s.chordal_tolerance, pair_size));
         fail(id, "part '" + p.name + "' would be cut into " + count_text(chords) + " chords for its collision model (chordal-tolerance " +
-                     num(s.chordal_tolerance) + " of " + smaller + ", the smaller part of its pairs), more than the limit of " +
+                     num(s.chordal_tolerance) + " of " + smaller + "), more than the limit of " +
                      count_text(max_chords_per_part) + " per part: " +
                      (needed < 0.5 ? "raise chordal-tolerance to at least " + num(needed) + ", or pair parts nearer in size"
                                    : "no chordal-tolerance below 0.5 is coarse enough; pair parts nearer in size"));
