@@ -341,7 +341,11 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
         if (svg_dir) {  // the picture needs the sampled space, which the cache does not keep
             auto built = g::build_place_vocabulary(*oracle, request);
             QM_REQUIRE(built.status == g::PlaceStatus::ok, built.message);
-            if (cache) (void)cache->store(g::place_cache_material(*oracle, request), built.vocabulary);
+            if (cache) {
+                const std::string material = g::place_cache_material(*oracle, request);
+                const std::string note = g::cache_note(*cache, material, {}, cache->store(material, built.vocabulary));
+                if (!note.empty()) warn(diags, *m, pair.where, note);
+            }
             const std::string name = m->parts[pair.a].name + "--" + m->parts[pair.b].name + ".svg";
             std::ofstream os(*svg_dir / name);
             g::write_cspace_svg(os, built.space, built.vocabulary,
@@ -353,6 +357,8 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
             QM_REQUIRE(loaded.status == g::PlaceStatus::ok, loaded.message);
             vocabulary = std::move(loaded.vocabulary);
             from_cache = loaded.from_cache;
+            // What the cache did when it is not a plain hit or store: a file refused, or not written.
+            if (!loaded.note.empty()) warn(diags, *m, pair.where, loaded.note);
         } else {
             auto built = g::build_place_vocabulary(*oracle, request);
             QM_REQUIRE(built.status == g::PlaceStatus::ok, built.message);
