@@ -82,10 +82,16 @@ struct Builder {
 
     void make_chains(const std::vector<BoundaryChain>& traced);
     void absorb_short_runs(std::vector<ChainNode>& nodes, bool is_closed);
+    void absorb_unresolved_runs(std::vector<ChainNode>& nodes, bool is_closed);
     void adopt_neighbour_normals(std::vector<ChainNode>& nodes, const std::vector<int>& points, bool is_closed);
     void insert_normal_joins(std::size_t c);
+    void insert_joins_and_drop_tip_islands();
+    [[nodiscard]] bool small_island(std::size_t c) const;
     void collapse_point_runs(std::size_t c);
     Eigen::Vector2d corner(const std::vector<ChainNode>& nodes, std::size_t k, bool is_closed);
+    [[nodiscard]] std::size_t sound_node(const std::vector<ChainNode>& nodes, std::size_t k, int step, bool is_closed) const;
+    Eigen::Vector2d normal_change(const ChainNode& a, const Eigen::Vector2d& pb, const Eigen::Vector2d& nb);
+    [[nodiscard]] bool concave(const ChainNode& a, const ChainNode& b, const Eigen::Vector2d& q) const;
     bool on_tangents(const Eigen::Vector2d& p, const Eigen::Vector2d& n, const Eigen::Vector2d& x);
     bool duplicate(const Division& d) const;
     void grow_fsds();
@@ -93,6 +99,7 @@ struct Builder {
     void add_external_divisions();
     void end_on_boundary(Division& d, double t, JoinKind kind);
     void cross_divisions();
+    [[nodiscard]] std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> barriers_at_joins() const;
     void emit_csegs();
     void emit_divisions();
 };

@@ -138,15 +138,18 @@ TEST_CASE("geometry/place_cache: a well-formed edit (a flipped normal, a changed
     REQUIRE(cache.store(f.material, f.vocabulary));
     const auto path = cache.path_for(f.material);
     const std::string whole = slurp(path);
-    // The file's lines after the key: "np na", then a line per place, then per adjacency.
+    // After the magic line and the key (its length, a space, the text), the body's lines: "np na",
+    // then a line per place, then one per adjacency.
+    const std::size_t key_at = whole.find('\n') + 1, space = whole.find(' ', key_at);
+    const std::size_t body_at = space + 1 + std::stoul(whole.substr(key_at, space - key_at)) + 1;
     std::vector<std::string> lines;
-    std::istringstream in(whole);
+    std::istringstream in(whole.substr(body_at));
     for (std::string line; std::getline(in, line);) lines.push_back(line);
-    const std::size_t first_place = 3, first_adjacency = first_place + f.vocabulary.places.size();
+    const std::size_t first_place = 1, first_adjacency = first_place + f.vocabulary.places.size();
     std::size_t cseg = 0;
     while (f.vocabulary.places[cseg].kind != PlaceKind::cseg) ++cseg;
     auto edited = [&](std::size_t line, std::string text) {
-        std::string out;
+        std::string out = whole.substr(0, body_at);
         for (std::size_t k = 0; k < lines.size(); ++k) out += (k == line ? text : lines[k]) + "\n";
         return out;
     };
