@@ -58,11 +58,15 @@ Eigen::Vector2d Builder::corner(const std::vector<ChainNode>& nodes, std::size_t
         return (loose && off.norm() < 1.5) ||
                (off.lpNorm<Eigen::Infinity>() < 4 && on_tangents(a.q, na, x) && on_tangents(pb, nb, x));
     };
-    if (std::abs(cross(a.normal, b.normal)) > 0.2) {
+    // Normals less than a right angle apart (in cells: angles in configuration units change with a
+    // translation axis' length, and a scene scaled by 100 took a cam's smooth top for a corner,
+    // issue 19): the change of class is found along the boundary, at a smooth extremum or a corner
+    // alike. Sharper corners from the tangents' crossing.
+    if (in_cells(a.normal).dot(in_cells(b.normal)) > 0) return normal_change(a, pb, b.normal);
+    if (std::abs(cross(in_cells(a.normal), in_cells(b.normal))) > 0.2) {
         const Eigen::Vector2d x = crossing(a.normal, b.normal);
         return project(near(x, a.normal, b.normal, true) ? x : mid, a.normal + b.normal);
     }
-    if (a.normal.dot(b.normal) > 0) return normal_change(a, pb, b.normal);
     // The secant from the run's point a cell or two back (at most 4 points) to the run's end.
     auto secant = [&](std::size_t from, int step, const Eigen::Vector2d& normal) -> std::optional<Eigen::Vector2d> {
         std::size_t j = from;
@@ -80,7 +84,7 @@ Eigen::Vector2d Builder::corner(const std::vector<ChainNode>& nodes, std::size_t
         return s.dot(normal) < 0 ? Eigen::Vector2d(-s) : s;
     };
     const auto sa = secant(k, -1, a.normal), sb = secant(k1, 1, b.normal);
-    if (sa && sb && std::abs(cross(*sa, *sb)) > 0.2) {
+    if (sa && sb && std::abs(cross(in_cells(*sa), in_cells(*sb))) > 0.2) {
         const Eigen::Vector2d x = crossing(*sa, *sb);
         if (near(x, *sa, *sb, false)) return project(x, *sa + *sb);
     }
@@ -97,8 +101,8 @@ Eigen::Vector2d Builder::corner(const std::vector<ChainNode>& nodes, std::size_t
 // direction of travel.
 bool Builder::concave(const ChainNode& a, const ChainNode& b, const Eigen::Vector2d& q) const {
     auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& w) { return u.x() * w.y() - u.y() * w.x(); };
-    const double turn = cross(a.normal, b.normal);
-    if (a.normal.dot(b.normal) > 0 && std::abs(turn) <= 0.2 && std::abs(turn) > 1e-9) {
+    const double turn = cross(in_cells(a.normal), in_cells(b.normal));
+    if (in_cells(a.normal).dot(in_cells(b.normal)) > 0 && std::abs(turn) <= 0.2 && std::abs(turn) > 1e-9) {
         const double free_side = cross(difference(r, a.q, b.q), a.normal);
         if (std::abs(free_side) > 0) return (turn > 0) == (free_side > 0);
     }
@@ -116,7 +120,7 @@ Eigen::Vector2d Builder::normal_change(const ChainNode& a, const Eigen::Vector2d
     Eigen::Vector2d lo = a.q, hi = pb;  // the class at lo is a's, at hi not
     for (int i = 0; i < 48 && (hi - lo).cwiseQuotient(cell()).norm() > 1e-7; ++i) {
         const Eigen::Vector2d m = project(0.5 * (lo + hi), along);
-        (qualitative(oracle.free_normal(wrap(r, m)), r.normal_zero_tolerance) == a.qual ? lo : hi) = m;
+            (qualitative(oracle.free_normal(wrap(r, m)), r.normal_zero_tolerance) == a.qual ? lo : hi) = m;
     }
     return project(0.5 * (lo + hi), along);
 }

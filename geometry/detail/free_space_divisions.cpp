@@ -77,7 +77,7 @@ void Builder::grow_fsds() {
                 // through the join met the meshes by chance (the ratchet's bulge at 128 x 1024 lost
                 // both its divisions, issue 19). It runs a twentieth of a cell off the join, into
                 // free space, instead.
-                const Eigen::Vector2d& m = mean_normal[jp];
+                const Eigen::Vector2d m = in_cells(mean_normal[jp]);
                 const int other = 1 - axis;
                 if (opens == true && m.norm() > 0.5 && std::abs(m[axis]) < 0.2)
                     d.start[other] += (m[other] > 0 ? 1 : -1) * 0.05 * r.axes[static_cast<std::size_t>(other)].step();

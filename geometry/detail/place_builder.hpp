@@ -38,6 +38,12 @@ struct Builder {
     std::vector<LineInfo> lines;
 
     [[nodiscard]] Eigen::Vector2d cell() const { return {r.axes[0].step(), r.axes[1].step()}; }
+    // A normal (a covector) in cell units, unit length: angles between normals measured on the
+    // grid, the same whatever a translation axis' length (the scene scaled).
+    [[nodiscard]] Eigen::Vector2d in_cells(const Eigen::Vector2d& n) const {
+        const Eigen::Vector2d c = n.cwiseProduct(cell());
+        return c.norm() > 0 ? Eigen::Vector2d(c.normalized()) : c;
+    }
     [[nodiscard]] bool in_domain(const Eigen::Vector2d& q) const {
         for (int k = 0; k < 2; ++k) {
             const auto& a = r.axes[static_cast<std::size_t>(k)];

@@ -4,7 +4,7 @@
 // moved, turned by quarter turns and scaled 1e-3..1e3 (geometry/mechanism_transform.hpp): on
 // closed-form pairs whose places are counted by hand (a cam against a follower on a tilted axis,
 // the case the issue reports, and a cam against a tilted follower) and on the bundled scenes.
-// A sample of grids runs here; scripts/vocabulary_sweep runs every grid (docs/ACCURACY.md).
+// A sample of grids runs here; bench/geometry/vocabulary_sweep.sh runs every grid (docs/ACCURACY.md).
 #include "mechanism_text.hpp"
 #include "geometry/kinematic_pairs.hpp"
 #include "geometry/mechanism_transform.hpp"
