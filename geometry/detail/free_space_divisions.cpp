@@ -262,8 +262,12 @@ void Builder::cross_divisions() {
             };
             const double ta = param(da, db.start[da.axis]);
             const double tb = param(db, da.start[db.axis]);
-            const double eps = 4 * r.boundary_tolerance;
-            if (ta <= eps || ta >= da.length - eps || tb <= eps || tb >= db.length - eps) continue;
+            // Within a tenth of a cell of an end is at the end: a tangent division runs a twentieth
+            // of a cell off its join (grow_fsds), and the division ending at that join crossed it
+            // there or not by rounding (the Scotch yoke at odd grids, issue 19).
+            const double ea = std::max(4 * r.boundary_tolerance, 0.1 * r.axes[static_cast<std::size_t>(da.axis)].step());
+            const double eb = std::max(4 * r.boundary_tolerance, 0.1 * r.axes[static_cast<std::size_t>(db.axis)].step());
+            if (ta <= ea || ta >= da.length - ea || tb <= eb || tb >= db.length - eb) continue;
             const PlaceId j = add_join(JoinKind::crossing, da.at(ta), {});
             da.joins.push_back({ta, j});
             db.joins.push_back({tb, j});
