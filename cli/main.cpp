@@ -1,6 +1,8 @@
 // cli/main.cpp: the qm-atms command. The only place that prints diagnostics and picks the exit
 // status: 0 success, 2 bad input, 1 internal error (STYLE.md section 6).
 #include "qm/assert.hpp"
+#include "draw_command.hpp"
+#include "explore_command.hpp"
 #include "metric_command.hpp"
 #include "run_command.hpp"
 #include "scene_command.hpp"
@@ -27,13 +29,18 @@ int main(int argc, char** argv) {
             return 2;
         }
         if (args[0] == "--help" || args[0] == "-h") {
-            std::cout << usage << '\n' << qm::cli::scene_usage() << '\n' << qm::cli::metric_usage() << '\n'
-                      << qm::cli::run_usage();
+            std::cout << usage << '\n' << qm::cli::scene_usage() << '\n' << qm::cli::metric_usage() << qm::cli::draw_usage()
+                      << qm::cli::explore_usage() << '\n' << qm::cli::run_usage();
             return 0;
         }
         if (args[0] == "run") {
             doing = "running " + (args.size() > 1 ? args[1] : std::string("a rule program"));
             return qm::cli::run_command(std::span<const std::string>(args).subspan(1), std::cout, std::cerr);
+        }
+        if (args[0] == "draw" || args[0] == "explore") {  // pictures of metric scenes (cli/draw_command.hpp, explore_command.hpp)
+            doing = "drawing " + (args.size() > 1 ? args[1] : std::string("a metric scene"));
+            const auto rest = std::span<const std::string>(args).subspan(1);
+            return args[0] == "draw" ? qm::cli::draw_command(rest, std::cout, std::cerr) : qm::cli::explore_command(rest, std::cout, std::cerr);
         }
         if (args[0] == "--emit-def" || args[0] == "--places") {  // metric scenes (cli/metric_command.hpp)
             doing = "reading " + (args.size() > 1 ? args[1] : std::string("a metric scene"));

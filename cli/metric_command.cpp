@@ -2,8 +2,10 @@
 // contacts and forces at a configuration into an Alex scene (thesis 2.4, 3.1.1, 8.2.1).
 #include "metric_command.hpp"
 
-#include "alex/scene_parser.hpp"
-#include "alex/scene_printer.hpp"
+#include "pair_places.hpp"
+
+#include "scene/scene_parser.hpp"
+#include "scene/scene_printer.hpp"
 #include "geometry/contact_detection.hpp"
 #include "geometry/contact_place.hpp"
 #include "geometry/cspace_svg.hpp"
@@ -15,6 +17,7 @@
 #include "geometry/place_text.hpp"
 #include "geometry/place_vocabulary_builder.hpp"
 #include "qm/assert.hpp"
+#include "qm/json.hpp"
 
 #include <cstdlib>
 #include <filesystem>
@@ -26,7 +29,7 @@ namespace qm::cli {
 namespace {
 
 namespace g = qm::geometry;
-namespace a = qm::alex;
+namespace a = qm::scene;
 
 a::Sign sign_of(std::int8_t s) { return s > 0 ? a::Sign::plus : s < 0 ? a::Sign::minus : a::Sign::zero; }
 a::Direction direction_of(g::QualDirection d) { return {sign_of(d.s[0]), sign_of(d.s[1])}; }
@@ -193,17 +196,6 @@ struct SceneText {
     std::string text;
 };
 
-// The pair's FCL oracle, or a located error when FCL cannot build a part's model (out of memory:
-// the scene checker keeps models within the build limits, but memory may still run out).
-std::unique_ptr<g::FclPairOracle> pair_oracle_or_error(const g::Mechanism& m, const g::PairSpec& pair, Diagnostics& diags) {
-    try {
-        return g::pair_oracle(m, pair);
-    } catch (const g::ModelBuildError& e) {
-        m.error(diags, pair.where, std::string(e.what()) + "; raise chordal-tolerance to build smaller models");
-        return nullptr;
-    }
-}
-
 std::optional<SceneText> scene_at(const std::string& path, const std::string& config, Diagnostics& diags) {
     const auto m = g::read_mechanism_file(path, diags);
     if (!m) return std::nullopt;
@@ -239,13 +231,6 @@ std::optional<SceneText> scene_at(const std::string& path, const std::string& co
     return SceneText{std::move(*checked), std::move(text)};
 }
 
-std::filesystem::path default_cache() {
-    if (const char* p = std::getenv("QM_PLACE_CACHE"); p && *p) return p;
-    if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return std::filesystem::path(x) / "qm-atms" / "places";
-    if (const char* h = std::getenv("HOME"); h && *h) return std::filesystem::path(h) / ".cache" / "qm-atms" / "places";
-    return {};
-}
-
 std::string axis_text(const g::Mechanism& m, g::PartId p, const g::CSpaceAxis& axis) {
     const g::Part& part = m.parts[p];
     std::ostringstream os;
@@ -256,16 +241,6 @@ std::string axis_text(const g::Mechanism& m, g::PartId p, const g::CSpaceAxis& a
     return os.str();
 }
 
-void json_string(std::ostream& os, const std::string& s) {
-    os << '"';
-    for (char c : s) {
-        if (c == '"' || c == '\\') os << '\\' << c;
-        else if (static_cast<unsigned char>(c) < 0x20) os << ' ';
-        else os << c;
-    }
-    os << '"';
-}
-
 int usage_error(std::ostream& err, const std::string& what) {
     err << "qm-atms: " << what << "\n" << metric_usage();
     return 2;
@@ -273,7 +248,7 @@ int usage_error(std::ostream& err, const std::string& what) {
 
 }  // namespace
 
-std::optional<qm::alex::Scene> metric_scene_at(const std::string& path, const std::string& config, Diagnostics& diags) {
+std::optional<qm::scene::Scene> metric_scene_at(const std::string& path, const std::string& config, Diagnostics& diags) {
     auto r = scene_at(path, config, diags);
     if (!r) return std::nullopt;
     return std::move(r->scene);
@@ -311,8 +286,7 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
         diags.print(err);
         return 2;
     }
-    if (!cache_dir && use_cache) cache_dir = default_cache();
-    const std::optional<g::PlaceCache> cache = use_cache && cache_dir && !cache_dir->empty() ? std::optional<g::PlaceCache>(*cache_dir) : std::nullopt;
+    const std::optional<g::PlaceCache> cache = open_place_cache(use_cache, cache_dir);
     if (svg_dir) {
         std::error_code ec;
         std::filesystem::create_directories(*svg_dir, ec);
@@ -326,62 +300,36 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
     std::ostringstream text, js;
     text << "mechanism " << m->name << ": " << selection.modelled.size() << " kinematic pair" << (selection.modelled.size() == 1 ? "" : "s") << '\n';
     js << "{\"schema\":\"qm-metric-places/1\",\"mechanism\":";
-    json_string(js, m->name);
+    write_json_string(js, m->name);
     js << ",\"pairs\":[";
     for (std::size_t k = 0; k < selection.modelled.size(); ++k) {
         const auto& pair = selection.modelled[k];
-        const auto oracle = pair_oracle_or_error(*m, pair, diags);
-        if (!oracle) {
+        auto found = pair_places(*m, pair, cache, svg_dir.has_value(), diags);
+        if (!found) {
             diags.print(err);
             return 2;
         }
-        const auto request = g::place_request(*m, pair);
-        g::PlaceVocabulary vocabulary;
-        bool from_cache = false;
+        auto& places = *found;
         if (svg_dir) {  // the picture needs the sampled space, which the cache does not keep
-            auto built = g::build_place_vocabulary(*oracle, request);
-            QM_REQUIRE(built.status == g::PlaceStatus::ok, built.message);
-            if (cache) {
-                const std::string material = g::place_cache_material(*oracle, request);
-                const std::string note = g::cache_note(*cache, material, {}, cache->store(material, built.vocabulary));
-                if (!note.empty()) warn(diags, *m, pair.where, note);
-            }
             const std::string name = m->parts[pair.a].name + "--" + m->parts[pair.b].name + ".svg";
             std::ofstream os(*svg_dir / name);
-            g::write_cspace_svg(os, built.space, built.vocabulary,
-                                {720, 540, m->name + ": " + m->parts[pair.a].name + " (across) x " + m->parts[pair.b].name + " (up)", true});
+            g::write_cspace_svg(os, *places.oracle, *places.space, places.vocabulary, cspace_svg_options(*m, pair, 720, 540));
             if (!os) return usage_error(err, "cannot write '" + (*svg_dir / name).string() + "'");
-            vocabulary = std::move(built.vocabulary);
-        } else if (cache) {
-            auto loaded = g::build_or_load(*oracle, request, *cache);
-            QM_REQUIRE(loaded.status == g::PlaceStatus::ok, loaded.message);
-            vocabulary = std::move(loaded.vocabulary);
-            from_cache = loaded.from_cache;
-            // What the cache did when it is not a plain hit or store: a file refused, or not written.
-            if (!loaded.note.empty()) warn(diags, *m, pair.where, loaded.note);
-        } else {
-            auto built = g::build_place_vocabulary(*oracle, request);
-            QM_REQUIRE(built.status == g::PlaceStatus::ok, built.message);
-            vocabulary = std::move(built.vocabulary);
         }
-        if (vocabulary.count(g::PlaceKind::face) == 0) {
-            // No free area: parts drawn in contact with zero play move only in contact (8.1.6's gap
-            // place in the limit); parts drawn overlapping have no place at all.
-            const g::ContactRequest touching{m->settings.contact_tolerance, m->settings.normal_zero_tolerance};
-            if (auto in_contact = g::contact_place(*oracle, request, touching))
-                vocabulary = std::move(*in_contact);
-            else
-                warn(diags, *m, pair.where,
-                     "'" + m->parts[pair.a].name + "' and '" + m->parts[pair.b].name +
-                         "' have no free space on the sampled grid, and are not drawn in contact: they overlap everywhere (check the pivots) or their play is below a grid cell");
-        }
+        if (places.no_place)
+            warn(diags, *m, pair.where,
+                 "'" + m->parts[pair.a].name + "' and '" + m->parts[pair.b].name +
+                     "' have no free space on the sampled grid, and are not drawn in contact: they overlap everywhere (check the pivots) or their play is below a grid cell");
+        const auto& request = places.request;
+        const auto& vocabulary = places.vocabulary;
+        const bool from_cache = places.from_cache;
         text << "pair " << m->parts[pair.a].name << ' ' << m->parts[pair.b].name << " (q0 = " << axis_text(*m, pair.a, request.cspace.axes[0])
              << "; q1 = " << axis_text(*m, pair.b, request.cspace.axes[1]) << ")" << (from_cache ? " from cache" : "") << '\n';
         g::write_place_text(text, vocabulary);
         js << (k ? "," : "") << "{\"parts\":[";
-        json_string(js, m->parts[pair.a].name);
+        write_json_string(js, m->parts[pair.a].name);
         js << ',';
-        json_string(js, m->parts[pair.b].name);
+        write_json_string(js, m->parts[pair.b].name);
         js << "],\"from_cache\":" << (from_cache ? "true" : "false") << ",\"vocabulary\":";
         g::write_place_json(js, request.cspace, vocabulary);
         js << '}';
@@ -391,11 +339,11 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
         const auto& s = selection.skipped[k];
         text << "no configuration space for " << m->parts[s.a].name << ' ' << m->parts[s.b].name << ": " << s.reason << '\n';
         js << (k ? "," : "") << "{\"parts\":[";
-        json_string(js, m->parts[s.a].name);
+        write_json_string(js, m->parts[s.a].name);
         js << ',';
-        json_string(js, m->parts[s.b].name);
+        write_json_string(js, m->parts[s.b].name);
         js << "],\"reason\":";
-        json_string(js, s.reason);
+        write_json_string(js, s.reason);
         js << '}';
     }
     js << "],\"linkages\":[";
@@ -405,7 +353,7 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
         for (std::size_t i = 0; i < m->linkages[k].parts.size(); ++i) {
             text << ' ' << m->parts[m->linkages[k].parts[i]].name;
             js << (i ? "," : "");
-            json_string(js, m->parts[m->linkages[k].parts[i]].name);
+            write_json_string(js, m->parts[m->linkages[k].parts[i]].name);
         }
         text << '\n';
         js << ']';

@@ -7,7 +7,7 @@
 //             - `qm-atms --places METRIC-SCENE [--json] [--svg DIR] [--cache DIR | --no-cache]`:
 //               the place vocabulary of each kinematic pair (Def 20), from the on-disk cache when
 //               the same pair and settings were computed before (8.1.3);
-//             - metric_scene_at(), the conversion geometry -> alex::Scene behind --emit-def, for
+//             - metric_scene_at(), the conversion geometry -> scene::Scene behind --emit-def, for
 //               analysing a metric scene at a configuration exactly as a symbolic scene.
 // Errors:     bad input (scene, CONFIG, parts overlapping at CONFIG, bad options) goes to `diags`
 //             / `err` as `file:line:col: error: ...` with the source line and a caret; the
@@ -15,7 +15,7 @@
 //             not fail. Corners in contact are written as Alex corners (Def 18).
 //             qm::InternalError propagates to main (exit 1).
 #pragma once
-#include "alex/scene.hpp"
+#include "scene/scene.hpp"
 #include "qm/diagnostics.hpp"
 #include <optional>
 #include <ostream>
@@ -26,7 +26,7 @@ namespace qm::cli {
 
 // The scene at `config` (the CONFIG syntax; empty = as drawn). The result is a checked Scene
 // (it has been printed and read back through the Alex reader). Errors go to diags.
-[[nodiscard]] std::optional<qm::alex::Scene> metric_scene_at(const std::string& path, const std::string& config, Diagnostics& diags);
+[[nodiscard]] std::optional<qm::scene::Scene> metric_scene_at(const std::string& path, const std::string& config, Diagnostics& diags);
 
 // args: the arguments after `--emit-def` / `--places`.
 [[nodiscard]] int emit_def_command(std::span<const std::string> args, std::ostream& out, std::ostream& err);

@@ -5,7 +5,7 @@
 //               {"follower": {"rotation": "(-)"}}                 Rotational-Motion (follower (-))
 //               {"block": {"translation": "(0 -)"}}               Translational-Motion (block (0 -))
 //               {"freedom": {"block": {"translation": "(0 +)"}}}  Translational-Freedom (block (0 +))
-//             and returns the thesis notation, which alex::parse_query_fact reads and checks.
+//             and returns the thesis notation, which scene::parse_query_fact reads and checks.
 // Errors:     a malformed JSON spelling is reported as `ORIGIN:1:COL: error: expected ... but found ...`.
 #pragma once
 #include "qm/diagnostics.hpp"

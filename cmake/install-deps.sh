@@ -12,6 +12,7 @@ packages=(
   doctest-dev                          # unit tests
   libbenchmark-dev                     # bench/
   clang libclang-rt-14-dev             # libFuzzer targets and sanitizer runtimes
+  chromium chromium-driver python3-selenium  # the explorer page's test in a headless browser
 )
 
 missing=()

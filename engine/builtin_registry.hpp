@@ -10,6 +10,7 @@
 //             text; the engine turns it into a located diagnostic. It never throws for bad values.
 // Knows nothing of the ATMS or of mechanics.
 #pragma once
+#include "engine/fwd.hpp"
 #include "engine/value_table.hpp"
 #include <functional>
 #include <optional>
@@ -19,7 +20,6 @@
 #include <unordered_map>
 
 namespace qm::engine {
-using BuiltinId = qm::Id<struct BuiltinTag>;
 
 // The answer of a builtin: a value (functions), a truth (tests), or an error text.
 struct BuiltinResult {

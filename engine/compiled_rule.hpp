@@ -8,6 +8,7 @@
 //             order (so `not` and aggregates see exactly the variables bound before them).
 // Knows nothing of the ATMS.
 #pragma once
+#include "engine/fwd.hpp"
 #include "engine/builtin_registry.hpp"
 #include "engine/value.hpp"
 #include "qm/diagnostics.hpp"
@@ -17,7 +18,6 @@
 
 namespace qm::engine {
 using Slot = std::uint32_t;
-using RuleId = qm::Id<struct RuleTag>;
 
 struct CompiledTerm {
     enum class Kind : std::uint8_t { constant, variable, call } kind = Kind::constant;

@@ -9,18 +9,20 @@ Engine::Engine(CompiledProgram program, ValueTable values, const BuiltinRegistry
     : program_(std::move(program)), values_(std::move(values)), builtins_(builtins) {
     atms_.add_consumer(*this);
     for (std::size_t i = 0; i < program_.rules.size(); ++i) {
-        rule_cursor_.push_back(0);
+        const RuleId r{static_cast<std::uint32_t>(i)};
+        rule_fresh_.push_back({});
         rule_matched_.push_back(0);
-        // The predicates whose new facts can extend a match of the rule (drain() skips the others).
+        // The predicates whose new facts can extend a match of the rule (drain() wakes it for those).
         std::vector<ValueId> triggers;
-        for (const auto& c : program_.rules[RuleId{static_cast<std::uint32_t>(i)}].conditions) {
+        for (const auto& c : program_.rules[r].conditions) {
             if (c.kind == CompiledCondition::Kind::match) triggers.push_back(c.atom.predicate);
             if (c.kind == CompiledCondition::Kind::for_all || c.kind == CompiledCondition::Kind::exists)
                 for (const auto& a : c.atoms) triggers.push_back(a.predicate);
         }
         std::sort(triggers.begin(), triggers.end());
         triggers.erase(std::unique(triggers.begin(), triggers.end()), triggers.end());
-        rule_triggers_.push_back(std::move(triggers));
+        for (ValueId p : triggers) rules_by_trigger_[p.value].push_back(r);
+        rule_plans_.push_back(plan_matching(program_.rules[r]));
     }
     for (const auto& p : program_.premises) {
         FactId f = intern_fact(p.predicate, p.args);

@@ -33,6 +33,7 @@
 #include <set>
 #include <span>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace qm::engine {
@@ -136,6 +137,9 @@ private:
     void match_rule(RuleId r, std::optional<Seed> seed, std::optional<std::uint32_t> context,
                     Diagnostics& diagnostics, const Binding* initial = nullptr);
     bool drain(std::uint32_t stratum, std::optional<std::uint32_t> context, Diagnostics& diagnostics);
+    void log_active(FactId f);
+    void match_fresh(RuleId r, std::span<const FactId> fresh, std::optional<std::uint32_t> context,
+                     Diagnostics& diagnostics);
     void close_contexts();
     // engine_closed_world.cpp
     [[nodiscard]] ClosedWorldStatus status(FactId f, std::optional<std::uint32_t> context);  // may intern envs
@@ -157,11 +161,14 @@ private:
     IdVector<atms::DatumId, Datum> datums_;
     std::vector<Firing> firings_;                        // indexed by InformantId
     Agenda agenda_;
-    std::vector<FactId> activation_log_;                 // facts in the order they became active
     std::vector<FactId> pending_activation_;             // label became non-empty, not yet logged
-    IdVector<RuleId, std::size_t> rule_cursor_;          // activation_log_ prefix each rule has seen
     IdVector<RuleId, std::uint8_t> rule_matched_;               // a full match has been done
-    IdVector<RuleId, std::vector<ValueId>> rule_triggers_;     // predicates it matches (sorted)
+    // Facts that became active since each rule was last matched, of predicates it matches (in a
+    // `match` or a quantifier), in activation order; woken_ lists the rules with some, ascending.
+    IdVector<RuleId, std::vector<FactId>> rule_fresh_;
+    std::vector<RuleId> woken_;
+    std::unordered_map<std::uint32_t, std::vector<RuleId>> rules_by_trigger_;  // predicate -> rules, ascending
+    IdVector<RuleId, MatchPlan> rule_plans_;                    // plan_matching() of each rule
     std::vector<std::vector<atms::AssumptionId>> choice_sets_;
     std::vector<SourceLocation> choice_set_where_;       // the `exactly one` that declared each set
     std::set<std::vector<atms::AssumptionId>> choice_set_keys_;  // every set seen, sorted (also refused ones)

@@ -37,10 +37,10 @@ void Engine::run_strata(std::optional<std::uint32_t> context, Diagnostics& diagn
             const CompiledRule& rule = program_.rules[r];
             if (rule.stratum != s) continue;
             if (rule.non_monotonic || !rule_matched_[r]) {
-                // Facts not yet logged are matched later, through the cursor. No rule runs before
+                // Facts not yet logged are matched later, as fresh facts. No rule runs before
                 // every rule of the stratum has been matched, so contradiction rules are in place
                 // before anything can derive from a doomed environment.
-                rule_cursor_[r] = activation_log_.size();
+                rule_fresh_[r].clear();
                 rule_matched_[r] = 1;
                 match_rule(r, std::nullopt, context, diagnostics);
             }
@@ -52,76 +52,90 @@ void Engine::run_strata(std::optional<std::uint32_t> context, Diagnostics& diagn
 
 // Executes queued instances and matches newly active facts against the rules of strata <= s
 // until nothing changes. New facts are matched after every single execution, so that urgent
-// instances (contradictions) they trigger run before anything else. Rules of later strata see the
-// new facts through their cursors.
+// instances (contradictions) they trigger run before anything else. Only the rules a new fact can
+// wake are visited (log_active() queues it for them), in rule order; rules of later strata keep
+// their queued facts until their stratum.
 bool Engine::drain(std::uint32_t s, std::optional<std::uint32_t> context, Diagnostics& diagnostics) {
     bool changed = false;
+    std::vector<FactId> fresh;
     for (;;) {
         if (stopped_) return changed;
         for (FactId f : pending_activation_)
-            if (facts_.activate(f)) activation_log_.push_back(f);
+            if (facts_.activate(f)) log_active(f);
         pending_activation_.clear();
-        for (std::size_t i = 0; i < program_.rules.size(); ++i) {
-            RuleId r{static_cast<std::uint32_t>(i)};
-            const CompiledRule& rule = program_.rules[r];
-            if (rule.stratum > s || !rule_matched_[r]) continue;
-            std::size_t begin = rule_cursor_[r];
-            std::size_t end = activation_log_.size();
-            if (begin == end) continue;
-            rule_cursor_[r] = end;
-            // Only facts of a predicate the rule matches can extend its matches.
-            const auto& triggers = rule_triggers_[r];
-            if (std::none_of(activation_log_.begin() + static_cast<std::ptrdiff_t>(begin),
-                             activation_log_.begin() + static_cast<std::ptrdiff_t>(end), [&](FactId f) {
-                                 return std::binary_search(triggers.begin(), triggers.end(), facts_.fact(f).predicate);
-                             }))
-                continue;
-            // A new fact of a predicate used inside a quantifier can complete a `for all` or an
-            // `exists` only for the bindings of the rule's other variables it unifies with: match
-            // the rule again from those (the agenda drops repeated bindings). If it cannot be
-            // unified ahead (a function call over the quantified variable), match the whole rule.
-            bool full = false;
-            std::vector<Binding> prebound;
-            Matcher probe(facts_, values_, builtins_, ClosedWorld{});
-            for (std::size_t k = begin; k < end && !full; ++k) {
-                FactId f = activation_log_[k];
-                ValueId p = facts_.fact(f).predicate;
-                for (const auto& c : rule.conditions) {
-                    if (c.kind != CompiledCondition::Kind::for_all && c.kind != CompiledCondition::Kind::exists) continue;
-                    for (const auto& a : c.atoms) {
-                        if (a.predicate != p) continue;
-                        bool has_call = std::any_of(a.args.begin(), a.args.end(), [](const CompiledTerm& t) {
-                            return t.kind == CompiledTerm::Kind::call;
-                        });
-                        if (has_call) {
-                            full = true;
-                            break;
-                        }
-                        if (auto b = probe.prebind(rule, a, c.slot, f)) prebound.push_back(std::move(*b));
-                    }
-                    if (full) break;
-                }
-            }
-            if (full) {
-                match_rule(r, std::nullopt, context, diagnostics);
+        // Matching queues instances but activates nothing, so woken_ does not change in this loop.
+        std::size_t kept = 0;
+        for (RuleId r : woken_) {
+            if (program_.rules[r].stratum > s || !rule_matched_[r]) {
+                woken_[kept++] = r;
                 continue;
             }
-            std::sort(prebound.begin(), prebound.end());
-            prebound.erase(std::unique(prebound.begin(), prebound.end()), prebound.end());
-            for (const Binding& b : prebound) match_rule(r, std::nullopt, context, diagnostics, &b);
-            for (std::size_t k = begin; k < end; ++k) {
-                FactId f = activation_log_[k];
-                ValueId p = facts_.fact(f).predicate;
-                for (std::uint32_t c = 0; c < rule.conditions.size(); ++c) {
-                    const auto& cond = rule.conditions[c];
-                    if (cond.kind == CompiledCondition::Kind::match && cond.atom.predicate == p)
-                        match_rule(r, Seed{c, f}, context, diagnostics);
-                }
-            }
+            fresh.swap(rule_fresh_[r]);
+            rule_fresh_[r].clear();
+            if (!fresh.empty()) match_fresh(r, fresh, context, diagnostics);
         }
+        woken_.resize(kept);
         if (agenda_.empty() && pending_activation_.empty()) return changed;
         if (!agenda_.empty()) execute(agenda_.pop(), diagnostics);
         changed = true;
+    }
+}
+
+// Queues a newly active fact for every rule that matches its predicate.
+void Engine::log_active(FactId f) {
+    auto it = rules_by_trigger_.find(facts_.fact(f).predicate.value);
+    if (it == rules_by_trigger_.end()) return;
+    for (RuleId r : it->second) {
+        auto at = std::lower_bound(woken_.begin(), woken_.end(), r);
+        if (at == woken_.end() || *at != r) woken_.insert(at, r);
+        rule_fresh_[r].push_back(f);
+    }
+}
+
+// Matches rule r against the facts that became active since it was last matched (of predicates it
+// matches, in activation order): seeded at each `match` condition of the fact's predicate, and,
+// for a quantifier's atom, from the bindings the fact unifies with.
+void Engine::match_fresh(RuleId r, std::span<const FactId> fresh, std::optional<std::uint32_t> context,
+                         Diagnostics& diagnostics) {
+    const CompiledRule& rule = program_.rules[r];
+    // A new fact of a predicate used inside a quantifier can complete a `for all` or an `exists`
+    // only for the bindings of the rule's other variables it unifies with: match the rule again
+    // from those (the agenda drops repeated bindings). If it cannot be unified ahead (a function
+    // call over the quantified variable), match the whole rule.
+    bool full = false;
+    std::vector<Binding> prebound;
+    Matcher probe(facts_, values_, builtins_, ClosedWorld{});
+    for (std::size_t k = 0; k < fresh.size() && !full; ++k) {
+        FactId f = fresh[k];
+        ValueId p = facts_.fact(f).predicate;
+        for (const auto& c : rule.conditions) {
+            if (c.kind != CompiledCondition::Kind::for_all && c.kind != CompiledCondition::Kind::exists) continue;
+            for (const auto& a : c.atoms) {
+                if (a.predicate != p) continue;
+                bool has_call = std::any_of(a.args.begin(), a.args.end(),
+                                            [](const CompiledTerm& t) { return t.kind == CompiledTerm::Kind::call; });
+                if (has_call) {
+                    full = true;
+                    break;
+                }
+                if (auto b = probe.prebind(rule, a, c.slot, f)) prebound.push_back(std::move(*b));
+            }
+            if (full) break;
+        }
+    }
+    if (full) return match_rule(r, std::nullopt, context, diagnostics);
+    std::sort(prebound.begin(), prebound.end());
+    prebound.erase(std::unique(prebound.begin(), prebound.end()), prebound.end());
+    for (const Binding& b : prebound) match_rule(r, std::nullopt, context, diagnostics, &b);
+    for (FactId f : fresh) {
+        ValueId p = facts_.fact(f).predicate;
+        for (std::uint32_t c = 0; c < rule.conditions.size(); ++c) {
+            const auto& cond = rule.conditions[c];
+            // A repeat of an earlier identical condition matches where that one does: its seed
+            // finds the same matches, already found through the earlier one's.
+            if (cond.kind == CompiledCondition::Kind::match && cond.atom.predicate == p && !rule_plans_[r].repeat_of[c])
+                match_rule(r, Seed{c, f}, context, diagnostics);
+        }
     }
 }
 
@@ -139,7 +153,7 @@ void Engine::match_rule(RuleId r, std::optional<Seed> seed, std::optional<std::u
     bool urgent = std::any_of(rule.consequents.begin(), rule.consequents.end(),
                               [](const CompiledConsequent& c) { return c.kind == CompiledConsequent::Kind::falsity; });
     matcher.match(
-        rule, seed,
+        rule, rule_plans_[r], seed,
         [&](const Binding& b, std::span<const FactId> ants) {
             agenda_.push(RuleInstance{r, b, std::vector<FactId>(ants.begin(), ants.end()), rule_context}, urgent);
         },

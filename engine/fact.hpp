@@ -4,11 +4,11 @@
 // Invariants: predicate is a symbol value; a fact's identity is its predicate and arguments.
 // Knows nothing of the ATMS: which node stands for a fact is the Engine's business.
 #pragma once
+#include "engine/fwd.hpp"
 #include "engine/value.hpp"
 #include <vector>
 
 namespace qm::engine {
-using FactId = qm::Id<struct FactTag>;
 
 struct Fact {
     ValueId predicate;

@@ -32,6 +32,7 @@ std::pair<FactId, bool> FactStore::intern(ValueId predicate, std::span<const Val
     active_.push_back(0);
     by_key_.emplace(std::move(k), id);
     all_by_predicate_[predicate.value].push_back(id);
+    for (std::uint32_t i = 0; i < args.size(); ++i) all_by_argument_[arg_key(predicate, i, args[i])].push_back(id);
     return {id, true};
 }
 
@@ -49,6 +50,12 @@ const Fact& FactStore::fact(FactId f) const {
 std::span<const FactId> FactStore::with_predicate(ValueId predicate) const {
     auto it = all_by_predicate_.find(predicate.value);
     if (it == all_by_predicate_.end()) return {};
+    return it->second;
+}
+
+std::span<const FactId> FactStore::with_argument(ValueId predicate, std::uint32_t position, ValueId value) const {
+    auto it = all_by_argument_.find(arg_key(predicate, position, value));
+    if (it == all_by_argument_.end()) return {};
     return it->second;
 }
 

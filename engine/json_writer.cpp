@@ -1,6 +1,6 @@
 // engine/json_writer.cpp
 #include "engine/json_writer.hpp"
-#include <cstdio>
+#include "qm/json.hpp"
 
 namespace qm::engine {
 namespace {
@@ -42,27 +42,6 @@ std::string derivation_list(const std::vector<Derivation>& ds) {
 }
 
 }  // namespace
-
-std::string json_string(std::string_view text) {
-    std::string out = "\"";
-    for (char c : text) {
-        switch (c) {
-            case '"': out += "\\\""; break;
-            case '\\': out += "\\\\"; break;
-            case '\n': out += "\\n"; break;
-            case '\t': out += "\\t"; break;
-            default:
-                if (static_cast<unsigned char>(c) < 0x20) {
-                    char buf[8];
-                    std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(c));
-                    out += buf;
-                } else {
-                    out += c;
-                }
-        }
-    }
-    return out + "\"";
-}
 
 std::string to_json(const RunReport& report) {
     std::string out = "{\"facts\": [";

@@ -9,16 +9,14 @@
 //             {"environment": [A, ...], "steps": [{"fact": F, "informant": TEXT, "binding": [TEXT, ...],
 //              "antecedents": [F, ...], "not": [F, ...]}, ...]} with the steps leaves first, as the text
 //             form prints them ("not": the `not` conditions the firing relied on, its "and not" lines).
+// Strings are written by the project's one JSON string writer (qm/json.hpp).
 // Knows nothing of the ATMS.
 #pragma once
 #include "engine/run_report.hpp"
 #include "engine/why.hpp"
 #include <string>
-#include <string_view>
 
 namespace qm::engine {
 [[nodiscard]] std::string to_json(const RunReport& report);
 [[nodiscard]] std::string to_json(const Why& why);
-// A JSON string literal for text (quotes, backslashes and control characters escaped).
-[[nodiscard]] std::string json_string(std::string_view text);
 }  // namespace qm::engine

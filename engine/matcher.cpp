@@ -11,6 +11,7 @@ namespace qm::engine {
 struct Matcher::Run {
     Matcher& m;
     const CompiledRule& rule;
+    const MatchPlan* plan;  // null only for prebind(), which never steps through conditions
     std::optional<Seed> seed;
     const OnMatch& on_match;
     const OnError& on_error;
@@ -18,6 +19,8 @@ struct Matcher::Run {
     std::vector<Slot> trail;
     std::vector<FactId> antecedents;
     std::vector<ValueId> scratch;  // arguments of a `for all` atom being looked up
+    std::vector<FactId> matched_at;  // per condition: the fact its `match` matched on the current path
+                                     // (kept only when the plan has repeats, which read it)
 
     void bind(Slot s, ValueId v) {
         binding[s] = v;
@@ -66,14 +69,20 @@ struct Matcher::Run {
         return true;
     }
 
-    // Active facts that may unify with atom: the smallest argument index list among ground args.
-    std::span<const FactId> candidates(const CompiledAtom& atom) {
-        std::span<const FactId> best = m.facts_.active_with_predicate(atom.predicate);
-        for (std::uint32_t i = 0; i < atom.args.size(); ++i) {
+    // The facts that may unify with atom under the current binding (only the active ones, or all
+    // of them for the closed world): the shortest of the predicate's list and the lists of the
+    // atom's ground arguments (constants and bound variables). Each list is a subsequence of the
+    // predicate's, in the same order, so narrowing skips facts that cannot unify and never changes
+    // the order of those that do: a join costs what it matches, not what the predicate holds.
+    std::span<const FactId> candidates(const CompiledAtom& atom, bool active_only) {
+        std::span<const FactId> best = active_only ? m.facts_.active_with_predicate(atom.predicate)
+                                                   : m.facts_.with_predicate(atom.predicate);
+        for (std::uint32_t i = 0; i < atom.args.size() && !best.empty(); ++i) {
             const CompiledTerm& t = atom.args[i];
             if (t.kind == CompiledTerm::Kind::call || !is_ground(t, binding)) continue;
             ValueId v = t.kind == CompiledTerm::Kind::constant ? t.constant : *binding[t.slot];
-            auto s = m.facts_.active_with_argument(atom.predicate, i, v);
+            auto s = active_only ? m.facts_.active_with_argument(atom.predicate, i, v)
+                                 : m.facts_.with_argument(atom.predicate, i, v);
             if (s.size() < best.size()) best = s;
         }
         return best;
@@ -83,7 +92,7 @@ struct Matcher::Run {
     void match_atoms(std::span<const CompiledAtom> atoms, const std::function<void()>& next) {
         if (atoms.empty()) return next();
         const CompiledAtom& atom = atoms.front();
-        for (FactId f : candidates(atom)) {
+        for (FactId f : candidates(atom, true)) {
             if (!tick()) return;
             std::size_t mark = trail.size();
             if (unify(atom, f)) {
@@ -141,7 +150,7 @@ struct Matcher::Run {
     template <class Each>
     bool closed_world_scan(const CompiledAtom& atom, Each&& each) {
         bool decidable = true;
-        for (FactId f : m.facts_.with_predicate(atom.predicate)) {
+        for (FactId f : candidates(atom, false)) {
             if (!tick()) return decidable;
             std::size_t mark = trail.size();
             if (unify(atom, f)) {
@@ -173,20 +182,31 @@ struct Matcher::Run {
     }
 
     void step_match(std::size_t i, const CompiledCondition& c) {
+        auto matched = [&](FactId f) {
+            antecedents.push_back(f);
+            if (!matched_at.empty()) matched_at[i] = f;
+            step(i + 1);
+            antecedents.pop_back();
+        };
         if (seed && seed->condition == i) {
             std::size_t mark = trail.size();
-            if (unify(c.atom, seed->fact)) {
-                antecedents.push_back(seed->fact);
-                step(i + 1);
-                antecedents.pop_back();
-            }
+            if (unify(c.atom, seed->fact)) matched(seed->fact);
             undo(mark);
             return;
         }
-        match_atoms(std::span<const CompiledAtom>(&c.atom, 1), [&] { step(i + 1); });
+        // An identical earlier `match` has bound every variable of this atom to the fact it
+        // matched, which is the only fact this one can match: take it without looking it up.
+        if (const auto& first = plan->repeat_of[i]) return matched(matched_at[*first]);
+        match_atoms(std::span<const CompiledAtom>(&c.atom, 1), [&] {
+            if (!matched_at.empty()) matched_at[i] = antecedents.back();
+            step(i + 1);
+        });
     }
 
     void step_test(std::size_t i, const CompiledCondition& c) {
+        // An identical earlier test held on this path (with the same arguments: they were ground
+        // there, or its `=` bound them), so this one holds too.
+        if (plan->repeat_of[i]) return step(i + 1);
         const CompiledTest& t = c.test;
         // `(= ?x TERM)` with ?x unbound binds ?x (the checker guarantees TERM is ground here).
         if (m.equals_ && t.test == *m.equals_ && t.args.size() == 2 &&
@@ -299,79 +319,34 @@ Matcher::Matcher(const FactStore& facts, ValueTable& values, const BuiltinRegist
     : facts_(facts), values_(values), builtins_(builtins), closed_world_(closed_world),
       equals_(builtins.find("=")) {}
 
-void Matcher::match(const CompiledRule& rule, std::optional<Seed> seed, const OnMatch& on_match,
+void Matcher::match(const CompiledRule& rule, const MatchPlan& plan, std::optional<Seed> seed, const OnMatch& on_match,
                     const OnError& on_error, const Binding* initial) {
+    QM_REQUIRE(plan.repeat_of.size() == rule.conditions.size() && plan.seed_first_safe.size() == rule.conditions.size(),
+               "the plan is the rule's");
     if (seed) {
         QM_REQUIRE(seed->condition < rule.conditions.size() &&
                        rule.conditions[seed->condition].kind == CompiledCondition::Kind::match,
                    "a seed names a match condition");
     }
     QM_REQUIRE(!initial || initial->size() == rule.slot_count(), "an initial binding has one entry per slot");
-    Run run{*this, rule, seed, on_match, on_error, initial ? *initial : Binding(rule.slot_count()), {}, {}, {}};
+    Run run{*this, rule, &plan, seed, on_match, on_error, initial ? *initial : Binding(rule.slot_count()), {}, {}, {}, {}};
+    if (plan.has_repeat) run.matched_at.resize(rule.conditions.size());
     // Semi-naive matching: bind the seed fact's variables first, so that the conditions written
     // before it are looked up through the argument index instead of scanned. This gives the same
     // matches in the same order unless an earlier `not`, aggregate or quantifier would see one of
     // those variables unbound (then local to it): such rules are matched as written.
-    if (seed && seed_first_is_safe(rule, seed->condition)) {
+    if (seed && plan.seed_first_safe[seed->condition]) {
         if (!run.unify(rule.conditions[seed->condition].atom, seed->fact)) return;
         run.trail.clear();
     }
     run.step(0);
 }
 
-bool Matcher::seed_first_is_safe(const CompiledRule& rule, std::uint32_t seeded) {
-    std::vector<bool> bound(rule.slot_count(), false);
-    std::vector<bool> in_seed(rule.slot_count(), false);
-    auto mark = [](const CompiledTerm& t, std::vector<bool>& v, auto& self) -> void {
-        if (t.kind == CompiledTerm::Kind::variable) v[t.slot] = true;
-        for (const auto& a : t.args) self(a, v, self);
-    };
-    for (const auto& t : rule.conditions[seeded].atom.args) mark(t, in_seed, mark);
-    auto touches_seed = [&](const CompiledTerm& t) {
-        std::vector<bool> used(rule.slot_count(), false);
-        mark(t, used, mark);
-        for (std::size_t k = 0; k < used.size(); ++k)
-            if (used[k] && in_seed[k] && !bound[k]) return true;
-        return false;
-    };
-    for (std::uint32_t i = 0; i < seeded; ++i) {
-        const CompiledCondition& c = rule.conditions[i];
-        switch (c.kind) {
-            case CompiledCondition::Kind::match:
-                for (const auto& t : c.atom.args) mark(t, bound, mark);
-                break;
-            case CompiledCondition::Kind::test:
-                // `(= ?x TERM)` binds ?x when it is unbound; a seed-bound ?x makes it a comparison,
-                // which is what it would find anyway.
-                for (const auto& t : c.test.args) mark(t, bound, mark);
-                break;
-            case CompiledCondition::Kind::negation:
-            case CompiledCondition::Kind::aggregate:
-                for (const auto& t : c.atom.args)
-                    if (touches_seed(t)) return false;
-                if (c.kind == CompiledCondition::Kind::aggregate) bound[c.slot] = true;
-                break;
-            case CompiledCondition::Kind::for_all:
-            case CompiledCondition::Kind::exists:
-                for (const auto& a : c.atoms)
-                    for (const auto& t : a.args)
-                        if (touches_seed(t)) return false;
-                if (touches_seed(c.set)) return false;
-                for (const auto& t : c.tests)
-                    for (const auto& x : t.args)
-                        if (touches_seed(x)) return false;
-                if (c.kind == CompiledCondition::Kind::exists) bound[c.slot] = true;
-                break;
-        }
-    }
-    return true;
-}
-
 std::optional<Binding> Matcher::prebind(const CompiledRule& rule, const CompiledAtom& atom, Slot local, FactId f) {
     const OnMatch none = [](const Binding&, std::span<const FactId>) {};
     bool failed = false;
     const OnError note = [&](const MatchError&) { failed = true; };
-    Run run{*this, rule, std::nullopt, none, note, Binding(rule.slot_count()), {}, {}, {}};
+    Run run{*this, rule, nullptr, std::nullopt, none, note, Binding(rule.slot_count()), {}, {}, {}, {}};
     // Only plain variables and constants can be unified before the quantified variable is known.
     for (const CompiledTerm& t : atom.args)
         if (t.kind == CompiledTerm::Kind::call) return std::nullopt;

@@ -15,6 +15,7 @@
 #include "engine/binding.hpp"
 #include "engine/compiled_rule.hpp"
 #include "engine/fact_store.hpp"
+#include "engine/match_plan.hpp"
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -49,9 +50,10 @@ public:
 
     Matcher(const FactStore& facts, ValueTable& values, const BuiltinRegistry& builtins,
             const ClosedWorld& closed_world);
-    // Pre: a seed names a `match` condition of rule and an active fact; `initial`, if given, has
-    // rule.slot_count() slots. Matching starts from `initial` (some variables already bound).
-    void match(const CompiledRule& rule, std::optional<Seed> seed, const OnMatch& on_match,
+    // Pre: plan is plan_matching(rule); a seed names a `match` condition of rule and an active
+    // fact; `initial`, if given, has rule.slot_count() slots. Matching starts from `initial` (some
+    // variables already bound).
+    void match(const CompiledRule& rule, const MatchPlan& plan, std::optional<Seed> seed, const OnMatch& on_match,
                const OnError& on_error, const Binding* initial = nullptr);
     // Bounds the work of this matcher's match() calls: a step is one fact tried against an atom
     // (for a `match`, `exists`, `not` or aggregate) or one element of a quantifier's set. Once
@@ -68,9 +70,6 @@ public:
 
 private:
     struct Run;
-    // True when binding the seed's variables before the conditions written ahead of it changes no
-    // answer (no earlier `not`, aggregate or quantifier has one of them as a local variable).
-    static bool seed_first_is_safe(const CompiledRule& rule, std::uint32_t seeded);
     const FactStore& facts_;
     ValueTable& values_;
     const BuiltinRegistry& builtins_;

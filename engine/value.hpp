@@ -7,14 +7,14 @@
 //             by ValueTable::less and distinct.
 // Knows nothing of the ATMS, of rules or of mechanics.
 #pragma once
+#include "engine/fwd.hpp"
 #include "qm/id.hpp"
 #include <cstdint>
 #include <string>
 #include <vector>
 
 namespace qm::engine {
-using ValueId = qm::Id<struct ValueTag>;
-
+// ValueId: engine/fwd.hpp.
 enum class ValueKind : std::uint8_t { symbol, integer, direction, set };
 
 struct Value {

@@ -26,6 +26,8 @@ struct CSpaceAxis {
     double hi = 1.0;
     bool periodic = false;  // rotation axes wrap (period hi - lo, e.g. 2*pi or one tooth pitch)
     int samples = 64;       // grid samples along the axis (>= 2)
+    bool stops = false;     // a non-periodic axis' ends are stops (its part meets its frame there):
+                            // the place builder makes their free stretches `stop` places
     [[nodiscard]] double span() const noexcept { return hi - lo; }
     // Distance between neighbouring samples.
     [[nodiscard]] double step() const noexcept { return periodic ? span() / samples : span() / (samples - 1); }

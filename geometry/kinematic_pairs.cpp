@@ -37,8 +37,10 @@ CSpaceAxis axis_for(const Mechanism& m, const PairSpec& pair, int k, int samples
     const PartId id = k == 0 ? pair.a : pair.b;
     const Part& p = m.parts[id];
     if (p.fixed()) return CSpaceAxis{0.0, 1.0, true, 3};  // a dummy: nothing depends on it
-    if (p.translates()) return CSpaceAxis{p.lo, p.hi, false, samples};
-    if (const auto& w = pair.window[static_cast<std::size_t>(k)]) return CSpaceAxis{w->lo, w->hi, false, samples};
+    // A translation's limits are stops (the part meets its frame there); so are a window's
+    // ends: the vocabulary does not follow the part out of its window.
+    if (p.translates()) return CSpaceAxis{p.lo, p.hi, false, samples, true};
+    if (const auto& w = pair.window[static_cast<std::size_t>(k)]) return CSpaceAxis{w->lo, w->hi, false, samples, true};
     const int period = shaft_has_position_dependent_force(m, id) ? 1 : p.symmetry;
     return CSpaceAxis{0.0, two_pi / period, true, samples};
 }

@@ -12,6 +12,7 @@
 //             every tolerance is positive; angles are in radians.
 // Knows nothing of FCL, the ATMS or the engine.
 #pragma once
+#include "geometry/fwd.hpp"
 #include "geometry/metric_source.hpp"
 #include "geometry/part.hpp"
 #include "qm/diagnostics.hpp"
@@ -24,8 +25,7 @@
 
 namespace qm::geometry {
 
-using PartId = qm::Id<struct PartTag>;
-
+// PartId (geometry/fwd.hpp) indexes Mechanism::parts.
 struct MechanismSettings {
     double chordal_tolerance = 1e-4;      // arcs to chords, relative to each part's size
     double contact_tolerance = 1e-3;      // contact distance, relative to the smaller part's size

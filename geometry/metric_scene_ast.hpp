@@ -7,6 +7,7 @@
 // Ownership:  plain values. Every node derives from x3::position_tagged.
 // Knows nothing of the checked model (mechanism.hpp).
 #pragma once
+#include "qm/position_table.hpp"
 #include <boost/optional.hpp>
 #include <boost/spirit/home/x3/support/ast/position_tagged.hpp>
 #include <boost/spirit/home/x3/support/ast/variant.hpp>
@@ -88,18 +89,6 @@ struct ConfigEntry : x3::position_tagged { Name part; Number value; };
 }  // namespace mast
 
 // Maps a node's position tag (id_first) to the byte offset where the node starts.
-class MetricPositions {
-public:
-    int add(std::size_t offset) {
-        offsets_.push_back(offset);
-        return static_cast<int>(offsets_.size() - 1);
-    }
-    [[nodiscard]] std::size_t offset_of(const mast::x3::position_tagged& node) const {
-        return node.id_first >= 0 && static_cast<std::size_t>(node.id_first) < offsets_.size() ? offsets_[static_cast<std::size_t>(node.id_first)] : 0;
-    }
-
-private:
-    std::vector<std::size_t> offsets_;
-};
+using MetricPositions = qm::x3_parse::PositionTable;
 
 }  // namespace qm::geometry

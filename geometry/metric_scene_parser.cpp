@@ -12,26 +12,16 @@
 namespace qm::geometry {
 namespace {
 
+// Runs one top-level rule over the whole text (qm/x3_sexpr.hpp). False (after reporting) on any
+// syntax error, or, unless allow_empty, on a text of only blanks and comments.
 template <class Rule, class Attr>
 bool run(const Rule& rule, const std::string& what, const MetricSource& src, MetricPositions& positions, Diagnostics& diags, Attr& out,
          bool allow_empty) {
-    const std::string& t = src.text();
-    if (!allow_empty && mparser::skip_blanks(t, 0) == t.size()) {
+    if (!allow_empty && qm::sexpr::skip_blanks(src.text(), 0) == src.text().size()) {
         src.error(diags, 0, "empty input: expected " + what);
         return false;
     }
-    if (!qm::sexpr::check_parentheses(src, diags)) return false;
-    mparser::ParseState st{t.begin(), &positions, &diags, &src, false};
-    auto first = t.begin();
-    bool ok = false;
-    try {
-        ok = boost::spirit::x3::phrase_parse(first, t.end(), boost::spirit::x3::with<mparser::state_tag>(st)[rule], mparser::skipper, out);
-    } catch (const boost::spirit::x3::expectation_failure<mparser::Iterator>& x) {
-        if (!st.failed) mparser::report_expected(st, x.where(), x.which());
-        st.failed = true;
-    }
-    if (!ok && !st.failed) mparser::report_expected(st, first, what);
-    return ok && !st.failed;
+    return x3_parse::parse_sexpr(rule, what, src, positions, diags, mparser::punctuation, out);
 }
 
 }  // namespace

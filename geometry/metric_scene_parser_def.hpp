@@ -10,6 +10,7 @@
 #pragma once
 #include "qm/sexpr_text.hpp"
 #include "qm/x3_ascii.hpp"
+#include "qm/x3_sexpr.hpp"
 #include "geometry/metric_scene_ast.hpp"
 #include "geometry/metric_source.hpp"
 #include "qm/diagnostics.hpp"
@@ -54,57 +55,20 @@ BOOST_FUSION_ADAPT_STRUCT(qm::geometry::mast::ConfigEntry, part, value)
 namespace qm::geometry::mparser {
 namespace x3 = boost::spirit::x3;
 namespace ast = qm::geometry::mast;
-using Iterator = std::string::const_iterator;
 
-struct ParseState {
-    Iterator begin;
-    MetricPositions* positions = nullptr;
-    Diagnostics* diags = nullptr;
-    const MetricSource* src = nullptr;
-    bool failed = false;
-};
-struct state_tag;
-
-using sexpr::skip_blanks;
-inline std::string token_at(const std::string& t, std::size_t i) { return sexpr::token_at(t, i, "()=,"); }
-
-
-
-inline void report_expected(ParseState& st, Iterator where, const std::string& what) {
-    const std::string& t = st.src->text();
-    const std::size_t at = skip_blanks(t, static_cast<std::size_t>(where - st.begin));
-    st.src->error(*st.diags, at, "expected " + what + " but found " + token_at(t, at));
-}
-
-// on_success: records where each position_tagged node starts (after leading blanks).
-struct annotate {
-    template <class It, class Attr, class Ctx>
-    void on_success(const It& first, const It& last, Attr& node, const Ctx& ctx) const {
-        if constexpr (std::is_base_of_v<x3::position_tagged, Attr>) {
-            ParseState& st = x3::get<state_tag>(ctx);
-            It f = first;
-            x3::skip_over(f, last, ctx);
-            node.id_first = st.positions->add(static_cast<std::size_t>(f - st.begin));
-        }
-    }
-};
-
-// on_error: the first expectation failure becomes the diagnostic; the parse then fails.
-struct report_errors {
-    template <class It, class Exception, class Ctx>
-    x3::error_handler_result on_error(It&, const It&, const Exception& x, const Ctx& ctx) const {
-        ParseState& st = x3::get<state_tag>(ctx);
-        if (!st.failed) report_expected(st, x.where(), x.which());
-        st.failed = true;
-        return x3::error_handler_result::fail;
-    }
-};
+// The X3 plumbing shared with the other readers (qm/x3_parse.hpp, qm/x3_sexpr.hpp): `annotate`
+// records where a node starts; an entry rule's first expectation failure becomes the located
+// diagnostic `expected ... but found TOKEN` and the parse fails, so no exception escapes.
+using x3_parse::annotate;
+using x3_parse::state_tag;
+using report_errors = x3_parse::first_failure;
+// The characters that are tokens of their own in "but found ..." (qm/sexpr_text.hpp token_at).
+inline constexpr std::string_view punctuation = "()=,";
 
 // --- lexical pieces --------------------------------------------------------------------------
 // ASCII classes (qm/x3_ascii.hpp): x3::space/alpha/alnum/no_case abort on bytes >= 0x80 in a
 // debug build; these compare bytes, so a non-ASCII byte is a located syntax error.
 using x3_ascii::name_char;
-inline const auto skipper = x3_ascii::blank | x3::lexeme[';' >> *(x3::char_ - x3::eol) >> (x3::eol | x3::eoi)];
 
 // A case-insensitive keyword, not followed by a name character. Pre: s is lower case.
 using x3_ascii::kw;

@@ -17,6 +17,28 @@ V polar(double r, double a) { return {r * std::cos(a), r * std::sin(a)}; }
 V rotate(const V& x, double a) { return Eigen::Rotation2Dd(a) * x; }
 
 ShapeResult fail(std::string msg, int param = -1) { return {std::nullopt, std::move(msg), param}; }
+
+// The mirror image in the y axis (x -> -x): a reflection reverses the sense of every arc; ok()
+// makes the outline counter-clockwise again.
+Profile mirrored(const Profile& p) {
+    auto flip = [](const V& x) { return V(-x.x(), x.y()); };
+    Profile out;
+    for (const auto& s : p.segments) {
+        Segment m = s;
+        m.from = flip(s.from);
+        m.to = flip(s.to);
+        m.centre = flip(s.centre);
+        m.ccw = !s.ccw;
+        out.segments.push_back(m);
+    }
+    return out;
+}
+
+// The `mirror` parameter: 0 as drawn, 1 the mirror image; anything else is refused.
+std::optional<ShapeResult> bad_mirror(double m, int param) {
+    if (m != 0 && m != 1) return fail("mirror must be 0 (as drawn) or 1 (the mirror image)", param);
+    return std::nullopt;
+}
 ShapeResult ok(std::vector<Profile> profiles, int symmetry) {
     for (auto& p : profiles) p = counter_clockwise(p);
     return {Shape{std::move(profiles), symmetry}, {}, -1};
@@ -79,11 +101,14 @@ ShapeResult spur_gear(const std::vector<double>& v) {
 
 // Ratchet wheel: sawtooth teeth, each a slope rising counter-clockwise to the tip and a radial
 // face back to the root. The radial faces face counter-clockwise, so a pawl resting against one
-// stops the wheel turning counter-clockwise and lets it turn clockwise (thesis 9.2).
+// stops the wheel turning counter-clockwise and lets it turn clockwise (thesis 9.2). Mirrored,
+// the faces face clockwise and stop clockwise turning: the QRG clock's ratchet, which the spring
+// turns clockwise while it turns gear 6 counter-clockwise (9.1).
 ShapeResult ratchet_wheel(const std::vector<double>& v) {
     const int n = static_cast<int>(v[0]);
     const double Rr = v[1], Rt = v[2];
     if (Rt <= Rr) return fail("the tip radius must be larger than the root radius", 2);
+    if (auto bad = bad_mirror(v[3], 3)) return *bad;
     std::vector<V> root(n), tip(n);
     for (int i = 0; i < n; ++i) {
         root[i] = polar(Rr, 2 * pi * i / n);
@@ -95,7 +120,7 @@ ShapeResult ratchet_wheel(const std::vector<double>& v) {
         p.segments.push_back(Segment::line(root[i], tip[j]));
         p.segments.push_back(Segment::line(tip[j], root[j]));
     }
-    return ok({p}, n);
+    return ok({v[3] == 1 ? mirrored(p) : p}, n);
 }
 
 // Scape wheel: per pitch, a root arc (root-land of the pitch), a back rising to the tip at
@@ -124,13 +149,24 @@ ShapeResult scape_wheel(const std::vector<double>& v) {
 
 // Anchor pallets, pivot at the origin, straddling a scape wheel below: two arms ending in
 // pallets `span` either side and `reach` below the pivot, joined by a bridge whose top is an arc
-// about the pivot.
+// about the pivot. With `hub` 0 the arc runs through (+-span, top) (the first drawing, whose
+// top reaches sqrt(span^2 + top^2) from the pivot: turned upside down it swept into the wheel).
+// With `hub` > 0 the arms' outer edges rise to a hub, an arc of that radius about the pivot
+// with its ends at height `top`; nothing of the anchor is then further than `hub` from the pivot
+// above the arms, so with hub below (pivot distance - wheel tip radius) the pallets can turn all
+// the way round and clear the wheel when inverted (thesis 9.1, Figures 9.2, 9.22-9.24).
 ShapeResult anchor(const std::vector<double>& v) {
-    const double s = v[0], r = v[1], w = v[2], t = v[3];
+    const double s = v[0], r = v[1], w = v[2], t = v[3], h = v[4];
     if (s <= 2.5 * w) return fail("the span must exceed 2.5 arm widths", 0);
     if (r <= w) return fail("the reach must exceed the arm width", 1);
-    const std::vector<V> pts = {{-s, t}, {-s + 0.5 * w, -r}, {-s + 1.5 * w, -r + 0.5 * w}, {-s + 2.5 * w, -0.5 * w},
-                                {s - 2.5 * w, -0.5 * w}, {s - 1.5 * w, -r + 0.5 * w}, {s - 0.5 * w, -r}, {s, t}};
+    double top_x = s;  // where the top arc ends, either side of the centre line
+    if (h > 0) {
+        if (h <= std::abs(t)) return fail("the hub must be larger than the height of its ends (top)", 4);
+        top_x = std::sqrt(h * h - t * t);
+        if (top_x <= s - 2.5 * w + 0.25 * w) return fail("the hub must reach beyond the arms' inner edges (span - 2.25 widths)", 4);
+    }
+    const std::vector<V> pts = {{-top_x, t}, {-s + 0.5 * w, -r}, {-s + 1.5 * w, -r + 0.5 * w}, {-s + 2.5 * w, -0.5 * w},
+                                {s - 2.5 * w, -0.5 * w}, {s - 1.5 * w, -r + 0.5 * w}, {s - 0.5 * w, -r}, {top_x, t}};
     Profile p;
     for (std::size_t i = 0; i + 1 < pts.size(); ++i) p.segments.push_back(Segment::line(pts[i], pts[i + 1]));
     p.segments.push_back(Segment::arc(pts.back(), pts.front(), V::Zero(), true));
@@ -138,14 +174,16 @@ ShapeResult anchor(const std::vector<double>& v) {
 }
 
 // Pawl, pivot at the origin: a round hub of radius `width` and an arm hanging straight down to
-// a slanted tip at `length` (turn the part to point it elsewhere).
+// a slanted tip at `length` (turn the part to point it elsewhere); its lowest point is on the -x
+// side of the arm, or on the +x side when mirrored (the pawl of a mirrored ratchet wheel).
 ShapeResult pawl(const std::vector<double>& v) {
     const double L = v[0], w = v[1];
     if (L <= 2 * w) return fail("the length must exceed two widths", 0);
+    if (auto bad = bad_mirror(v[2], 2)) return *bad;
     const double h = std::sqrt(3.0) / 2 * w;
     const V a(-w / 2, -h), b(-w / 2, -L), c(w / 2, -L + w), d(w / 2, -h);
     Profile p{{Segment::line(a, b), Segment::line(b, c), Segment::line(c, d), Segment::arc(d, a, V::Zero(), true)}};
-    return ok({p}, 1);
+    return ok({v[2] == 1 ? mirrored(p) : p}, 1);
 }
 
 // Scotch-yoke crank: the pin that runs in the yoke's slot, at `crank-radius` along x.
@@ -187,7 +225,8 @@ const std::vector<Generator>& generators() {
         {"ratchet-wheel", "sawtooth wheel whose radial faces stop counter-clockwise turning",
          {{"teeth", 12, 3, false, true, "number of teeth"},
           {"root-radius", 0.8, 0, true, false, "radius at the tooth roots"},
-          {"tip-radius", 1, 0, true, false, "radius at the tooth tips"}},
+          {"tip-radius", 1, 0, true, false, "radius at the tooth tips"},
+          {"mirror", 0, 0, false, true, "1: the mirror image (x -> -x), whose radial faces stop clockwise turning"}},
          ratchet_wheel},
         {"scape-wheel", "escape wheel: root lands, leaning teeth",
          {{"teeth", 15, 3, false, true, "number of teeth"},
@@ -200,10 +239,12 @@ const std::vector<Generator>& generators() {
          {{"span", 0.45, 0, true, false, "distance of each pallet from the centre line"},
           {"reach", 0.5, 0, true, false, "depth of the pallet tips below the pivot"},
           {"width", 0.1, 0, true, false, "width of the arms"},
-          {"top", 0.1, 0, true, false, "height of the bridge's ends above the pivot"}},
+          {"top", 0.1, 0, true, false, "height of the bridge's ends above the pivot"},
+          {"hub", 0, 0, false, false, "0: the bridge's top is an arc through (+-span, top); > 0: the arms rise to a hub of this radius about the pivot"}},
          anchor},
         {"pawl", "pawl about the origin: a hub and an arm hanging down to a slanted tip",
-         {{"length", 1, 0, true, false, "pivot to tip"}, {"width", 0.15, 0, true, false, "arm width (and hub radius)"}},
+         {{"length", 1, 0, true, false, "pivot to tip"}, {"width", 0.15, 0, true, false, "arm width (and hub radius)"},
+          {"mirror", 0, 0, false, true, "1: the mirror image (x -> -x), its tip slanted the other way"}},
          pawl},
         {"crank", "Scotch-yoke crank: its pin",
          {{"crank-radius", 0.6, 0, false, false, "pivot to pin centre"}, {"pin-radius", 0.1, 0, true, false, "radius of the pin"}},

@@ -23,11 +23,15 @@ namespace {
 // now 49).
 // /5: joins are moved onto the boundary along their mean normal itself, not along its
 // cell-scaled direction (the ratchet at its own grid 64x64: 100 places, now 90).
-// /6: a checksum line ends the file; files of /5 and before are stale. The builder changed too
-// (issue 19: joins at smooth extrema bisected, tangent divisions, divisions ending on joins): the
-// ratchet at its own grid 77 places, was 51; the Scotch yoke 46, was 52.
+// /6: two branches gave this number two meanings: the ends of a translation axis (or a window)
+// are stops, `stop` places (kind 5) with the stop's normal on the `limit` joins at their ends (the
+// cam follower could stay moving up for ever in the face at the top of its stroke); or a checksum
+// line ends the file.
+// /7: both, stops and the checksum line; files of /6 (either meaning) and before are stale. The
+// builder changed too (issue 19: joins at smooth extrema bisected, tangent divisions, divisions
+// ending on joins): the ratchet at its own grid 77 places, was 51; the Scotch yoke 46, was 52.
 constexpr std::string_view family = "qm-place-cache/";
-constexpr const char* magic = "qm-place-cache/6";
+constexpr const char* magic = "qm-place-cache/7";
 constexpr std::uintmax_t largest_file = std::uintmax_t{1} << 30;
 
 void write_text(std::ostream& os, const std::string& s) { os << s.size() << ' ' << s; }
@@ -96,7 +100,7 @@ std::optional<PlaceVocabulary> read_body(std::istream& is) {
         p.id = PlaceId{static_cast<std::uint32_t>(i)};
         int kind = 0, jk = 0, concave = 0;
         std::size_t nn = 0, npts = 0;
-        if (!(is >> kind >> jk >> p.axis >> concave) || kind < 0 || kind > 4 || jk < 0 || jk > 3 || concave < -1 || concave > 1)
+        if (!(is >> kind >> jk >> p.axis >> concave) || kind < 0 || kind > static_cast<int>(PlaceKind::stop) || jk < 0 || jk > static_cast<int>(JoinKind::limit) || concave < -1 || concave > 1)
             return std::nullopt;
         if (!read_double(is, p.extent) || !(is >> p.gap >> nn) || nn > 16) return std::nullopt;
         p.kind = static_cast<PlaceKind>(kind);
@@ -156,7 +160,7 @@ const char* to_string(CacheStatus s) noexcept {
 std::string place_cache_material(const PairOracle& oracle, const PlaceRequest& r) {
     std::ostringstream os;
     os << std::hexfloat << magic << '\n' << oracle.fingerprint() << '\n';
-    for (const auto& a : r.cspace.axes) os << "axis " << a.lo << ' ' << a.hi << ' ' << a.periodic << ' ' << a.samples << '\n';
+    for (const auto& a : r.cspace.axes) os << "axis " << a.lo << ' ' << a.hi << ' ' << a.periodic << ' ' << a.samples << ' ' << a.stops << '\n';
     os << "tol " << r.cspace.boundary_tolerance << ' ' << r.cspace.normal_zero_tolerance << " merge " << r.merge_epsilon << " gap " << r.gap_epsilon << '\n';
     for (const auto& x : r.external) {
         os << "external " << x.coordinate << ' ' << x.value << ' ';

@@ -1,7 +1,7 @@
 // geometry/place_json.cpp
 #include "geometry/place_json.hpp"
+#include "qm/json.hpp"
 
-#include <iomanip>
 
 namespace qm::geometry {
 namespace {
@@ -9,15 +9,6 @@ namespace {
 void point(std::ostream& os, const Eigen::Vector2d& p) { os << '[' << p.x() << ',' << p.y() << ']'; }
 void direction(std::ostream& os, QualDirection d) { os << '[' << int{d.s[0]} << ',' << int{d.s[1]} << ']'; }
 
-void string(std::ostream& os, const std::string& s) {
-    os << '"';
-    for (char c : s) {
-        if (c == '"' || c == '\\') os << '\\' << c;
-        else if (static_cast<unsigned char>(c) < 0x20) os << "\\u" << std::hex << std::setw(4) << std::setfill('0') << int{c} << std::dec;
-        else os << c;
-    }
-    os << '"';
-}
 
 }  // namespace
 
@@ -44,7 +35,7 @@ void write_place_json(std::ostream& os, const CSpaceRequest& space, const PlaceV
         if (p.axis >= 0) os << ",\"axis\":" << p.axis;
         if (!p.label.empty()) {
             os << ",\"label\":";
-            string(os, p.label);
+            write_json_string(os, p.label);
         }
         if (p.kind == PlaceKind::face) os << ",\"samples\":" << p.extent;
         if (p.gap) os << ",\"gap\":true";

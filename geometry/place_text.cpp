@@ -6,7 +6,9 @@ namespace qm::geometry {
 void write_place_text(std::ostream& os, const PlaceVocabulary& v) {
     os << "places " << v.places.size() << " (cseg " << v.count(PlaceKind::cseg) << ", join " << v.count(PlaceKind::join)
        << ", fsd " << v.count(PlaceKind::fsd) << ", external-division " << v.count(PlaceKind::external_division)
-       << ", face " << v.count(PlaceKind::face) << ")\n";
+       << ", face " << v.count(PlaceKind::face);
+    if (const auto stops = v.count(PlaceKind::stop)) os << ", stop " << stops;
+    os << ")\n";
     for (const Place& p : v.places) {
         os << "place " << p.id.value << ' ' << to_string(p.kind);
         if (p.kind == PlaceKind::join) os << ' ' << to_string(p.join_kind);

@@ -12,6 +12,7 @@ const char* to_string(PlaceKind k) noexcept {
         case PlaceKind::fsd: return "fsd";
         case PlaceKind::external_division: return "external-division";
         case PlaceKind::face: return "face";
+        case PlaceKind::stop: return "stop";
     }
     return "?";
 }

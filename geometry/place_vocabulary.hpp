@@ -2,12 +2,14 @@
 // Provides:   PlaceVocabulary, the symbolic places of one kinematic pair's configuration space
 //             (thesis 4.2, 8.1.2): CSEGs (Def 28) with their qualitative normal into free space,
 //             joins (Defs 29-30) with their normals and concavity, free space divisions (Def 31),
-//             external place divisions (8.2.1, 9.2) and full faces (Def 32); and Adjacent facts
+//             external place divisions (8.2.1, 9.2), full faces (Def 32) and stops (the free
+//             stretches of an axis' limits where its part meets its frame); and Adjacent facts
 //             (8.1.3) under every motion direction, flagged instantaneous or interval.
 // Ownership:  a value type; places refer to each other by PlaceId (index into places).
 // Invariants: places[k].id == PlaceId{k}; every adjacency names existing places.
 // Knows nothing of the ATMS or the engine: the CLI turns places into facts.
 #pragma once
+#include "geometry/fwd.hpp"
 #include "geometry/qualitative_sign.hpp"
 #include "qm/id.hpp"
 #include <Eigen/Core>
@@ -17,9 +19,12 @@
 
 namespace qm::geometry {
 
-using PlaceId = qm::Id<struct PlaceTag>;
+// PlaceId (geometry/fwd.hpp) names a place: its index in PlaceVocabulary::places.
 
-enum class PlaceKind { cseg, join, fsd, external_division, face };
+// A stop is where an axis that ends (a translation's limits, a window's ends: CSpaceAxis::stops)
+// borders free space: the part against its frame, blocked beyond as at a CSEG (Law 2), but a
+// contact with the frame, not with the pair's other part, so no force passes between the two.
+enum class PlaceKind { cseg, join, fsd, external_division, face, stop };
 [[nodiscard]] const char* to_string(PlaceKind k) noexcept;
 
 enum class JoinKind {
@@ -33,10 +38,11 @@ enum class JoinKind {
 struct Place {
     PlaceId id{0};
     PlaceKind kind = PlaceKind::face;
-    std::vector<QualDirection> normals;  // CSEG: one; join: those of the CSEGs meeting there
+    std::vector<QualDirection> normals;  // CSEG, stop: one, into free space; join: those of the
+                                         // CSEGs and stops meeting there
     std::optional<bool> concave;         // joins between two CSEGs: Def 29 (true) / Def 30 (false)
     JoinKind join_kind = JoinKind::normal_change;
-    int axis = -1;                       // FSD / external division: the axis it runs along
+    int axis = -1;                       // FSD / external division / stop: the axis it runs along
     std::string label;                   // external division: the force change it marks
     std::vector<Eigen::Vector2d> points; // CSEG/division: polyline in its direction (a division on a
                                          // periodic axis: points at most a quarter period apart, so

@@ -303,6 +303,7 @@ PlaceResult build_place_vocabulary(const PairOracle& oracle, const PlaceRequest&
     b.cross_divisions();
     b.emit_csegs();
     b.emit_divisions();
+    b.add_stops();
     detail::FaceLocator faces(out.space, b.divisions, b.barriers_at_joins());
     const int n_faces = faces.label();
     std::vector<PlaceId> face_places;

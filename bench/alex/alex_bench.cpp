@@ -6,6 +6,7 @@
 //      contacts per level, as Figure 7.2's block), and a train of N pinned gears with a driving
 //      torque on the first; median wall time and peak memory for N = 10..200.
 // Usage: alex_bench [REPETITIONS]   (default 7)
+#include "generated_scenes.hpp"
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -62,46 +63,6 @@ Sample median(const std::string& scene, int reps) {
     return m;
 }
 
-std::string stack(int n) {
-    std::string s = "(Defscenario 2 stack\n Individuals (table";
-    for (int i = 0; i < n; ++i) s += " b" + std::to_string(i);
-    s += ")\n Surfaces ((table (tb-l (0 +) (0 0)) (tb-m (0 +) (0 0)) (tb-r (0 +) (0 0)))\n";
-    for (int i = 0; i < n; ++i) {
-        const std::string b = "b" + std::to_string(i);
-        s += "  (" + b + " (" + b + "-t-l (0 +) (+ -)) (" + b + "-t-m (0 +) (0 -)) (" + b + "-t-r (0 +) (- -)) (" + b +
-             "-b-l (0 -) (+ +)) (" + b + "-b-m (0 -) (0 +)) (" + b + "-b-r (0 -) (- +)))\n";
-    }
-    s += " )\n Translational-Constraints ((table (?x ?y)))\n Rotational-Constraints ((table (?r)))\n Forces (";
-    for (int i = 0; i < n; ++i) s += "(b" + std::to_string(i) + " (0 -) (0 0)) ";
-    s += "))\n(Defstates (";
-    std::string l = "tb-l", m = "tb-m", r = "tb-r";
-    for (int i = 0; i < n; ++i) {
-        const std::string b = "b" + std::to_string(i);
-        s += "(Contact " + l + " " + b + "-b-l) (Contact " + m + " " + b + "-b-m) (Contact " + r + " " + b + "-b-r) ";
-        l = b + "-t-l", m = b + "-t-m", r = b + "-t-r";
-    }
-    return s + "))\n";
-}
-
-// Gear i touches gear i+1 with its right tooth; meshing gears turn alternately, so the teeth face
-// up and down in turn (a gear turning (+) pushes its neighbour's tooth up, one turning (-) down).
-std::string train(int n) {
-    std::string s = "(Defscenario 2 train\n Individuals (";
-    for (int i = 0; i < n; ++i) s += " g" + std::to_string(i);
-    s += ")\n Surfaces (";
-    for (int i = 0; i < n; ++i) {
-        const std::string g = "g" + std::to_string(i);
-        s += "(" + g + " (" + g + "-l " + (i % 2 ? "(- -)" : "(- +)") + " (+ 0)) (" + g + "-r " + (i % 2 ? "(+ -)" : "(+ +)") +
-             " (- 0)))\n";
-    }
-    s += " )\n Translational-Constraints (";
-    for (int i = 0; i < n; ++i) s += "(g" + std::to_string(i) + " (?x ?y)) ";
-    s += ")\n Forces ((g0 (0 +) (- 0))))\n(Defstates (";
-    for (int i = 0; i + 1 < n; ++i)
-        s += "(Contact g" + std::to_string(i) + "-r g" + std::to_string(i + 1) + "-l) ";
-    return s + "))\n";
-}
-
 std::string write(const std::string& name, const std::string& text) {
     const std::string path = std::string(QM_BINARY_DIR) + "/bench_" + name + ".def";
     std::ofstream(path) << text;
@@ -122,8 +83,8 @@ int main(int argc, char** argv) {
     }
     std::printf("\n%-10s %6s %12s %10s %12s %10s\n", "generated", "N", "stack ms", "stack MiB", "train ms", "train MiB");
     for (int n : {10, 25, 50, 100, 150, 200}) {
-        const Sample a = median(write("stack_" + std::to_string(n), stack(n)), reps);
-        const Sample b = median(write("train_" + std::to_string(n), train(n)), reps);
+        const Sample a = median(write("stack_" + std::to_string(n), qm::bench::stack(n)), reps);
+        const Sample b = median(write("train_" + std::to_string(n), qm::bench::train(n)), reps);
         std::printf("%-10s %6d %12.1f %10.1f %12.1f %10.1f%s\n", "", n, a.ms, static_cast<double>(a.peak_kib) / 1024.0, b.ms,
                     static_cast<double>(b.peak_kib) / 1024.0, a.status || b.status ? "  (non-zero exit!)" : "");
     }

@@ -71,6 +71,7 @@ int main(int argc, char** argv) {
     std::cout << "| grid | chordal tol (x size) | boundary tol (rad) | time ms | FCL calls | boundary pts | max normal error (rad) | max along-edge error (rad) | unmatched | places | CSEGs | joins | FSDs | faces |\n"
               << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     PlaceResult picture;
+    std::unique_ptr<FclPairOracle> picture_oracle;  // resolves the picture's saddle cells
     struct Setting {
         int grid;
         double chordal, tol;
@@ -104,13 +105,17 @@ int main(int argc, char** argv) {
                   << res.space.boundary.size() << " | " << e.normal << " | " << e.along << " | " << e.unmatched << " | " << v.places.size()
                   << " | " << v.count(PlaceKind::cseg) << " | " << v.count(PlaceKind::join) << " | " << v.count(PlaceKind::fsd) << " | "
                   << v.count(PlaceKind::face) << " |\n";
-        if (s.grid == 64 && s.chordal == 1e-6 && s.tol == 1e-8) picture = res;
+        if (s.grid == 64 && s.chordal == 1e-6 && s.tol == 1e-8) {
+            picture = res;
+            picture_oracle = pair_oracle(mech, spec);
+        }
     }
     std::cout << "\n(chordal tolerance x size = " << size << " is the length; external divisions: "
               << picture.vocabulary.count(PlaceKind::external_division) << " pieces)\n";
     if (argc > 2) {
         std::ofstream os(argv[2]);
-        write_cspace_svg(os, picture.space, picture.vocabulary,
-                         {720, 540, "escapement: scape wheel (one pitch, across) x pallets (-20..20 deg, up); FCL, 64x64, 1e-8 rad", true});
+        write_cspace_svg(os, *picture_oracle, picture.space, picture.vocabulary,
+                         {720, 540, "escapement, FCL, 64x64, 1e-8 rad", true, true,
+                          {SvgAxis{"scape-wheel", AxisUnit::degrees}, SvgAxis{"pallets", AxisUnit::degrees}}});
     }
 }

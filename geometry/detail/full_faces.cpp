@@ -134,10 +134,19 @@ int FaceLocator::label() {
     return faces;
 }
 
-bool FaceLocator::crosses_division(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const {
+// Does the segment from a to sample (i, j) cross a division? Sides are taken as the cuts take
+// them: a point within on_line_cells of a division's line is on its lower side (the cuts' row is
+// floor(u + on_line_cells)), whatever the sign of a near-zero offset; a sample that close to the
+// line is in no face at all (above). Deciding it by the sign of a zero offset put a point a third
+// of a cell to the upper side into the lower face (the cam at grid 64, the division from the top of
+// its curve at q0 = pi/2: a face with no way out under (- 0), and a join reaching the face across
+// the division).
+bool FaceLocator::crosses_division(const Eigen::Vector2d& a, int i, int j) const {
     const auto& r = space_.request;
+    const Eigen::Vector2d b(r.axes[0].sample(i), r.axes[1].sample(j));
     const Eigen::Vector2d step = difference(r, a, b);
-    for (const auto& d : divisions_) {
+    for (std::size_t k = 0; k < divisions_.size(); ++k) {
+        const auto& d = divisions_[k];
         const int ax = d.axis, other = 1 - ax;
         const auto& axis = r.axes[static_cast<std::size_t>(ax)];
         // Sides as the cuts take them: within on_line_cells of the line is below it.
@@ -168,7 +177,7 @@ std::optional<int> FaceLocator::face_at(const Eigen::Vector2d& q) const {
                 const int f = face_of_sample(i, j);
                 if (f < 0) continue;
                 const Eigen::Vector2d s(r.axes[0].sample(i), r.axes[1].sample(j));
-                if (crosses_division(x, s)) continue;
+                if (crosses_division(x, i, j)) continue;
                 const double dist = difference(r, x, s).cwiseQuotient(Eigen::Vector2d(r.axes[0].step(), r.axes[1].step())).norm();
                 if (!best || dist < best_d) {
                     best = f;

@@ -106,6 +106,7 @@ struct Builder {
     void end_on_boundary(Division& d, double t, JoinKind kind);
     void cross_divisions();
     [[nodiscard]] std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> barriers_at_joins() const;
+    void add_stops();
     void emit_csegs();
     void emit_divisions();
 };

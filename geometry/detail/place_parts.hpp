@@ -56,7 +56,8 @@ public:
     [[nodiscard]] int face_of_sample(int i, int j) const { return face_[static_cast<std::size_t>(i + n0_ * j)]; }
 
 private:
-    [[nodiscard]] bool crosses_division(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const;
+    // Does the segment from a to sample (i, j) cross a division?
+    [[nodiscard]] bool crosses_division(const Eigen::Vector2d& a, int i, int j) const;
     void cut_along(const std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>>& barriers);
     const CSpaceResult& space_;
     const std::vector<Division>& divisions_;

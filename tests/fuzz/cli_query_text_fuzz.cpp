@@ -29,7 +29,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (expected.find("boost") != std::string::npos || expected.find("spirit") != std::string::npos) std::abort();
     }
     // A JSON spelling becomes thesis text, which passes through unchanged (the thesis spelling only
-    // loses its quotes and is checked later, by alex::parse_query_fact).
+    // loses its quotes and is checked later, by scene::parse_query_fact).
     const auto first = text.find_first_not_of(" \t");
     if (q && first != std::string::npos && text[first] == '{') {
         qm::Diagnostics again;

@@ -15,7 +15,7 @@
 #include "geometry/metric_scene_parser.hpp"
 
 // The fuzz build instruments only this target, not the qm_geometry library it links, so the
-// reader's sources are compiled into this TU (as tests/fuzz/alex_scene_fuzz.cpp does).
+// reader's sources are compiled into this TU (as tests/fuzz/scene_text_fuzz.cpp does).
 #include "geometry/detail/metric_part_checker.cpp"
 #include "geometry/mechanism.cpp"
 #include "geometry/metric_scene_checker.cpp"

@@ -82,6 +82,8 @@ TEST_CASE("geometry/kinematic_pairs: axes follow the degrees of freedom, symmetr
     CHECK(!r0.cspace.axes[1].periodic);
     CHECK(r0.cspace.axes[1].lo == doctest::Approx(-20 * std::numbers::pi / 180));
     CHECK(r0.cspace.axes[1].samples == 30);
+    CHECK(!r0.cspace.axes[0].stops);  // a rotation wraps
+    CHECK(r0.cspace.axes[1].stops);   // a window's ends: the vocabulary does not follow it out
     CHECK(r0.cspace.boundary_tolerance == 1e-7);
     const auto r1 = place_request(m, sel.modelled[1]);
     CHECK(r1.cspace.axes[1].periodic);  // the fixed stop's dummy coordinate
@@ -89,6 +91,8 @@ TEST_CASE("geometry/kinematic_pairs: axes follow the degrees of freedom, symmetr
     const auto r2 = place_request(m, sel.modelled[2]);
     CHECK(r2.cspace.axes[1].lo == 0);
     CHECK(r2.cspace.axes[1].hi == 0.5);
+    CHECK(r2.cspace.axes[1].stops);  // a translation's limits are stops
+    CHECK(!r1.cspace.axes[1].stops);
     CHECK(r2.cspace.axes[0].samples == 16);
     CHECK(r2.cspace.axes[1].samples == 8);
     const double slide_size = m.parts[*m.find_part("slide")].size();

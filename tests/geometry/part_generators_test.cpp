@@ -67,7 +67,8 @@ TEST_CASE("geometry/part_generators: seeded random parameters give valid shapes 
                 std::uniform_real_distribution<double> f(0.5, 1.6);
                 double x = p.default_value * f(rng);
                 if (p.integer) x = std::round(std::max(p.min, x));
-                if (p.default_value == 0) x = std::uniform_real_distribution<double>(0, 0.05)(rng);
+                if (p.default_value == 0)  // play, eccentricity, hub: small; mirror: 0 or 1
+                    x = p.integer ? std::uniform_int_distribution<int>(0, 1)(rng) : std::uniform_real_distribution<double>(0, 0.05)(rng);
                 settings.emplace_back(p.name, x);
             }
             const auto r = make_shape(g, settings);
@@ -125,4 +126,85 @@ TEST_CASE("geometry/part_generators: impossible values name the parameter to bla
     REQUIRE(!unknown.shape);
     CHECK(unknown.error.find("depth") != std::string::npos);
     CHECK(find_generator("no-such-part") == nullptr);
+}
+
+TEST_CASE("geometry/part_generators: an anchor on a hub, turned upside down, clears a wheel below the hub") {
+    // hub 0 is the first drawing: the bridge's top an arc through (+-span, top), whose radius
+    // sqrt(span^2 + top^2) swept into the wheel when the pallets turned over (thesis 9.1).
+    const auto old = make_shape("anchor", {});
+    REQUIRE(old.shape);
+    double top_radius = 0;
+    for (const auto& seg : old.shape->profiles[0].segments)
+        if (seg.is_arc()) top_radius = seg.radius();
+    CHECK(top_radius == doctest::Approx(std::hypot(0.45, 0.1)).epsilon(1e-12));
+    std::mt19937 rng(20261125);
+    int made = 0;
+    for (int trial = 0; trial < 60; ++trial) {
+        const double span = std::uniform_real_distribution<double>(0.3, 0.6)(rng);
+        const double width = std::uniform_real_distribution<double>(0.05, span / 3)(rng);
+        const double top = std::uniform_real_distribution<double>(0.01, 0.15)(rng);
+        const double hub = std::uniform_real_distribution<double>(0.1, 0.6)(rng);
+        const double reach = std::uniform_real_distribution<double>(width * 1.2, 0.7)(rng);
+        const auto r = make_shape("anchor", {{"span", span}, {"reach", reach}, {"width", width}, {"top", top}, {"hub", hub}});
+        const bool possible = hub > top && std::sqrt(hub * hub - top * top) > span - 2.25 * width;
+        INFO("trial ", trial, " hub ", hub, " top ", top, " span ", span, " width ", width);
+        REQUIRE(static_cast<bool>(r.shape) == possible);
+        if (!r.shape) {
+            CHECK(r.bad_param == 4);
+            continue;
+        }
+        ++made;
+        check_valid(*r.shape, "anchor with a hub");
+        // Turned over about a pivot 1e-3 more than hub + R above the centre of a wheel of tip
+        // radius R, the anchor keeps clear of the wheel's tip circle (the pallets inverted,
+        // Figure 9.24); 1e-3 less, and the hub's arc meets it.
+        const double R = 1.0;
+        for (double margin : {1e-3, -1e-3}) {
+            const Eigen::Isometry2d inverted = Eigen::Translation2d(0, hub + R + margin) * Eigen::Rotation2Dd(std::numbers::pi);
+            double nearest = 1e300;
+            for (const auto& seg : r.shape->profiles[0].segments)
+                nearest = std::min(nearest, closest_point(transformed(seg, inverted), Eigen::Vector2d::Zero()).distance);
+            CHECK((nearest > R) == (margin > 0));
+        }
+    }
+    CHECK(made > 20);
+}
+
+TEST_CASE("geometry/part_generators: a mirrored ratchet wheel or pawl is the mirror image in the y axis") {
+    for (const auto& [name, settings] : std::vector<std::pair<std::string, std::vector<std::pair<std::string, double>>>>{
+             {"ratchet-wheel", {{"teeth", 12}}}, {"ratchet-wheel", {{"teeth", 7}, {"root-radius", 0.6}}}, {"pawl", {{"length", 0.9}}}}) {
+        auto with = settings;
+        with.emplace_back("mirror", 1);
+        const auto plain = make_shape(name, settings), mirrored = make_shape(name, with);
+        REQUIRE(plain.shape);
+        REQUIRE(mirrored.shape);
+        check_valid(*mirrored.shape, name + " mirrored");
+        CHECK(mirrored.shape->symmetry == plain.shape->symmetry);
+        const auto& a = plain.shape->profiles[0];
+        const auto& b = *mirrored.shape;
+        // Every point of the plain outline, reflected, lies on the mirrored one; the same area.
+        for (const auto& seg : a.segments)
+            for (double t : {0.0, 0.3, 0.5, 1.0}) {
+                const Eigen::Vector2d x = seg.point_at(t);
+                CHECK(distance_to(b, Eigen::Vector2d(-x.x(), x.y())) <= 1e-12);
+            }
+        CHECK(signed_area(b.profiles[0]) == doctest::Approx(signed_area(a)).epsilon(1e-12));
+    }
+    // A ratchet wheel's radial faces face counter-clockwise; mirrored, clockwise: the outward
+    // normal of the face from tooth 1's tip down to its root points along +angle or -angle.
+    auto face_sense = [](const Shape& s) {
+        for (const auto& seg : s.profiles[0].segments) {
+            const Eigen::Vector2d m = seg.point_at(0.5), along = seg.to - seg.from;
+            if (std::abs(m.normalized().dot(along.normalized())) > 1 - 1e-9) {  // radial
+                const Eigen::Vector2d ccw(-m.y(), m.x());
+                return seg.outward_normal_at(0.5).dot(ccw) > 0 ? 1 : -1;
+            }
+        }
+        return 0;
+    };
+    CHECK(face_sense(*make_shape("ratchet-wheel").shape) == 1);
+    CHECK(face_sense(*make_shape("ratchet-wheel", {{"mirror", 1}}).shape) == -1);
+    const auto bad = make_shape("pawl", {{"mirror", 2}});
+    REQUIRE(!bad.shape);
+    CHECK(bad.bad_param == 2);
 }

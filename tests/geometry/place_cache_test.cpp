@@ -91,6 +91,7 @@ TEST_CASE("geometry/place_cache: the key covers geometry and every setting") {
     CHECK(changed([](PlaceRequest& r) { r.cspace.axes[1].samples += 1; }));
     CHECK(changed([](PlaceRequest& r) { r.cspace.axes[0].hi = std::nextafter(r.cspace.axes[0].hi, 10.0); }));
     CHECK(changed([](PlaceRequest& r) { r.merge_epsilon = 1e-3; }));
+    CHECK(changed([](PlaceRequest& r) { r.cspace.axes[1].stops = !r.cspace.axes[1].stops; }));
     CHECK(changed([](PlaceRequest& r) { r.external.push_back({1, 0.0, "g"}); }));
     CHECK(place_cache_key(place_cache_material(c.tessellated(1e-3), req)) != place_cache_key(place_cache_material(c.tessellated(2e-3), req)));
     CHECK(place_cache_key(base).size() == 16);
@@ -195,10 +196,10 @@ TEST_CASE("geometry/place_cache: stale, foreign and alien files are not served, 
     CHECK(cache.load(f.material).status == CacheStatus::miss);
     std::filesystem::create_directories(cache.directory());
     // Another version's file.
-    spit(path, "qm-place-cache/5\n5 other\n0 0\n");
+    spit(path, "qm-place-cache/6\n5 other\n0 0\n");
     auto l = cache.load(f.material);
     CHECK(l.status == CacheStatus::stale);
-    CHECK(l.why == "it was written in format qm-place-cache/5, not qm-place-cache/6");
+    CHECK(l.why == "it was written in format qm-place-cache/6, not qm-place-cache/7");
     // A whole, sound file of another computation under this name (a hash collision, a copy).
     const auto other = bar_and_block();
     PlaceRequest other_req;
@@ -218,6 +219,36 @@ TEST_CASE("geometry/place_cache: stale, foreign and alien files are not served, 
     l = cache.load(f.material);
     CHECK(l.status == CacheStatus::corrupt);
     CHECK(l.why == "it is not a place cache file");
+}
+
+// Format /6 meant stops without a checksum on one branch and a checksum without stops on the
+// other; a whole file of either kind is stale under /7: refused, recomputed, replaced.
+TEST_CASE("geometry/place_cache: files of both format /6s are refused as stale and replaced") {
+    const Fixture f;
+    const PlaceCache cache(fresh_dir("format6"));
+    const auto path = cache.path_for(f.material);
+    REQUIRE(cache.store(f.material, f.vocabulary));
+    const std::string current = slurp(path);
+    REQUIRE(current.rfind("qm-place-cache/7\n", 0) == 0);
+    const std::string body = current.substr(current.find('\n') + 1);
+    const std::string unsealed = body.substr(0, body.rfind('\n', body.size() - 2) + 1);
+    const std::string with_stops = "qm-place-cache/6\n" + unsealed;                 // no checksum line
+    const std::string with_checksum = resealed("qm-place-cache/6\n" + body);       // checksum, /6 head
+    for (const auto& old : {with_stops, with_checksum}) {
+        spit(path, old);
+        const auto l = cache.load(f.material);
+        CHECK(l.status == CacheStatus::stale);
+        CHECK(l.why == "it was written in format qm-place-cache/6, not qm-place-cache/7");
+        const auto rebuilt = build_or_load(f.c.exact, f.req, cache);
+        CHECK(!rebuilt.from_cache);
+        CHECK(rebuilt.cache_status == CacheStatus::stale);
+        CHECK(rebuilt.note.find("format qm-place-cache/6") != std::string::npos);
+        CHECK(same(rebuilt.vocabulary, f.vocabulary));
+        CHECK(slurp(path) == current);
+        const auto again = build_or_load(f.c.exact, f.req, cache);
+        CHECK(again.from_cache);
+        CHECK(same(again.vocabulary, f.vocabulary));
+    }
 }
 
 TEST_CASE("geometry/place_cache: a folder that cannot be written: computed, not stored, and said") {

@@ -333,3 +333,111 @@ TEST_CASE("geometry/place_vocabulary_builder: the tessellated closed-form pairs 
         for (auto k : {PlaceKind::cseg, PlaceKind::join, PlaceKind::fsd, PlaceKind::face}) CHECK(tess.count(k) == exact.count(k));
     }
 }
+
+namespace {
+
+// The face each side of a division place reaches (motion across it, both ways).
+std::pair<std::optional<PlaceId>, std::optional<PlaceId>> sides(const PlaceVocabulary& v, const Place& d) {
+    QualDirection up, down;
+    up.s[static_cast<std::size_t>(1 - d.axis)] = 1;
+    down.s[static_cast<std::size_t>(1 - d.axis)] = -1;
+    std::optional<PlaceId> a, b;
+    for (const auto& x : v.adjacency)
+        if (x.from == d.id && v.at(x.to).kind == PlaceKind::face) (x.motion == up ? a : x.motion == down ? b : a) = x.to;
+    return {a, b};
+}
+
+}  // namespace
+
+TEST_CASE("geometry/place_vocabulary_builder: a division through grid samples still separates its two faces") {
+    // On a grid of 64 samples per turn, the disk cam's FSDs from its highest and lowest points
+    // (q0 = pi/2, 3 pi/2) run through sample columns. The samples on such a line belong to the
+    // face below it (the cuts go between them and the next column); naming the face a third of
+    // a cell above it by a zero offset put that point in the face below too: the FSD had one
+    // face on both sides, and a face beside it no way out under (- 0). At 60 and 66 samples (off
+    // the columns) and 64 the vocabulary must be the same. (Not at every grid: at 61, 63 and 65
+    // the join at the tangent top lands a quarter cell off the top and its FSD along q0 is lost
+    // or doubled, the sub-cell case of docs/ACCURACY.md.)
+    const auto c = disk_cam_and_follower();
+    std::multiset<std::string> first;
+    for (int n : {64, 60, 66}) {
+        PlaceRequest req;
+        req.cspace.axes = c.axes;
+        req.cspace.axes[0].samples = n;
+        const auto v = build_place_vocabulary(c.exact, req).vocabulary;
+        INFO("samples ", n);
+        for (const auto& p : v.places)
+            if (p.kind == PlaceKind::fsd) {
+                const auto [a, b] = sides(v, p);
+                REQUIRE(a);
+                REQUIRE(b);
+                CHECK(*a != *b);
+            }
+        if (n == 64) first = signature(v);
+        else CHECK(signature(v) == first);
+    }
+}
+
+TEST_CASE("geometry/place_vocabulary_builder: the ends of an axis that stops are stop places, blocked beyond") {
+    // The disk cam with the follower's axis (q1, 0.2 .. 1) ending in stops: the top end is free
+    // everywhere above the cam, so it is a stop of normal (0 -), split by the limit joins of the
+    // two vertical FSDs that reach it; the bottom end lies in blocked space (no stop there).
+    const auto c = disk_cam_and_follower();
+    PlaceRequest req;
+    req.cspace.axes = c.axes;
+    const auto without = build_place_vocabulary(c.exact, req).vocabulary;
+    req.cspace.axes[1].stops = true;
+    const auto v = build_place_vocabulary(c.exact, req).vocabulary;
+    CHECK(without.count(PlaceKind::stop) == 0);
+    REQUIRE(v.count(PlaceKind::stop) == 2);
+    CHECK(v.places.size() == without.places.size() + 2);
+    // Without stops a face at the top stays itself for ever under (0 +) (the follower rising
+    // for ever); with them no face keeps a motion that moves the follower.
+    auto faces_keep_rising = [](const PlaceVocabulary& x) {
+        return std::count_if(x.adjacency.begin(), x.adjacency.end(), [&](const Adjacency& a) {
+            return a.from == a.to && x.at(a.from).kind == PlaceKind::face && a.motion.s[1] != 0;
+        });
+    };
+    CHECK(faces_keep_rising(without) > 0);
+    CHECK(faces_keep_rising(v) == 0);
+    for (const auto& p : v.places) {
+        if (p.kind == PlaceKind::join && p.join_kind == JoinKind::limit) {
+            INFO("limit join at ", p.points.front().transpose());
+            CHECK(std::count(p.normals.begin(), p.normals.end(), QualDirection{{0, -1}}) == 1);
+        }
+        if (p.kind != PlaceKind::stop) continue;
+        CHECK(p.normals == std::vector<QualDirection>{QualDirection{{0, -1}}});
+        CHECK(p.axis == 0);
+        for (const auto& pt : p.points) CHECK(pt[1] == doctest::Approx(1.0));
+        for (const auto& a : v.adjacency) {
+            if (a.from != p.id) continue;
+            INFO("motion ", to_string(a.motion));
+            if (a.motion.s[1] > 0) CHECK((a.constrained && a.to == p.id));              // out past the stop: Law 2
+            if (a.motion.s[1] < 0) CHECK((a.instantaneous && v.at(a.to).kind == PlaceKind::face));  // back into free space
+            if (a.motion.s[1] == 0) CHECK((!a.instantaneous && v.at(a.to).kind == PlaceKind::join));  // along it
+        }
+    }
+}
+
+TEST_CASE("geometry/place_vocabulary_builder: stops on two ending axes meet at the domain's corners") {
+    // A box obstacle in the middle of [0, 1] x [0, 1], both axes ending in stops: each end is a
+    // stop split where the box's FSDs reach it; the four corners of the domain are limit joins
+    // with both stops' normals, and every motion out of the domain from one is constrained.
+    Box box(0.31, 0.61, 0.41, 0.71);
+    auto req = square(0, 1, false, 41);
+    for (auto& a : req.cspace.axes) a.stops = true;
+    const auto v = build_place_vocabulary(box, req).vocabulary;
+    CHECK(v.count(PlaceKind::stop) == 4 * 3);  // each side cut by the two FSDs that reach it
+    int corners = 0;
+    for (const auto& p : v.places) {
+        if (p.kind != PlaceKind::join || p.normals.size() != 2 || p.join_kind != JoinKind::limit) continue;
+        ++corners;
+        const Eigen::Vector2d x = p.points.front();
+        const QualDirection out{{static_cast<std::int8_t>(x[0] < 0.5 ? -1 : 1), static_cast<std::int8_t>(x[1] < 0.5 ? -1 : 1)}};
+        for (const auto& a : v.adjacency)
+            if (a.from == p.id && (a.motion.s[0] == out.s[0] || a.motion.s[1] == out.s[1]) &&
+                !(a.motion.s[0] == -out.s[0] || a.motion.s[1] == -out.s[1]))
+                CHECK(a.constrained);
+    }
+    CHECK(corners == 4);
+}

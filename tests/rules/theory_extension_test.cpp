@@ -2,8 +2,8 @@
 // motion transfer (Table 3.2) lets the gear pair of Figure 7.12 turn every way (nine combinations
 // instead of six); a new law file added to a copy changes the answer without recompiling; and the
 // command line's --rules selects the folder.
-#include "alex/analysis.hpp"
-#include "alex/scene_parser.hpp"
+#include "analysis/analysis.hpp"
+#include "scene/scene_parser.hpp"
 #include <cstdlib>
 #include <doctest/doctest.h>
 #include <filesystem>
@@ -27,11 +27,11 @@ fs::path copy_rules(const std::string& name) {
 
 std::uint64_t gear_combinations(const fs::path& rules) {
     Diagnostics d;
-    auto scene = alex::read_scene_file(std::string(QM_SOURCE_DIR) + "/scenarios/alex/gears.def", d);
+    auto scene = scene::read_scene_file(std::string(QM_SOURCE_DIR) + "/scenarios/alex/gears.def", d);
     REQUIRE(scene.has_value());
-    alex::AnalysisOptions o;
+    analysis::AnalysisOptions o;
     o.rules_directory = rules;
-    auto a = alex::analyse(*scene, o, d);
+    auto a = analysis::analyse(*scene, o, d);
     if (!a) {
         std::ostringstream os;
         d.print(os);

@@ -12,10 +12,10 @@ const S all_2d_translations{"(+ +)", "(+ 0)", "(+ -)", "(0 +)", "(0 0)", "(0 -)"
 }
 
 TEST_CASE("scenarios/thesis: Figures 7.3 and 7.4, the unsupported block is free and falls") {
-    const alex::Scene scene = load_scene("block.def");
-    alex::Analysis a = analyse(scene);
+    const scene::Scene scene = load_scene("block.def");
+    analysis::Analysis a = analyse(scene);
     REQUIRE(a.situations().size() == 2);
-    const alex::SituationResult& r = a.situations()[0];
+    const analysis::SituationResult& r = a.situations()[0];
     const auto block = object(scene, "block"), table = object(scene, "table");
     CHECK(texts(r.freedom[block].translation) == all_2d_translations);         // Figure 7.3
     CHECK(texts(r.freedom[block].rotation) == S{"(+)", "(0)", "(-)"});
@@ -26,9 +26,9 @@ TEST_CASE("scenarios/thesis: Figures 7.3 and 7.4, the unsupported block is free 
 }
 
 TEST_CASE("scenarios/thesis: Figures 7.5 and 7.6, the block on the table is stable") {
-    const alex::Scene scene = load_scene("block.def");
-    alex::Analysis a = analyse(scene);
-    const alex::SituationResult& r = a.situations()[1];
+    const scene::Scene scene = load_scene("block.def");
+    analysis::Analysis a = analyse(scene);
+    const analysis::SituationResult& r = a.situations()[1];
     const auto block = object(scene, "block");
     CHECK(texts(r.freedom[block].translation) == S{"(+ 0)", "(+ +)", "(0 0)", "(0 +)", "(- 0)", "(- +)"});
     CHECK(texts(r.freedom[block].rotation) == S{"(0)"});
@@ -37,10 +37,10 @@ TEST_CASE("scenarios/thesis: Figures 7.5 and 7.6, the block on the table is stab
 }
 
 TEST_CASE("scenarios/thesis: Figures 7.9 and 7.10, the arch is stable") {
-    const alex::Scene scene = load_scene("arch.def");
-    alex::Analysis a = analyse(scene);
+    const scene::Scene scene = load_scene("arch.def");
+    analysis::Analysis a = analyse(scene);
     REQUIRE(a.situations().size() == 1);
-    const alex::SituationResult& r = a.situations()[0];
+    const analysis::SituationResult& r = a.situations()[0];
     const S up_and_sideways{"(+ 0)", "(+ +)", "(0 0)", "(0 +)", "(- 0)", "(- +)"};
     for (const char* name : {"cross-bar", "left", "right"}) {
         CAPTURE(name);
@@ -53,9 +53,9 @@ TEST_CASE("scenarios/thesis: Figures 7.9 and 7.10, the arch is stable") {
 }
 
 TEST_CASE("scenarios/thesis: Figures 7.13 and 7.14, the gear pair has six combinations") {
-    const alex::Scene scene = load_scene("gears.def");
-    alex::Analysis a = analyse(scene);
-    const alex::SituationResult& r = a.situations()[0];
+    const scene::Scene scene = load_scene("gears.def");
+    analysis::Analysis a = analyse(scene);
+    const analysis::SituationResult& r = a.situations()[0];
     for (const char* name : {"driver", "follower"}) {
         CHECK(texts(r.freedom[object(scene, name)].translation) == S{"(0 0)"});
         CHECK(texts(r.freedom[object(scene, name)].rotation) == S{"(+)", "(0)", "(-)"});
@@ -67,10 +67,10 @@ TEST_CASE("scenarios/thesis: Figures 7.13 and 7.14, the gear pair has six combin
 }
 
 TEST_CASE("scenarios/thesis: Figures 7.17 and 7.18, the recoil escapement") {
-    const alex::Scene scene = load_scene("recoil_escapement.def");
-    alex::Analysis a = analyse(scene);
+    const scene::Scene scene = load_scene("recoil_escapement.def");
+    analysis::Analysis a = analyse(scene);
     REQUIRE(a.situations().size() == 2);
-    const alex::SituationResult& r = a.situations()[0];
+    const analysis::SituationResult& r = a.situations()[0];
     for (const char* name : {"scape-wheel", "pallet", "gear"}) {  // Figure 7.17
         CHECK(texts(r.freedom[object(scene, name)].translation) == S{"(0 0)"});
         CHECK(texts(r.freedom[object(scene, name)].rotation) == S{"(+)", "(0)", "(-)"});
@@ -81,12 +81,12 @@ TEST_CASE("scenarios/thesis: Figures 7.17 and 7.18, the recoil escapement") {
     // The same through the API's given motion, and through --given's option.
     Diagnostics d;
     auto pallet = object(scene, "pallet");
-    alex::Motion turning{pallet, {alex::Sign::zero, alex::Sign::zero}, {alex::Sign::plus}, {}};
-    auto given = a.with_given(1, std::span<const alex::Motion>(&turning, 1), d);
+    scene::Motion turning{pallet, {scene::Sign::zero, scene::Sign::zero}, {scene::Sign::plus}, {}};
+    auto given = a.with_given(1, std::span<const scene::Motion>(&turning, 1), d);
     REQUIRE(given.has_value());
     CHECK(combinations(scene, *given) == S{"scape-wheel (0 0) (+); pallet (0 0) (+); gear (0 0) (-)"});
-    alex::AnalysisOptions o;
+    analysis::AnalysisOptions o;
     o.given.push_back(turning);
-    alex::Analysis b = analyse(scene, o);
+    analysis::Analysis b = analyse(scene, o);
     CHECK(combinations(scene, b.situations()[0]) == S{"scape-wheel (0 0) (+); pallet (0 0) (+); gear (0 0) (-)"});
 }

@@ -1,0 +1,161 @@
+// cli/draw_command.cpp: `qm-atms draw` (thesis Figures 9.11-9.13: the parts drawn at a place).
+#include "draw_command.hpp"
+
+#include "pair_places.hpp"
+
+#include "geometry/mechanism_drawing.hpp"
+#include "geometry/metric_scene_parser.hpp"
+#include "geometry/place_sample.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <optional>
+#include <sstream>
+
+namespace qm::cli {
+
+namespace {
+
+namespace g = qm::geometry;
+
+struct DrawArgs {
+    std::string scene, config, place, svg;
+    bool has_config = false, use_cache = true;
+    std::optional<std::filesystem::path> cache_dir;
+    int width = 720, height = 540;
+};
+
+int usage_error(std::ostream& err, const std::string& what) {
+    err << "qm-atms: " << what << "\n" << draw_usage();
+    return 2;
+}
+
+// "WxH", each 100..4000 pixels.
+bool parse_size(const std::string& text, int& width, int& height) {
+    const auto x = text.find('x');
+    if (x == std::string::npos) return false;
+    auto number = [](std::string_view s, int& v) {
+        auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+        return ec == std::errc() && end == s.data() + s.size() && v >= 100 && v <= 4000;
+    };
+    return number(std::string_view(text).substr(0, x), width) && number(std::string_view(text).substr(x + 1), height);
+}
+
+std::optional<std::string> parse_args(std::span<const std::string> args, DrawArgs& a) {
+    if (args.empty()) return "draw takes a metric scene";
+    a.scene = args[0];
+    for (std::size_t i = 1; i < args.size(); ++i) {
+        const std::string& o = args[i];
+        const bool has_value = i + 1 < args.size();
+        if (o == "--no-cache") a.use_cache = false;
+        else if (o == "--config" && has_value) a.config = args[++i], a.has_config = true;
+        else if (o == "--place" && has_value) a.place = args[++i];
+        else if (o == "--svg" && has_value) a.svg = args[++i];
+        else if (o == "--cache" && has_value) a.cache_dir = args[++i];
+        else if (o == "--size" && has_value) {
+            if (!parse_size(args[++i], a.width, a.height)) return "--size takes WIDTHxHEIGHT, each 100 to 4000 pixels, not '" + args[i] + "'";
+        } else return "unknown or incomplete option '" + o + "' for draw";
+    }
+    if (a.svg.empty()) return "draw needs --svg FILE";
+    if (a.has_config && !a.place.empty()) return "draw takes --config or --place, not both";
+    return std::nullopt;
+}
+
+std::string value_text(const g::Part& p, double q) {
+    std::ostringstream os;
+    os.precision(4);
+    if (p.rotates()) os << q * 180.0 / std::numbers::pi << "\u00b0";
+    else os << q;
+    return p.name + "=" + os.str();
+}
+
+// "cseg, normal (- -)", "join (fsd-end), normals (- -) (0 +)", "face".
+std::string place_text(const g::Place& p) {
+    std::string out = g::to_string(p.kind);
+    if (p.kind == g::PlaceKind::join) out += std::string(" (") + g::to_string(p.join_kind) + (p.concave ? *p.concave ? ", concave" : ", convex" : "") + ")";
+    if (!p.normals.empty()) out += p.normals.size() == 1 ? ", normal" : ", normals";
+    for (const auto& n : p.normals) out += " " + g::to_string(n);
+    return out;
+}
+
+// The pair's parts at the sample configuration of place `text` ("A--B:ID").
+int draw_place(const g::Mechanism& m, const DrawArgs& a, std::ostream& os, std::ostream& err, std::string& title) {
+    const auto colon = a.place.rfind(':');
+    const auto pair = colon == std::string::npos ? std::nullopt : find_pair(m, std::string_view(a.place).substr(0, colon));
+    if (!pair) return usage_error(err, "--place takes PAIR:ID with PAIR a kinematic pair of " + a.scene + " written A--B (as --places names it), not '" + a.place + "'");
+    Diagnostics diags;
+    const auto found = pair_places(m, *pair, open_place_cache(a.use_cache, a.cache_dir), false, diags);
+    diags.print(err);
+    if (!found) return 2;
+    const auto& places = *found;
+    const std::string id_text = a.place.substr(colon + 1);
+    std::size_t id = 0;
+    auto [end, ec] = std::from_chars(id_text.data(), id_text.data() + id_text.size(), id);
+    if (ec != std::errc() || end != id_text.data() + id_text.size() || id >= places.vocabulary.places.size())
+        return usage_error(err, "pair " + a.place.substr(0, colon) + " has places 0 to " + std::to_string(places.vocabulary.places.size()) +
+                                    " (exclusive), not '" + id_text + "'");
+    const g::Place& place = places.vocabulary.places[id];
+    const Eigen::Vector2d s = g::sample_configuration(places.request.cspace, place);
+    g::Configuration q{std::vector<double>(m.parts.size(), 0.0)};
+    for (int k = 0; k < 2; ++k) {
+        const g::PartId p = k == 0 ? pair->a : pair->b;
+        if (!m.parts[p].fixed()) q.q[p.value] = s[k];
+    }
+    const std::vector<g::PartId> drawn{pair->a, pair->b};
+    const g::ContactRequest request{m.settings.contact_tolerance, m.settings.normal_zero_tolerance};
+    const auto contacts = g::detect_contacts(*places.oracle, {q.at(pair->a), q.at(pair->b)}, request);
+    title = m.name + ": " + a.place.substr(0, colon) + " place " + std::to_string(id) + " (" + place_text(place) + ") at " +
+            value_text(m.parts[pair->a], q.at(pair->a)) + ", " + value_text(m.parts[pair->b], q.at(pair->b));
+    const auto marks = contacts.status == g::ContactStatus::ok ? g::contact_marks(m, *pair, contacts, 0, 1) : std::vector<g::ContactMark>{};
+    g::write_parts_svg(os, g::drawn_parts(m, q, drawn), marks, {a.width, a.height, title, true, m.settings.normal_zero_tolerance});
+    return 0;
+}
+
+}  // namespace
+
+const char* draw_usage() noexcept {
+    return "       qm-atms draw METRIC-SCENE [--config 'PART=VALUE, ...' | --place A--B:ID] --svg FILE [--size WxH]\n"
+           "                    [--cache DIR | --no-cache]    the parts drawn at a configuration or at a place\n";
+}
+
+int draw_command(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
+    (void)out;
+    DrawArgs a;
+    if (auto why = parse_args(args, a)) return usage_error(err, *why);
+    Diagnostics diags;
+    const auto m = g::read_mechanism_file(a.scene, diags);
+    if (!m) {
+        diags.print(err);
+        return 2;
+    }
+    std::ostringstream svg;
+    std::string title;
+    if (!a.place.empty()) {
+        if (const int status = draw_place(*m, a, svg, err, title)) return status;
+    } else {
+        const auto q = g::parse_configuration(*m, a.config, diags);
+        if (!q) {
+            diags.print(err);
+            return 2;
+        }
+        std::vector<g::PartId> drawn;
+        for (std::uint32_t i = 0; i < m->parts.size(); ++i) drawn.push_back(g::PartId{i});
+        const auto contacts = g::mechanism_contacts(*m, *q, drawn);
+        for (const auto& pair : contacts.overlapping)
+            diags.add({Severity::warning, pair.where,
+                       "'" + m->parts[pair.a].name + "' and '" + m->parts[pair.b].name + "' overlap at " +
+                           (a.config.empty() ? std::string("the drawn configuration") : "'" + a.config + "'") + " (drawn all the same)",
+                       m->source ? m->source->line_of(pair.where) : std::string(), {}});
+        diags.print(err);
+        title = m->name + (a.config.empty() ? std::string(" as drawn") : " at " + a.config);
+        g::write_parts_svg(svg, g::drawn_parts(*m, *q, drawn), contacts.marks, {a.width, a.height, title, true, m->settings.normal_zero_tolerance});
+    }
+    std::ofstream file(a.svg);
+    file << svg.str();
+    if (!file) return usage_error(err, "cannot write '" + a.svg + "'");
+    return 0;
+}
+
+}  // namespace qm::cli

@@ -1,0 +1,127 @@
+// tests/cli/draw_command_test.cpp: `qm-atms draw` end to end through the built executable
+// (cli/draw_command.hpp): the parts at a CONFIG (their transforms are the configuration, the
+// contact found there is marked with both surfaces' qualitative normals), the pair's parts at a
+// place's sample configuration (the place of `--places --json`), a warning for parts drawn
+// overlapping, and bad input with exit status 2.
+#include "../support/json_value.hpp"
+#include "qm_atms_run.hpp"
+
+#include <doctest/doctest.h>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <numbers>
+#include <string>
+
+using qm::test::Json;
+using qm::test::metric_scene;
+using qm::test::slurp;
+
+namespace {
+
+qm::test::Run draw(const std::string& args) { return qm::test::qm_atms("draw " + args, "draw_test"); }
+
+std::string out_file(const std::string& name) { return std::string(QM_BINARY_DIR) + "/" + name; }
+
+std::size_t count(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
+    return n;
+}
+
+// The transform of the part's group.
+std::string transform_of(const std::string& svg, const std::string& part) {
+    const auto at = svg.find("data-part=\"" + part + "\" transform=\"");
+    REQUIRE(at != std::string::npos);
+    const auto from = svg.find("transform=\"", at) + 11;
+    return svg.substr(from, svg.find('"', from) - from);
+}
+
+}  // namespace
+
+TEST_CASE("cli/draw_command: the parts at a CONFIG, with the contact there") {
+    // The cam's top is at 0.5 + 0.2 sin(30 deg) = 0.6: the follower, drawn at 0.5, rests on it at 0.1.
+    const std::string file = out_file("draw_cam.svg");
+    const auto r = draw(metric_scene("cam.def") + " --config 'cam=30, follower=0.1' --svg " + file);
+    CHECK(r.status == 0);
+    CHECK(r.err.empty());
+    const std::string svg = slurp(file);
+    CHECK(transform_of(svg, "cam") == "rotate(30 0 0)");
+    CHECK(transform_of(svg, "follower") == "translate(0 0.1)");
+    CHECK(count(svg, "<g class=\"contact\">") == 1);
+    CHECK(count(svg, ">(0 +)</text>") == 1);  // the cam's top
+    CHECK(count(svg, ">(0 -)</text>") == 1);  // the follower's underside
+    CHECK(svg.find("cam-s1 (surface, normal (0 +)) against follower-s1 (surface, normal (0 -))") != std::string::npos);
+    const auto marks = svg.substr(svg.find("<g class=\"marks\">"), svg.find("<g class=\"contacts\">") - svg.find("<g class=\"marks\">"));
+    CHECK(count(marks, "class=\"pivot\"") == 1);
+    CHECK(count(marks, "class=\"translation-axis\"") == 1);
+    // As drawn: nothing moved.
+    CHECK(draw(metric_scene("cam.def") + " --svg " + file).status == 0);
+    CHECK(transform_of(slurp(file), "cam") == "rotate(0 0 0)");
+}
+
+TEST_CASE("cli/draw_command: a pair's parts at the sample configuration of a place") {
+    // One cache for --places and every draw: the vocabulary is built once (and the two agree on it).
+    const std::string cache = std::string(QM_BINARY_DIR) + "/draw_test_cache";
+    std::filesystem::remove_all(cache);
+    const auto places = qm::test::qm_atms("--places " + metric_scene("escapement.def") + " --json --cache " + cache, "draw_test");
+    REQUIRE(places.status == 0);
+    const auto doc = Json::parse(places.out);
+    REQUIRE(doc);
+    const auto& vocabulary = (*doc)["pairs"].array().at(0)["vocabulary"];
+    std::map<std::string, int> checked;  // three places of each kind (each draw is a process)
+    for (const auto& p : vocabulary["places"].array()) {
+        const std::string kind = p["kind"].string();
+        if ((kind != "cseg" && kind != "join" && kind != "face") || checked[kind] == 3) continue;
+        const auto& pts = p["points"].array();
+        const auto& q = pts[pts.size() / 2].array();  // place_sample.hpp: the middle point, a join's, a face's
+        const int id = static_cast<int>(p["id"].number());
+        const std::string file = out_file("draw_place.svg");
+        const auto r = draw(metric_scene("escapement.def") + " --place scape-wheel--pallets:" + std::to_string(id) + " --svg " + file + " --cache " + cache);
+        CAPTURE(id);
+        REQUIRE(r.status == 0);
+        const std::string svg = slurp(file);
+        CHECK(svg.find("place " + std::to_string(id) + " (" + kind) != std::string::npos);
+        for (auto [part, value] : {std::pair{"scape-wheel", q[0].number()}, std::pair{"pallets", q[1].number()}}) {
+            const std::string t = transform_of(svg, part);
+            CHECK(std::stod(t.substr(7)) == doctest::Approx(value * 180 / std::numbers::pi).epsilon(1e-9));
+        }
+        if (kind == "cseg") CHECK(count(svg, "<g class=\"contact\">") >= 1);  // touching on a CSEG
+        if (kind == "face") CHECK(count(svg, "<g class=\"contact\">") == 0);
+        ++checked[kind];
+    }
+    CHECK(checked == std::map<std::string, int>{{"cseg", 3}, {"face", 3}, {"join", 3}});
+}
+
+TEST_CASE("cli/draw_command: parts drawn overlapping are drawn, with a located warning") {
+    // The anchor turned upside down overlaps the wheel (issue 16 item 7).
+    const std::string file = out_file("draw_overlap.svg");
+    const auto r = draw(metric_scene("escapement.def") + " --config 'pallets=180' --svg " + file);
+    CHECK(r.status == 0);
+    CHECK(r.err.find("escapement.def:") != std::string::npos);
+    CHECK(r.err.find(": warning: 'scape-wheel' and 'pallets' overlap at 'pallets=180' (drawn all the same)") != std::string::npos);
+    CHECK(transform_of(slurp(file), "pallets").rfind("rotate(180 0 1.4)", 0) == 0);
+}
+
+TEST_CASE("cli/draw_command: bad input is refused with exit status 2") {
+    const std::string cam = metric_scene("cam.def"), file = out_file("draw_bad.svg");
+    auto refused = [&](const std::string& args, const std::string& message) {
+        const auto r = draw(args);
+        CAPTURE(args);
+        CHECK(r.status == 2);
+        CHECK(r.err.find(message) != std::string::npos);
+    };
+    refused(cam, "draw needs --svg FILE");
+    refused("", "draw takes a metric scene");
+    refused(cam + " --svg " + file + " --config 'cam=x'", "CONFIG:1:");
+    refused(cam + " --svg " + file + " --config 'wheel=3'", "CONFIG:1:");
+    refused(cam + " --svg " + file + " --place cam--follower:0 --config 'cam=3'", "--config or --place, not both");
+    refused(cam + " --svg " + file + " --place follower--cam:0", "--place takes PAIR:ID");
+    refused(cam + " --svg " + file + " --place cam--follower", "--place takes PAIR:ID");
+    refused(cam + " --svg " + file + " --place cam--follower:999 --no-cache", "has places 0 to");
+    refused(cam + " --svg " + file + " --place cam--follower:-1 --no-cache", "has places 0 to");
+    refused(cam + " --svg " + file + " --size 50x50", "--size takes WIDTHxHEIGHT");
+    refused(cam + " --svg " + file + " --frobnicate", "unknown or incomplete option '--frobnicate'");
+    refused(cam + " --svg /nonexistent-dir/x.svg", "cannot write '/nonexistent-dir/x.svg'");
+    refused(std::string(QM_SOURCE_DIR) + "/no-such.def --svg " + file, "no-such.def");
+}
