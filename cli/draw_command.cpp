@@ -85,7 +85,11 @@ int draw_place(const g::Mechanism& m, const DrawArgs& a, std::ostream& os, std::
     const auto colon = a.place.rfind(':');
     const auto pair = colon == std::string::npos ? std::nullopt : find_pair(m, std::string_view(a.place).substr(0, colon));
     if (!pair) return usage_error(err, "--place takes PAIR:ID with PAIR a kinematic pair of " + a.scene + " written A--B (as --places names it), not '" + a.place + "'");
-    const auto places = pair_places(m, *pair, open_place_cache(a.use_cache, a.cache_dir), false);
+    Diagnostics diags;
+    const auto found = pair_places(m, *pair, open_place_cache(a.use_cache, a.cache_dir), false, diags);
+    diags.print(err);
+    if (!found) return 2;
+    const auto& places = *found;
     const std::string id_text = a.place.substr(colon + 1);
     std::size_t id = 0;
     auto [end, ec] = std::from_chars(id_text.data(), id_text.data() + id_text.size(), id);

@@ -48,7 +48,19 @@ int explore_command(std::span<const std::string> args, std::ostream& out, std::o
     const auto cache = open_place_cache(use_cache, cache_dir);
     const auto selection = g::kinematic_pairs(*m);
     std::vector<ExplorePair> pairs;
-    for (const auto& pair : selection.modelled) pairs.push_back({pair, pair_places(*m, pair, cache, true)});
+    if (!g::check_grid_limit(*m, selection, diags)) {
+        diags.print(err);
+        return 2;
+    }
+    for (const auto& pair : selection.modelled) {
+        auto places = pair_places(*m, pair, cache, true, diags);
+        if (!places) {
+            diags.print(err);
+            return 2;
+        }
+        pairs.push_back({pair, std::move(*places)});
+    }
+    diags.print(err);
     std::ostringstream data;
     write_explore_data(data, *m, pairs, selection.skipped);
     std::error_code ec;

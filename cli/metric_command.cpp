@@ -206,7 +206,8 @@ std::optional<SceneText> scene_at(const std::string& path, const std::string& co
     const g::ContactRequest request{m->settings.contact_tolerance, m->settings.normal_zero_tolerance};
     bool ok = true;
     for (const auto& pair : g::kinematic_pairs(*m).modelled) {
-        const auto oracle = g::pair_oracle(*m, pair);
+        const auto oracle = pair_oracle_or_error(*m, pair, diags);
+        if (!oracle) return std::nullopt;
         const auto r = g::detect_contacts(*oracle, {q->at(pair.a), q->at(pair.b)}, request);
         if (r.status == g::ContactStatus::overlapping) {
             m->error(diags, pair.where, r.message + (config.empty() ? " (as drawn)" : " (CONFIG '" + config + "')"));
@@ -296,6 +297,10 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
         if (ec) return usage_error(err, "cannot create the SVG directory '" + svg_dir->string() + "'");
     }
     const auto selection = g::kinematic_pairs(*m);
+    if (!g::check_grid_limit(*m, selection, diags)) {
+        diags.print(err);
+        return 2;
+    }
     std::ostringstream text, js;
     text << "mechanism " << m->name << ": " << selection.modelled.size() << " kinematic pair" << (selection.modelled.size() == 1 ? "" : "s") << '\n';
     js << "{\"schema\":\"qm-metric-places/1\",\"mechanism\":";
@@ -303,7 +308,12 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
     js << ",\"pairs\":[";
     for (std::size_t k = 0; k < selection.modelled.size(); ++k) {
         const auto& pair = selection.modelled[k];
-        auto places = pair_places(*m, pair, cache, svg_dir.has_value());
+        auto found = pair_places(*m, pair, cache, svg_dir.has_value(), diags);
+        if (!found) {
+            diags.print(err);
+            return 2;
+        }
+        auto& places = *found;
         if (svg_dir) {  // the picture needs the sampled space, which the cache does not keep
             const std::string name = m->parts[pair.a].name + "--" + m->parts[pair.b].name + ".svg";
             std::ofstream os(*svg_dir / name);

@@ -25,14 +25,29 @@ std::optional<g::PlaceCache> open_place_cache(bool use, const std::optional<std:
     return g::PlaceCache(at);
 }
 
-PairPlaces pair_places(const g::Mechanism& m, const g::PairSpec& pair, const std::optional<g::PlaceCache>& cache, bool need_space) {
+std::unique_ptr<g::FclPairOracle> pair_oracle_or_error(const g::Mechanism& m, const g::PairSpec& pair, Diagnostics& diags) {
+    try {
+        return g::pair_oracle(m, pair);
+    } catch (const g::ModelBuildError& e) {
+        m.error(diags, pair.where, std::string(e.what()) + "; raise chordal-tolerance to build smaller models");
+        return nullptr;
+    }
+}
+
+std::optional<PairPlaces> pair_places(const g::Mechanism& m, const g::PairSpec& pair, const std::optional<g::PlaceCache>& cache, bool need_space,
+                                      Diagnostics& diags) {
     PairPlaces out;
-    out.oracle = g::pair_oracle(m, pair);
+    out.oracle = pair_oracle_or_error(m, pair, diags);
+    if (!out.oracle) return std::nullopt;
     out.request = g::place_request(m, pair);
+    std::string note;  // what the cache did, when it is not a plain hit or store
     if (need_space || !cache) {
         auto built = g::build_place_vocabulary(*out.oracle, out.request);
         QM_REQUIRE(built.status == g::PlaceStatus::ok, built.message);
-        if (cache) (void)cache->store(g::place_cache_material(*out.oracle, out.request), built.vocabulary);
+        if (cache) {
+            const std::string material = g::place_cache_material(*out.oracle, out.request);
+            note = g::cache_note(*cache, material, {}, cache->store(material, built.vocabulary));
+        }
         out.vocabulary = std::move(built.vocabulary);
         out.space = std::move(built.space);
     } else {
@@ -40,7 +55,9 @@ PairPlaces pair_places(const g::Mechanism& m, const g::PairSpec& pair, const std
         QM_REQUIRE(loaded.status == g::PlaceStatus::ok, loaded.message);
         out.vocabulary = std::move(loaded.vocabulary);
         out.from_cache = loaded.from_cache;
+        note = std::move(loaded.note);
     }
+    if (!note.empty()) diags.add({Severity::warning, pair.where, std::move(note), m.source ? m.source->line_of(pair.where) : std::string(), {}});
     if (out.vocabulary.count(g::PlaceKind::face) == 0) {
         // No free area: parts drawn in contact with zero play move only in contact (8.1.6's gap
         // place in the limit); parts drawn overlapping have no place at all.

@@ -10,14 +10,18 @@
 //               degrees for rotations);
 //             - a pair named on the command line as `A--B` (as the SVG files of `--places --svg`).
 // Ownership:  PairPlaces owns its oracle and results.
-// Errors:     none of its own: a vocabulary that cannot be built is an internal failure
-//             (InternalError), as in `--places`.
+// Errors:     a part whose FCL model cannot be built (out of memory; geometry/build_limits.hpp
+//             keeps models within bounds, but memory may still run out) is a located error at the
+//             pair; what the cache did besides a plain hit or store (a file refused and replaced, a
+//             vocabulary not stored) a located warning at the pair (docs/PLACES.md). A vocabulary
+//             that cannot be built is an internal failure (InternalError).
 #pragma once
 #include "geometry/cspace_svg.hpp"
 #include "geometry/fcl_pair_oracle.hpp"
 #include "geometry/mechanism.hpp"
 #include "geometry/place_cache.hpp"
 #include "geometry/place_vocabulary_builder.hpp"
+#include "qm/diagnostics.hpp"
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -40,8 +44,12 @@ struct PairPlaces {
 // The cache to use: none with --no-cache (use == false), else `dir`, else the default.
 [[nodiscard]] std::optional<qm::geometry::PlaceCache> open_place_cache(bool use, const std::optional<std::filesystem::path>& dir);
 
-[[nodiscard]] PairPlaces pair_places(const qm::geometry::Mechanism& m, const qm::geometry::PairSpec& pair,
-                                     const std::optional<qm::geometry::PlaceCache>& cache, bool need_space);
+// Nothing when a part's model cannot be built (the error is in `diags`).
+[[nodiscard]] std::optional<PairPlaces> pair_places(const qm::geometry::Mechanism& m, const qm::geometry::PairSpec& pair,
+                                                    const std::optional<qm::geometry::PlaceCache>& cache, bool need_space, Diagnostics& diags);
+// The pair's FCL oracle, or nothing with a located error when FCL cannot build a part's model.
+[[nodiscard]] std::unique_ptr<qm::geometry::FclPairOracle> pair_oracle_or_error(const qm::geometry::Mechanism& m, const qm::geometry::PairSpec& pair,
+                                                                             Diagnostics& diags);
 
 // Picture options: the title "MECH: A (across) x B (up)" and the axes' names and units.
 [[nodiscard]] qm::geometry::SvgOptions cspace_svg_options(const qm::geometry::Mechanism& m, const qm::geometry::PairSpec& pair, int width,

@@ -95,7 +95,7 @@ CSpaceResult classify_cspace(const PairOracle& oracle, const CSpaceRequest& requ
                 if (b1 == b2) continue;
                 const Eigen::Vector2d a = sample_point(request, i, j);
                 Eigen::Vector2d b = a;
-                b[axis] += ax.step();  // unwrapped, so bisection runs across the seam
+                b[axis] = ax.sample(idx + 1);  // unwrapped (hi for the last), so bisection runs across the seam
                 BoundaryPoint p;
                 p.q = wrap(request, bisect_contact(oracle, a, b1, b, request.boundary_tolerance, out.oracle_calls));
                 p.axis = axis;

@@ -31,7 +31,19 @@ struct CSpaceAxis {
     [[nodiscard]] double span() const noexcept { return hi - lo; }
     // Distance between neighbouring samples.
     [[nodiscard]] double step() const noexcept { return periodic ? span() / samples : span() / (samples - 1); }
-    [[nodiscard]] double sample(int i) const noexcept { return lo + i * step(); }
+    // Sample i; on a translation axis the last sample is hi itself, on a periodic axis sample
+    // `samples` (the first, one period on) is hi: not lo + i step, which can land an ulp beyond
+    // the limit (issue 19: a division running to the limit was then not cut at its top).
+    [[nodiscard]] double sample(int i) const noexcept {
+        return i == (periodic ? samples : samples - 1) ? hi : lo + i * step();
+    }
+    // Sample i of a periodic axis counted on past its ends (i may be negative or beyond the last:
+    // sample(i mod samples) plus the whole periods); sample(i) on a translation axis.
+    [[nodiscard]] double unwrapped_sample(int i) const noexcept {
+        if (!periodic) return sample(i);
+        const int m = ((i % samples) + samples) % samples;
+        return sample(m) + static_cast<double>((i - m) / samples) * span();
+    }
 };
 
 struct CSpaceRequest {

@@ -1,6 +1,7 @@
 // geometry/fcl_part_model.cpp: parts as extruded FCL meshes.
 #include "geometry/fcl_part_model.hpp"
 
+#include "geometry/build_limits.hpp"
 #include "qm/assert.hpp"
 
 #include <fcl/geometry/bvh/BVH_model.h>
@@ -8,15 +9,44 @@
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/distance.h>
 
+#include <new>
+#include <string>
+
 namespace qm::geometry {
+namespace {
+
+std::string bvh_status(int status) {
+    switch (status) {
+    case fcl::BVH_ERR_MODEL_OUT_OF_MEMORY: return "BVH_ERR_MODEL_OUT_OF_MEMORY (out of memory)";
+    case fcl::BVH_ERR_BUILD_OUT_OF_SEQUENCE: return "BVH_ERR_BUILD_OUT_OF_SEQUENCE";
+    case fcl::BVH_ERR_BUILD_EMPTY_MODEL: return "BVH_ERR_BUILD_EMPTY_MODEL";
+    case fcl::BVH_ERR_BUILD_EMPTY_PREVIOUS_FRAME: return "BVH_ERR_BUILD_EMPTY_PREVIOUS_FRAME";
+    case fcl::BVH_ERR_UNSUPPORTED_FUNCTION: return "BVH_ERR_UNSUPPORTED_FUNCTION";
+    case fcl::BVH_ERR_UNUPDATED_MODEL: return "BVH_ERR_UNUPDATED_MODEL";
+    case fcl::BVH_ERR_INCORRECT_DATA: return "BVH_ERR_INCORRECT_DATA";
+    default: return "status " + std::to_string(status);
+    }
+}
+
+}  // namespace
 
 FclPartModel::FclPartModel(const Part& part, double chordal_tolerance, double height)
     : part_(part), chordal_tolerance_(chordal_tolerance) {
     QM_REQUIRE(chordal_tolerance > 0 && height > 0 && !part.profiles.empty(), "FclPartModel needs a positive tolerance and height, and a shape");
+    QM_REQUIRE(chords_needed(part, chordal_tolerance) <= max_chords_per_part, "part '" + part.name + "' needs more chords than the build limit");
+    try {
+        build(height);
+    } catch (const std::bad_alloc&) {  // our arrays, or FCL's that are allocated with throwing new
+        throw ModelBuildError("out of memory while building the collision model of part '" + part.name + "'");
+    }
+}
+
+void FclPartModel::build(double height) {
+    const Part& part = part_;
     std::vector<fcl::Vector3d> v;
     std::vector<fcl::Triangle> t;
     for (const auto& profile : part.profiles) {
-        outlines_.push_back(tessellate(profile, chordal_tolerance));
+        outlines_.push_back(tessellate(profile, chordal_tolerance_));
         const Polygon& poly = outlines_.back();
         const std::size_t base = v.size(), n = poly.size();
         for (const auto& p : poly) v.emplace_back(p.x(), p.y(), -height);
@@ -28,9 +58,15 @@ FclPartModel::FclPartModel(const Part& part, double chordal_tolerance, double he
         }
     }
     auto mesh = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
-    mesh->beginModel(static_cast<int>(t.size()), static_cast<int>(v.size()));
-    mesh->addSubModel(v, t);
-    mesh->endModel();
+    // FCL allocates with new(std::nothrow) and answers a failure with a status; each is checked.
+    auto check = [&](int status, const char* step) {
+        if (status != fcl::BVH_OK)
+            throw ModelBuildError("FCL could not build the collision model of part '" + part.name + "' (" + std::to_string(t.size()) +
+                                  " triangles): " + step + " returned " + bvh_status(status));
+    };
+    check(mesh->beginModel(static_cast<int>(t.size()), static_cast<int>(v.size())), "beginModel");
+    check(mesh->addSubModel(v, t), "addSubModel");
+    check(mesh->endModel(), "endModel");
     triangles_ = t.size();
     mesh_ = std::move(mesh);
 }

@@ -8,21 +8,35 @@
 //             point-in-polygon test per part for that case. (Caps on the prisms, ear-clipped,
 //             would let FCL find it too, but made each query three times slower: a cap's long
 //             thin triangles overlap everything; bench/geometry, docs/perf/geometry.md.)
+//             Every step of FCL's model build is checked: FCL reports a failure (out of memory
+//             for its arrays) by a status and a line on std::cerr, and a model left half built
+//             crashes fcl::collide later (issue 19: a gear of pitch radius 1e9 died of SIGSEGV in
+//             detect_contacts), so a failure is thrown as ModelBuildError instead.
 // Ownership:  owns its FCL geometry through a shared_ptr (FCL's convention); copies share it.
-// Invariants: chordal_tolerance() > 0; the mesh's vertices lie on the exact profiles.
+// Invariants: chordal_tolerance() > 0; the mesh's vertices lie on the exact profiles; the model
+//             is complete (every FCL build step returned BVH_OK).
 // Knows nothing of the ATMS or the engine.
 #pragma once
 #include "geometry/part.hpp"
 #include <fcl/geometry/collision_geometry.h>
 #include <fcl/math/geometry.h>
 #include <memory>
+#include <stdexcept>
 
 namespace qm::geometry {
 
+// FCL could not build a part's model (it ran out of memory for its arrays): a resource failure,
+// not a bug; drivers report it with the part and the setting that sizes the model.
+class ModelBuildError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
 class FclPartModel {
 public:
-    // The walls span heights [-height, height].
-    // Pre: chordal_tolerance > 0, height > 0, part has profiles.
+    // The walls span heights [-height, height]. Throws ModelBuildError if FCL fails.
+    // Pre: chordal_tolerance > 0, height > 0, part has profiles, and its arcs need at most
+    // max_chords_per_part chords (build_limits.hpp; the scene checker refuses larger parts).
     FclPartModel(const Part& part, double chordal_tolerance, double height);
     [[nodiscard]] const std::shared_ptr<fcl::CollisionGeometryd>& geometry() const noexcept { return mesh_; }
     [[nodiscard]] fcl::Transform3d transform(double q) const;
@@ -35,6 +49,7 @@ public:
     [[nodiscard]] Eigen::Vector2d some_point(double q) const { return part_.pose(q) * outlines_.front().front(); }
 
 private:
+    void build(double height);
     Part part_;
     double chordal_tolerance_;
     std::shared_ptr<fcl::CollisionGeometryd> mesh_;

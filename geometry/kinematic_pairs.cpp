@@ -1,6 +1,7 @@
 // geometry/kinematic_pairs.cpp: which pairs get a configuration space, and how (Def 20, 8.1.6, 8.2.1).
 #include "geometry/kinematic_pairs.hpp"
 
+#include "geometry/build_limits.hpp"
 #include "geometry/external_force.hpp"
 #include "geometry/motion_envelope.hpp"
 
@@ -67,6 +68,28 @@ PairSelection kinematic_pairs(const Mechanism& m) {
             if (envelopes_meet(m, a, b)) out.modelled.push_back(spec);  // undeclared pairs that never meet are not news
         }
     return out;
+}
+
+bool check_grid_limit(const Mechanism& m, const PairSelection& selection, Diagnostics& diags) {
+    std::uint64_t total = 0, largest = 0;
+    const PairSpec* at = nullptr;
+    for (const auto& pair : selection.modelled) {
+        const auto r = place_request(m, pair);
+        const std::uint64_t n = std::uint64_t(r.cspace.axes[0].samples) * std::uint64_t(r.cspace.axes[1].samples);
+        total += n;
+        if (!at || n > largest) {
+            largest = n;
+            at = &pair;
+        }
+    }
+    if (total <= max_grid_samples) return true;
+    const auto r = place_request(m, *at);
+    m.error(diags, at->where,
+            "the grids of the " + std::to_string(selection.modelled.size()) + " kinematic pairs have " + std::to_string(total) +
+                " samples together, more than the limit of " + std::to_string(max_grid_samples) + "; this pair's grid is " +
+                std::to_string(r.cspace.axes[0].samples) + " x " + std::to_string(r.cspace.axes[1].samples) +
+                ": lower the grid setting, or the pair's (grid n0 n1)");
+    return false;
 }
 
 double pair_chordal_tolerance(const Mechanism& m, const PairSpec& pair) {

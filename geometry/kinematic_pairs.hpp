@@ -33,6 +33,9 @@ struct PairSelection {
 };
 
 [[nodiscard]] PairSelection kinematic_pairs(const Mechanism& m);
+// Are the modelled pairs' grids within max_grid_samples together (build_limits.hpp)? If not, an
+// error located at the pair with the largest grid, naming the grid setting, goes to diags.
+[[nodiscard]] bool check_grid_limit(const Mechanism& m, const PairSelection& selection, Diagnostics& diags);
 
 // The chordal tolerance (a length) for the pair: the setting times the smaller part's size.
 [[nodiscard]] double pair_chordal_tolerance(const Mechanism& m, const PairSpec& pair);

@@ -272,6 +272,7 @@ std::optional<Mechanism> check_mechanism(const mast::MechanismFile& file, const 
     if (linkages) c.linkages(*linkages, m);
     if (pairs) c.pairs(*pairs, m);
     if (forces) c.forces(*forces, m);
+    c.limits(m);
     if (!c.ok) return std::nullopt;
     m.source = src;
     return m;

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <tuple>
 
@@ -42,6 +43,36 @@ std::vector<Eigen::Vector2d> actual_directions(QualDirection d) {
 }
 
 }  // namespace
+
+// Does motion d from a join lead into free space, by the join's qualitative normals alone (the
+// "intersection of the half planes of the normals" of 8.1.3)? Near a concave join (Def 29) free
+// space is the intersection of the open half planes of the two CSEGs' normals, near a convex one
+// (Def 30) their union; a join on one CSEG (a division's end) has that CSEG's half plane. A motion
+// along a CSEG (dot product 0) is no way into free space there. Where a dot product is ambiguous
+// the geometry must say (nullopt). Sampling alone decided before: at the bottom of a cam's curve,
+// a motion along its tangent went to a face or not as the tessellation's chords fell at the
+// sample a third of a cell out, which changed with the grid (issue 19).
+std::optional<bool> leads_into_free_space(const Place& join, QualDirection d) {
+    if (join.normals.empty() || (join.join_kind == JoinKind::normal_change && !join.concave)) return std::nullopt;
+    bool all_pos = true, any_pos = false, all_closed = true, any_closed = false;
+    for (const auto n : join.normals) {
+        const QualSign s = qdot(n, d);
+        all_pos = all_pos && s == QualSign::pos;
+        any_pos = any_pos || s == QualSign::pos;
+        const bool closed = s == QualSign::neg || s == QualSign::zero;
+        all_closed = all_closed && closed;
+        any_closed = any_closed || closed;
+    }
+    const bool union_of_half_planes = join.join_kind == JoinKind::normal_change && !*join.concave;
+    if (union_of_half_planes) {
+        if (any_pos) return true;
+        if (all_closed) return false;
+    } else {
+        if (all_pos) return true;
+        if (any_closed) return false;
+    }
+    return std::nullopt;
+}
 
 void add_adjacency(const PairOracle& oracle, const CSpaceRequest& r, const std::vector<LineInfo>& lines,
                    const FaceLocator& faces, const std::vector<PlaceId>& face_places, PlaceVocabulary& v) {
@@ -128,12 +159,29 @@ void add_adjacency(const PairOracle& oracle, const CSpaceRequest& r, const std::
                 if (!any) add(p.id, p.id, d, false, true);
                 continue;
             }
+            const std::optional<bool> into_free = leads_into_free_space(p, d);
+            if (into_free == false) {  // the normals close it: constrained, unless it slides along a line
+                if (!any) add(p.id, p.id, d, false, true);
+                continue;
+            }
+            bool found = false;
             for (const auto& dir : actual_directions(d))
                 if (auto f = face_near(p.points.front(), dir, nudge)) {
                     add(p.id, *f, d, true, false);
-                    any = true;
+                    found = true;
                 }
-            if (!any) add(p.id, p.id, d, false, true);
+            // The normals open it but the samples a third of a cell out were blocked: a motion
+            // along one CSEG's tangent at a convex join, where the chords of the tessellation lie
+            // within the curve's fall over that third of a cell. A little way out along the mean
+            // normal the face is found.
+            for (double out : {0.05, 0.15})
+                if (!found && into_free == true)
+                    for (const auto& dir : actual_directions(d))
+                        if (auto f = face_near(p.points.front(), dir, -nudge * (out / 1e-3))) {
+                            add(p.id, *f, d, true, false);
+                            found = true;
+                        }
+            if (!any && !found) add(p.id, p.id, d, false, true);
         }
     }
     // (5) faces by reciprocity; a face that reaches nothing under a motion stays (e.g. it wraps).

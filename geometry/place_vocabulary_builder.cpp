@@ -14,78 +14,23 @@
 
 namespace qm::geometry::detail {
 
-void Builder::make_chains(const std::vector<BoundaryChain>& traced) {
-    for (const auto& t : traced) {
-        std::vector<ChainNode> nodes;
-        for (int k : t.points) {
-            const auto& p = space.boundary[static_cast<std::size_t>(k)];
-            nodes.push_back({p.q, k, std::nullopt, p.qual, p.normal});
-        }
-        adopt_neighbour_normals(nodes, t.points, t.closed);
-        absorb_short_runs(nodes, t.closed);
-        chains.push_back(std::move(nodes));
-        closed.push_back(t.closed);
-    }
-}
-
-// A point whose normal contradicts its own crossing (BoundaryPoint::normal_contradicts_edge)
-// takes the normal of the nearest point before it along the chain that has a sound one (after
-// it, at a chain's open start). Flipping such normals instead made things worse where the far
-// surface is not parallel to the near one (the escapement's pallet corner at grid 256: 92 places
-// became 135); left alone, each started a CSEG of a cell or less and two joins, the more of
-// them the finer the grid (the ratchet: 63 to 143 places).
-void Builder::adopt_neighbour_normals(std::vector<ChainNode>& nodes, const std::vector<int>& points, bool is_closed) {
+// A point whose normal contradicted its crossing carries its neighbour's normal (adopt_neighbour_
+// normals), right for its class but not for its tangent: at a needle's tip it lies on the other
+// side, and the tangent through it with the adopted normal crossed the sound side's tangent off
+// the tip (the ratchet's apex at 192 x 768 was put on the needle's side, 63 places, issue 19).
+// The corner is taken from the nearest sound points of the two runs instead (up to 4 points out).
+std::size_t Builder::sound_node(const std::vector<ChainNode>& nodes, std::size_t k, int step, bool is_closed) const {
     const std::size_t n = nodes.size();
-    auto sound = [&](std::size_t k) { return !space.boundary[static_cast<std::size_t>(points[k])].normal_contradicts_edge; };
-    std::size_t good = n;
-    for (std::size_t k = 0; k < n; ++k)
-        if (sound(k)) {
-            good = k;
-            break;
-        }
-    if (good == n) return;  // nothing sound to take from
-    std::vector<ChainNode> fixed = nodes;
-    for (std::size_t k = 0; k < n; ++k) {
-        if (sound(k)) continue;
-        std::optional<std::size_t> from;
-        for (std::size_t s = 1; s < n && !from; ++s) {  // backwards first
-            if (!is_closed && s > k) break;
-            const std::size_t j = (k + n - s) % n;
-            if (sound(j)) from = j;
-        }
-        for (std::size_t s = 1; s < n && !from; ++s) {  // then forwards
-            if (!is_closed && k + s >= n) break;
-            const std::size_t j = (k + s) % n;
-            if (sound(j)) from = j;
-        }
-        if (!from) continue;
-        fixed[k].qual = nodes[*from].qual;
-        fixed[k].normal = nodes[*from].normal;
+    std::size_t j = k;
+    for (int s = 0; s < 4; ++s) {
+        const ChainNode& x = nodes[j];
+        if (x.point < 0 || !space.boundary[static_cast<std::size_t>(x.point)].normal_contradicts_edge) return j;
+        if (!is_closed && ((step < 0 && j == 0) || (step > 0 && j + 1 == n))) break;
+        const std::size_t next = (j + n + static_cast<std::size_t>(step > 0 ? 1 : n - 1)) % n;
+        if (next == k || nodes[next].join || !(nodes[next].qual == nodes[k].qual)) break;
+        j = next;
     }
-    nodes = std::move(fixed);
-}
-
-// 8.1.6: "interactions between small irregularities on surfaces may be ignored": a run of one
-// normal class shorter than merge_epsilon, between two runs of one other class, takes that class.
-void Builder::absorb_short_runs(std::vector<ChainNode>& nodes, bool is_closed) {
-    if (request.merge_epsilon <= 0 || nodes.size() < 3) return;
-    const std::size_t n = nodes.size();
-    for (std::size_t start = 0; start < n;) {
-        std::size_t end = start;
-        double len = 0;
-        while (end + 1 < n && nodes[end + 1].qual == nodes[start].qual) {
-            len += difference(r, nodes[end].q, nodes[end + 1].q).norm();
-            ++end;
-        }
-        const bool has_prev = start > 0 || is_closed, has_next = end + 1 < n || is_closed;
-        if (has_prev && has_next && len < request.merge_epsilon) {
-            const auto& before = nodes[(start + n - 1) % n].qual;
-            const auto& after = nodes[(end + 1) % n].qual;
-            if (before == after && before != nodes[start].qual)
-                for (std::size_t k = start; k <= end; ++k) nodes[k].qual = before;
-        }
-        start = end + 1;
-    }
+    return k;
 }
 
 // Where a join between boundary points a = nodes[k] and b (the next) lies: the crossing of
@@ -95,10 +40,11 @@ void Builder::absorb_short_runs(std::vector<ChainNode>& nodes, bool is_closed) {
 // tip the points next to it can carry the normal of the needle's other side (nearly opposite
 // normals, no crossing to take); the secants through a cell or two of each run then stand in
 // for the tangents, if the boundary is found on both.
-Eigen::Vector2d Builder::corner(const std::vector<ChainNode>& nodes, std::size_t k, bool is_closed) {
+Eigen::Vector2d Builder::corner(const std::vector<ChainNode>& nodes, std::size_t k_in, bool is_closed) {
     const std::size_t n = nodes.size();
+    const std::size_t k = sound_node(nodes, k_in, -1, is_closed), k1 = sound_node(nodes, (k_in + 1) % n, 1, is_closed);
     const ChainNode& a = nodes[k];
-    const ChainNode& b = nodes[(k + 1) % n];
+    const ChainNode& b = nodes[k1];
     const Eigen::Vector2d pb = a.q + difference(r, a.q, b.q);
     const Eigen::Vector2d mid = 0.5 * (a.q + pb);
     auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& w) { return u.x() * w.y() - u.y() * w.x(); };
@@ -112,7 +58,12 @@ Eigen::Vector2d Builder::corner(const std::vector<ChainNode>& nodes, std::size_t
         return (loose && off.norm() < 1.5) ||
                (off.lpNorm<Eigen::Infinity>() < 4 && on_tangents(a.q, na, x) && on_tangents(pb, nb, x));
     };
-    if (std::abs(cross(a.normal, b.normal)) > 0.2) {
+    // Normals less than a right angle apart (in cells: angles in configuration units change with a
+    // translation axis' length, and a scene scaled by 100 took a cam's smooth top for a corner,
+    // issue 19): the change of class is found along the boundary, at a smooth extremum or a corner
+    // alike. Sharper corners from the tangents' crossing.
+    if (in_cells(a.normal).dot(in_cells(b.normal)) > 0) return normal_change(a, pb, b.normal);
+    if (std::abs(cross(in_cells(a.normal), in_cells(b.normal))) > 0.2) {
         const Eigen::Vector2d x = crossing(a.normal, b.normal);
         return project(near(x, a.normal, b.normal, true) ? x : mid, a.normal + b.normal);
     }
@@ -132,12 +83,46 @@ Eigen::Vector2d Builder::corner(const std::vector<ChainNode>& nodes, std::size_t
         s.normalize();
         return s.dot(normal) < 0 ? Eigen::Vector2d(-s) : s;
     };
-    const auto sa = secant(k, -1, a.normal), sb = secant((k + 1) % n, 1, b.normal);
-    if (sa && sb && std::abs(cross(*sa, *sb)) > 0.2) {
+    const auto sa = secant(k, -1, a.normal), sb = secant(k1, 1, b.normal);
+    if (sa && sb && std::abs(cross(in_cells(*sa), in_cells(*sb))) > 0.2) {
         const Eigen::Vector2d x = crossing(*sa, *sb);
         if (near(x, *sa, *sb, false)) return project(x, *sa + *sb);
     }
     return project(mid, a.normal + b.normal);
+}
+
+// Def 29: a join at q between boundary points a and b (next along the chain) is concave if the
+// CSEG beyond it lies in the open half plane of a's normal, i.e. (b - q) . n_a > 0. Where the two
+// normals are nearly parallel (a smooth extremum, a shallow corner) b lies off the tangent line by
+// the curve's rise over half a cell, which the tessellation's chordal error can exceed (the
+// bottom of a cam's curve came out convex at some grids, issue 19); the turn of the normals from
+// a to b, which come from the exact geometry, says the same thing there: the boundary bends
+// towards free space (concave) when the normal turns the way that free space lies from the
+// direction of travel.
+bool Builder::concave(const ChainNode& a, const ChainNode& b, const Eigen::Vector2d& q) const {
+    auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& w) { return u.x() * w.y() - u.y() * w.x(); };
+    const double turn = cross(in_cells(a.normal), in_cells(b.normal));
+    if (in_cells(a.normal).dot(in_cells(b.normal)) > 0 && std::abs(turn) <= 0.2 && std::abs(turn) > 1e-9) {
+        const double free_side = cross(difference(r, a.q, b.q), a.normal);
+        if (std::abs(free_side) > 0) return (turn > 0) == (free_side > 0);
+    }
+    return difference(r, q, b.q).dot(a.normal) > 0;
+}
+
+// Where the normal of a smooth CSEG (or of a shallow corner) passes from a's qualitative class to
+// the next point's, which lies at pb with normal nb: bisection along the boundary between them on
+// the class of the geometry's normal, to a ten-millionth of a cell. The top of a cam's curve is
+// where its normal passes (0 +); the midpoint of the two points, used before, lay up to half a cell
+// from it, below the top, and the divisions from the join then depended on where the grid's
+// columns fell (issue 19: 9 to 47 places for one pair at grids 40 to 160).
+Eigen::Vector2d Builder::normal_change(const ChainNode& a, const Eigen::Vector2d& pb, const Eigen::Vector2d& nb) {
+    const Eigen::Vector2d along = a.normal + nb;
+    Eigen::Vector2d lo = a.q, hi = pb;  // the class at lo is a's, at hi not
+    for (int i = 0; i < 48 && (hi - lo).cwiseQuotient(cell()).norm() > 1e-7; ++i) {
+        const Eigen::Vector2d m = project(0.5 * (lo + hi), along);
+            (qualitative(oracle.free_normal(wrap(r, m)), r.normal_zero_tolerance) == a.qual ? lo : hi) = m;
+    }
+    return project(0.5 * (lo + hi), along);
 }
 
 // Whether the boundary follows the tangent line from boundary point p (normal n) to x: at the
@@ -176,7 +161,7 @@ void Builder::collapse_point_runs(std::size_t c) {
         if (len >= 0.5) continue;
         auto& m = nodes[(next + end) / 2];
         const PlaceId j = add_join(JoinKind::normal_change, m.q, {before.qual, after.qual});
-        v.places[j.value].concave = difference(r, m.q, after.q).dot(before.normal) > 0;
+        v.places[j.value].concave = concave(before, after, m.q);
         for (std::size_t k = next; k <= end; ++k) nodes[k].point = -1;
         m.join = j;
         for (std::size_t k = next; k <= end; ++k)
@@ -205,8 +190,7 @@ void Builder::insert_normal_joins(std::size_t c) {
         if (a.qual == b.qual || b.join) continue;
         const Eigen::Vector2d q = corner(nodes, k, closed[c]);
         const PlaceId j = add_join(JoinKind::normal_change, q, {a.qual, b.qual});
-        // Def 29: concave if the CSEG beyond the join lies in the half plane of this side's normal.
-        v.places[j.value].concave = difference(r, q, b.q).dot(a.normal) > 0;
+        v.places[j.value].concave = concave(a, b, q);
         out.push_back({wrap(r, q), -1, j, a.qual, (a.normal + b.normal).normalized()});
     }
     if (!closed[c] && !out.empty()) {  // a chain leaving a translation axis' domain ends in a limit
@@ -313,14 +297,14 @@ PlaceResult build_place_vocabulary(const PairOracle& oracle, const PlaceRequest&
     }
     detail::Builder b{oracle, request, request.cspace, out.space, out.vocabulary, {}, {}, {}, {}};
     b.make_chains(trace_boundary(oracle, out.space));
-    for (std::size_t c = 0; c < b.chains.size(); ++c) b.insert_normal_joins(c);
+    b.insert_joins_and_drop_tip_islands();
     b.grow_fsds();
     b.add_external_divisions();
     b.cross_divisions();
     b.emit_csegs();
     b.emit_divisions();
     b.add_stops();
-    detail::FaceLocator faces(out.space, b.divisions);
+    detail::FaceLocator faces(out.space, b.divisions, b.barriers_at_joins());
     const int n_faces = faces.label();
     std::vector<PlaceId> face_places;
     std::vector<int> size(static_cast<std::size_t>(n_faces), 0);

@@ -126,11 +126,15 @@ ContactDirection contact_direction(const PlacedPart& a, const PlacedPart& b, dou
         const Eigen::Vector2d out_n = outer.outward_normal_at(cp.t);
         if ((e - cp.point).dot(out_n) < 0) consider(cp.distance, sign * out_n, e);
     };
+    std::vector<Eigen::Vector2d> crossings;  // all of them, for a lens spanning two segments
     for_box_pairs(a, b, 0.0, [&](double, int i, int s, int j, int t) {
         const Segment& x = seg(a, i, s);
         const Segment& y = seg(b, j, t);
         const auto meet = intersections(x, y, 0.0);
         if (meet.points.empty()) return;
+        for (const auto& m : meet.points)
+            if (std::none_of(crossings.begin(), crossings.end(), [&](const Eigen::Vector2d& c) { return (c - m.point).norm() <= 1e-12 * scale; }))
+                crossings.push_back(m.point);
         for (const auto& e : {x.from, x.to}) vertex_in(y, e, 1.0);   // a's vertex in b: a leaves along b's normal
         for (const auto& e : {y.from, y.to}) vertex_in(x, e, -1.0);  // b's vertex in a: a leaves against its own normal
         if (meet.points.size() >= 2) {
@@ -147,6 +151,25 @@ ContactDirection contact_direction(const PlacedPart& a, const PlacedPart& b, dou
             if (n.norm() > 0.5) out = {n.normalized(), m.point, true};
         }
     });
+    // One lens whose two crossings lie on different segments: its middle, as for a chord crossing
+    // one segment. A circle's two half arcs meet at a smooth vertex; where that vertex lay in the
+    // lens it was taken for the deepest point, on the far side of the lens' middle from the
+    // pivot at the bottom of a cam's curve, and the normal's sign flipped there (issue 19).
+    if (crossings.size() == 2) {
+        const Eigen::Vector2d mid = 0.5 * (crossings[0] + crossings[1]);
+        auto nearest = [&](const PlacedPart& p) {
+            std::pair<double, Eigen::Vector2d> best{1e300, Eigen::Vector2d::Zero()};
+            for (const auto& profile : p.profiles)
+                for (const auto& sg : profile.segments) {
+                    const auto cp = closest_point(sg, mid);
+                    if (cp.distance < best.first) best = {cp.distance, sg.outward_normal_at(cp.t)};
+                }
+            return best;
+        };
+        const auto [da, na] = nearest(a);
+        const auto [db, nb] = nearest(b);
+        consider(da + db, nb - na, mid);
+    }
     return out;
 }
 

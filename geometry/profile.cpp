@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace qm::geometry {
@@ -154,15 +155,20 @@ Profile polygon_profile(const std::vector<Eigen::Vector2d>& v) {
     return p;
 }
 
-int chords_for(double radius, double sweep, double chordal_tolerance) {
-    QM_REQUIRE(chordal_tolerance > 0, "chordal tolerance must be positive");
-    if (chordal_tolerance >= radius) return std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / (2 * std::numbers::pi / 3))));
+double chord_count(double radius, double sweep, double chordal_tolerance) noexcept {
+    if (!(chordal_tolerance > 0)) return std::numeric_limits<double>::infinity();
+    if (chordal_tolerance >= radius) return std::max(1.0, std::ceil(std::abs(sweep) / (2 * std::numbers::pi / 3)));
     // A chord of half-angle h deviates r (1 - cos h) = 2 r sin^2(h/2) from its arc; the sine form
     // keeps h exact where 1 - tolerance/r rounds to 1.
     const double h = 2 * std::asin(std::sqrt(chordal_tolerance / (2 * radius)));
-    const double n = std::ceil(std::abs(sweep) / (2 * h));
+    return std::max(1.0, std::ceil(std::abs(sweep) / (2 * h)));
+}
+
+int chords_for(double radius, double sweep, double chordal_tolerance) {
+    QM_REQUIRE(chordal_tolerance > 0, "chordal tolerance must be positive");
+    const double n = chord_count(radius, sweep, chordal_tolerance);
     QM_REQUIRE(n <= max_chords_per_arc, "chordal tolerance too fine for this arc (more than a million chords)");
-    return std::max(1, static_cast<int>(n));
+    return static_cast<int>(n);
 }
 
 Polygon tessellate(const Profile& p, double chordal_tolerance, std::vector<int>* first_vertex) {

@@ -76,6 +76,9 @@ void extend_bounds(const Profile& p, Eigen::Vector2d& lo, Eigen::Vector2d& hi) n
 // the answer is at most max_chords_per_arc (the scene checker's least tolerance keeps it so).
 inline constexpr double max_chords_per_arc = 1e6;
 [[nodiscard]] int chords_for(double radius, double sweep, double chordal_tolerance);
+// The same count without preconditions, as a double (+inf for a tolerance that is not positive):
+// what the scene checker compares with the build limits (build_limits.hpp) before any is built.
+[[nodiscard]] double chord_count(double radius, double sweep, double chordal_tolerance) noexcept;
 // Vertices of the profile with every arc replaced by chords within `chordal_tolerance` of it.
 // Every vertex lies on the exact boundary; segment i begins at index first_vertex[i].
 // Pre: chordal_tolerance > 0.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <limits>
 
 namespace qm::geometry::detail {
@@ -40,6 +41,9 @@ bool Builder::duplicate(const Division& d) const {
         double t = e.dir * (d.start[d.axis] - e.start[e.axis]);
         if (ax.periodic) t = std::fmod(std::fmod(t, ax.span()) + ax.span(), ax.span());
         if (t >= -same && t <= e.length + same && e.dir == d.dir) return true;
+        // Starting at e's far end and running back along it (the division from a convex join up
+        // to a concave one above it, and the one from there down): e itself.
+        if (e.dir == -d.dir && std::abs(t - e.length) <= same && !(e.length >= ax.span() && ax.periodic)) return true;
         if (e.length >= ax.span() && ax.periodic) return true;  // a loop covers the whole line
     }
     return false;
@@ -48,14 +52,35 @@ bool Builder::duplicate(const Division& d) const {
 // Def 31: from each significant point follow each axis until the next contact.
 void Builder::grow_fsds() {
     const std::size_t joins = v.places.size();
+    std::vector<Eigen::Vector2d> mean_normal(joins, Eigen::Vector2d::Zero());  // of each join on a chain
+    for (const auto& nodes : chains)
+        for (const auto& node : nodes)
+            if (node.join && node.join->value < joins) mean_normal[node.join->value] = node.normal;
     for (std::size_t jp = 0; jp < joins; ++jp) {
-        const Place& j = v.places[jp];
+        const Place j = v.places[jp];  // a copy: joins are added below
         if (j.kind != PlaceKind::join || j.join_kind != JoinKind::normal_change) continue;
         const Eigen::Vector2d origin = j.points.front();
         for (int axis = 0; axis < 2; ++axis)
             for (int dir : {1, -1}) {
                 const auto& ax = r.axes[static_cast<std::size_t>(axis)];
                 Division d{PlaceKind::fsd, axis, dir, origin, 0.0, {}, {{0.0, PlaceId{static_cast<std::uint32_t>(jp)}}}};
+                // The join's normals first: a direction they close (along the tangent at the
+                // bottom of a concave curve, into a corner) starts no division, whatever the
+                // tessellation's chords leave free a twentieth of a cell out (issue 19).
+                QualDirection along;
+                along.s[static_cast<std::size_t>(axis)] = static_cast<std::int8_t>(dir);
+                const std::optional<bool> opens = leads_into_free_space(j, along);
+                if (opens == false) continue;
+                // A division the normals open along the boundary's tangent (the side of a convex
+                // bulge where it is parallel to the axis) runs, for a cell or so, within the
+                // tessellation's error of the boundary found on the meshes: probes on the line
+                // through the join met the meshes by chance (the ratchet's bulge at 128 x 1024 lost
+                // both its divisions, issue 19). It runs a twentieth of a cell off the join, into
+                // free space, instead.
+                const Eigen::Vector2d m = in_cells(mean_normal[jp]);
+                const int other = 1 - axis;
+                if (opens == true && m.norm() > 0.5 && std::abs(m[axis]) < 0.2)
+                    d.start[other] += (m[other] > 0 ? 1 : -1) * 0.05 * r.axes[static_cast<std::size_t>(other)].step();
                 const double first = std::max(8 * r.boundary_tolerance, 0.05 * ax.step());
                 if (!in_domain(d.at(first)) || blocked(d.at(first))) continue;
                 if (runs_along_boundary(d, ax) || duplicate(d)) continue;
@@ -63,12 +88,19 @@ void Builder::grow_fsds() {
                 bool ended = false;
                 while (!ended) {
                     double next = t + ax.step();
-                    if (ax.periodic && next >= ax.span()) {  // around the whole axis: ends where it began
-                        if (dir < 0) break;                  // the + direction already covers the loop
+                    // Around the whole axis, it ends where it began: a loop (once: the other
+                    // direction finds it a duplicate). Either direction may be the one that goes
+                    // round: from a join at the top of a curve, the tangent meets the curve again
+                    // at once on one side, by a hair, and which side depends on rounding.
+                    auto loop = [&] {
                         d.length = ax.span();
+                        d.joins.resize(1);
                         d.joins.push_back({ax.span(), d.joins.front().second});
                         divisions.push_back(d);
                         ended = true;
+                    };
+                    if (ax.periodic && next >= ax.span()) {
+                        loop();
                     } else if (!ax.periodic && !in_domain(d.at(next))) {
                         next = dir > 0 ? ax.hi - origin[axis] : origin[axis] - ax.lo;
                         d.length = next;
@@ -81,8 +113,11 @@ void Builder::grow_fsds() {
                         // Meeting the boundary within half a cell of its join, the division is
                         // the join's own CSEG seen along its tangent (at a smooth extremum, once
                         // tessellation has rounded it into chords), not a division of free
-                        // space: the grid resolves nothing that narrow anyway.
-                        if (d.length >= 0.5 * ax.step()) {
+                        // space: the grid resolves nothing that narrow anyway. Going round a
+                        // periodic axis to within half a cell of its join, it is a loop.
+                        if (ax.periodic && d.length > ax.span() - 0.5 * ax.step()) {
+                            if (!duplicate(d)) loop();
+                        } else if (d.length >= 0.5 * ax.step()) {
                             end_on_boundary(d, d.length, JoinKind::fsd_end);
                             divisions.push_back(d);
                         }
@@ -109,6 +144,16 @@ void Builder::end_on_boundary(Division& d, double t, JoinKind kind) {
                 best_k = k;
             }
         }
+    // Ending on a join already there (to a thousandth of a cell, or the bisection's tolerance), it
+    // ends at that join: a second join beside it, 2e-9 away, went before or after it along the
+    // chain by rounding (the Scotch yoke's divisions between its two joins at q0 = 0, issue 19).
+    const double same = std::max(1e-3, 8 * r.boundary_tolerance * scale.maxCoeff());
+    for (const auto& nodes : chains)
+        for (const auto& node : nodes)
+            if (node.join && difference(r, node.q, e).cwiseProduct(scale).norm() <= same) {
+                d.joins.push_back({t, *node.join});
+                return;
+            }
     QualDirection qual;
     Eigen::Vector2d normal = Eigen::Vector2d::Zero();
     if (!chains.empty()) {
@@ -191,7 +236,7 @@ void Builder::add_external_divisions() {
             const int m1 = (m + 1) % n;
             if (!(b[static_cast<std::size_t>(m)] && !b[static_cast<std::size_t>(m1)])) continue;
             Eigen::Vector2d lo = at(m), hi = lo;
-            hi[axis] += ax.step();
+            hi[axis] = ax.sample(m + 1);  // unwrapped: hi itself past the last sample of a periodic axis
             const Eigen::Vector2d s = bisect_contact(oracle, lo, true, hi, r.boundary_tolerance, space.oracle_calls);
             Division d{PlaceKind::external_division, axis, 1, s, 0.0, x.label, {}};
             d.joins.push_back({0.0, PlaceId{0}});
@@ -217,8 +262,12 @@ void Builder::cross_divisions() {
             };
             const double ta = param(da, db.start[da.axis]);
             const double tb = param(db, da.start[db.axis]);
-            const double eps = 4 * r.boundary_tolerance;
-            if (ta <= eps || ta >= da.length - eps || tb <= eps || tb >= db.length - eps) continue;
+            // Within a tenth of a cell of an end is at the end: a tangent division runs a twentieth
+            // of a cell off its join (grow_fsds), and the division ending at that join crossed it
+            // there or not by rounding (the Scotch yoke at odd grids, issue 19).
+            const double ea = std::max(4 * r.boundary_tolerance, 0.1 * r.axes[static_cast<std::size_t>(da.axis)].step());
+            const double eb = std::max(4 * r.boundary_tolerance, 0.1 * r.axes[static_cast<std::size_t>(db.axis)].step());
+            if (ta <= ea || ta >= da.length - ea || tb <= eb || tb >= db.length - eb) continue;
             const PlaceId j = add_join(JoinKind::crossing, da.at(ta), {});
             da.joins.push_back({ta, j});
             db.joins.push_back({tb, j});

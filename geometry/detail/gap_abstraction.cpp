@@ -29,7 +29,7 @@ double free_run(const PairOracle& oracle, const CSpaceResult& space, int i, int 
     };
     auto point = [&](int k) {  // unwrapped along the axis
         Eigen::Vector2d q(r.axes[0].sample(i), r.axes[1].sample(j));
-        q[axis] = ax.lo + k * ax.step();
+        q[axis] = ax.unwrapped_sample(k);
         return q;
     };
     const int self = axis == 0 ? i : j;

@@ -82,6 +82,8 @@ struct Checker {  // the checking of one metric scene
     void linkages(const mast::LinkagesSection& s, Mechanism& m);
     void pairs(const mast::PairsSection& s, Mechanism& m);
     void forces(const mast::ForcesSection& s, Mechanism& m);
+    // The parts against the build limits (build_limits.hpp): size, precision, chords.
+    void limits(const Mechanism& m);
 };
 
 }  // namespace qm::geometry::detail

@@ -38,6 +38,12 @@ struct Builder {
     std::vector<LineInfo> lines;
 
     [[nodiscard]] Eigen::Vector2d cell() const { return {r.axes[0].step(), r.axes[1].step()}; }
+    // A normal (a covector) in cell units, unit length: angles between normals measured on the
+    // grid, the same whatever a translation axis' length (the scene scaled).
+    [[nodiscard]] Eigen::Vector2d in_cells(const Eigen::Vector2d& n) const {
+        const Eigen::Vector2d c = n.cwiseProduct(cell());
+        return c.norm() > 0 ? Eigen::Vector2d(c.normalized()) : c;
+    }
     [[nodiscard]] bool in_domain(const Eigen::Vector2d& q) const {
         for (int k = 0; k < 2; ++k) {
             const auto& a = r.axes[static_cast<std::size_t>(k)];
@@ -82,10 +88,16 @@ struct Builder {
 
     void make_chains(const std::vector<BoundaryChain>& traced);
     void absorb_short_runs(std::vector<ChainNode>& nodes, bool is_closed);
+    void absorb_unresolved_runs(std::vector<ChainNode>& nodes, bool is_closed);
     void adopt_neighbour_normals(std::vector<ChainNode>& nodes, const std::vector<int>& points, bool is_closed);
     void insert_normal_joins(std::size_t c);
+    void insert_joins_and_drop_tip_islands();
+    [[nodiscard]] bool small_island(std::size_t c) const;
     void collapse_point_runs(std::size_t c);
     Eigen::Vector2d corner(const std::vector<ChainNode>& nodes, std::size_t k, bool is_closed);
+    [[nodiscard]] std::size_t sound_node(const std::vector<ChainNode>& nodes, std::size_t k, int step, bool is_closed) const;
+    Eigen::Vector2d normal_change(const ChainNode& a, const Eigen::Vector2d& pb, const Eigen::Vector2d& nb);
+    [[nodiscard]] bool concave(const ChainNode& a, const ChainNode& b, const Eigen::Vector2d& q) const;
     bool on_tangents(const Eigen::Vector2d& p, const Eigen::Vector2d& n, const Eigen::Vector2d& x);
     bool duplicate(const Division& d) const;
     void grow_fsds();
@@ -93,6 +105,7 @@ struct Builder {
     void add_external_divisions();
     void end_on_boundary(Division& d, double t, JoinKind kind);
     void cross_divisions();
+    [[nodiscard]] std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> barriers_at_joins() const;
     void add_stops();
     void emit_csegs();
     void emit_divisions();

@@ -38,9 +38,18 @@ struct LineInfo {
     bool two_sided = false;  // divisions have free space on both sides
 };
 
+// Which side of a division a configuration lies on must not depend on rounding (issue 19 item 5):
+// one within this many cells of a division's line counts as on it (a grid sample there belongs to
+// no face; another point to the lower side: the line passes just above it), and a division's ends
+// reach this much further.
+inline constexpr double on_line_cells = 1e-6;
+
 class FaceLocator {
 public:
-    FaceLocator(const CSpaceResult& space, const std::vector<Division>& divisions);
+    // `barriers` are segments (start, start to end) of the boundary next to its normal-change
+    // joins, which grid edges between free samples must not cross (cut_along).
+    FaceLocator(const CSpaceResult& space, const std::vector<Division>& divisions,
+                const std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>>& barriers);
     // Labels the faces; returns the number of faces. face_of_sample() is valid afterwards.
     int label();
     [[nodiscard]] std::optional<int> face_at(const Eigen::Vector2d& q) const;
@@ -49,13 +58,20 @@ public:
 private:
     // Does the segment from a to sample (i, j) cross a division?
     [[nodiscard]] bool crosses_division(const Eigen::Vector2d& a, int i, int j) const;
+    void cut_along(const std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>>& barriers);
     const CSpaceResult& space_;
     const std::vector<Division>& divisions_;
     int n0_, n1_;
     std::vector<std::uint8_t> cut_[2];  // cut_[k][s]: edge from sample s along axis k is cut
-    std::vector<int> lower_;            // per division: the last sample index on its lower side
-    std::vector<int> face_;             // -1 for blocked samples
+    std::vector<std::uint8_t> on_division_;  // the sample lies on a division (to on_line_cells)
+    std::vector<int> face_;             // -1 for blocked samples and samples on a division
 };
+
+// Does motion d from a join lead into free space, by its qualitative normals alone (8.1.3's
+// half planes: their intersection at a concave join, their union at a convex one, the one CSEG's
+// at a division's end)? nullopt where a dot product is ambiguous, or the join has no normals: the
+// geometry must say. Used for the joins' adjacency and for where divisions start (Def 31).
+[[nodiscard]] std::optional<bool> leads_into_free_space(const Place& join, QualDirection d);
 
 // Adjacency of every place under every motion direction (8.1.3); appends to vocabulary.
 void add_adjacency(const PairOracle& oracle, const CSpaceRequest& request, const std::vector<LineInfo>& lines,
