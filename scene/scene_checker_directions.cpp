@@ -32,7 +32,7 @@ void CheckContext::error(const ast::x3::position_tagged& node, std::string messa
 
 void CheckContext::warning(const ast::x3::position_tagged& node, std::string message) {
     const std::size_t off = pos_.offset_of(node);
-    diags_.add({Severity::warning, src_.locate(off), std::move(message), src_.line_at(off), {}});
+    diags_.add(Severity::warning, src_.locate(off), std::move(message), src_.line_at(off));
 }
 
 std::optional<PatternSlot> CheckContext::slot(const ast::SignToken& t, bool allow_variable) {
