@@ -5,7 +5,7 @@
 #include "scene_command.hpp"
 #include "analysis/analysis.hpp"
 #include "analysis/result_printer.hpp"
-#include "metric_command.hpp"
+#include "bridge/scene_at_config.hpp"
 #include "query_text.hpp"
 #include "rules_location.hpp"
 #include "scene/scene_parser.hpp"
@@ -44,8 +44,8 @@ bool is_metric_scene(const std::string& path) {
 // The scene of options.scene: a metric scene at --config, else an Alex scene. Errors in d.
 std::optional<scene::Scene> load_scene(const SceneOptions& options, Diagnostics& d, std::ostream& err) {
     if (is_metric_scene(options.scene)) {
-        // A metric scene is analysed at a configuration, as the Alex scene --emit-def would write.
-        auto scene = metric_scene_at(options.scene, options.config.value_or(""), d);
+        // A metric scene is analysed at a configuration, as the Alex scene --emit-def writes it.
+        auto scene = bridge::read_scene_at_config(options.scene, options.config.value_or(""), d);
         if (scene && !d.items().empty()) {
             d.print(err);  // warnings (e.g. a contact an Alex scene cannot state)
             d = Diagnostics{};
