@@ -2,6 +2,7 @@
 // status: 0 success, 2 bad input, 1 internal error (STYLE.md section 6).
 #include "qm/assert.hpp"
 #include "draw_command.hpp"
+#include "envision_command.hpp"
 #include "explore_command.hpp"
 #include "metric_command.hpp"
 #include "run_command.hpp"
@@ -16,6 +17,7 @@ namespace {
 constexpr const char* usage =
     "usage: qm-atms SCENE.def [options]          analyse a scene (thesis chapters 6-7)\n"
     "       qm-atms run PROGRAM.rules [--why 'FACT'] [--json]\n"
+    "       qm-atms envision METRIC-SCENE [options]    the envisionment of a mechanism (thesis chapters 8-9)\n"
     "       qm-atms --help\n";
 
 }  // namespace
@@ -30,12 +32,16 @@ int main(int argc, char** argv) {
         }
         if (args[0] == "--help" || args[0] == "-h") {
             std::cout << usage << '\n' << qm::cli::scene_usage() << '\n' << qm::cli::metric_usage() << qm::cli::draw_usage()
-                      << qm::cli::explore_usage() << '\n' << qm::cli::run_usage();
+                      << qm::cli::explore_usage() << '\n' << qm::cli::envision_usage() << '\n' << qm::cli::run_usage();
             return 0;
         }
         if (args[0] == "run") {
             doing = "running " + (args.size() > 1 ? args[1] : std::string("a rule program"));
             return qm::cli::run_command(std::span<const std::string>(args).subspan(1), std::cout, std::cerr);
+        }
+        if (args[0] == "envision") {  // the envisioner (cli/envision_command.hpp)
+            doing = "envisioning " + (args.size() > 1 ? args[1] : std::string("a metric scene"));
+            return qm::cli::envision_command(std::span<const std::string>(args).subspan(1), std::cout, std::cerr);
         }
         if (args[0] == "draw" || args[0] == "explore") {  // pictures of metric scenes (cli/draw_command.hpp, explore_command.hpp)
             doing = "drawing " + (args.size() > 1 ? args[1] : std::string("a metric scene"));

@@ -355,6 +355,24 @@ void register_qualitative_builtins(BuiltinRegistry& r) {
         }
         return BuiltinResult::of(v.direction(out));
     });
+    // Section 2.3: "we resolve this ambiguity by branching": every definite direction a `?` of the
+    // argument may stand for (each `?` replaced by +, 0 and - in turn); a definite direction is its
+    // own only resolution. At most 8 components (3^8 directions), as `translations`.
+    r.add("resolutions", K::function, 1, 1, [](ValueTable& v, Args a) {
+        const Value& d = v.value(a[0]);
+        if (d.kind != ValueKind::direction) return BuiltinResult::fail("'resolutions' expects a direction, not " + v.print(a[0]));
+        if (d.text.size() > 8) return BuiltinResult::fail("'resolutions' takes directions of at most 8 components");
+        std::vector<std::string> out{""};
+        for (char c : d.text) {
+            std::vector<std::string> next;
+            for (const auto& prefix : out)
+                for (char s : c == '?' ? std::string("+0-") : std::string(1, c)) next.push_back(prefix + s);
+            out = std::move(next);
+        }
+        std::vector<ValueId> elements;
+        for (const auto& x : out) elements.push_back(v.direction(x));
+        return BuiltinResult::of(v.set(std::move(elements)));
+    });
     r.add("set-add", K::function, 2, 2, [](ValueTable& v, Args a) {
         const Value& s = v.value(a[0]);
         if (s.kind != ValueKind::set) return BuiltinResult::fail("'set-add' expects a set first, not " + v.print(a[0]));

@@ -75,11 +75,13 @@ Eigen::Vector2d FclPairOracle::free_normal(const Eigen::Vector2d& q) const {
     return exact_free_normal(part(0), part(1), q);
 }
 
-std::string FclPairOracle::fingerprint() const {
+std::string FclPairOracle::fingerprint() const { return fingerprint_of(part(0), part(1), chordal_tolerance_); }
+
+std::string FclPairOracle::fingerprint_of(const Part& a, const Part& b, double chordal_tolerance) {
     std::ostringstream os;
-    os << std::hexfloat << "fcl-pair/1 chordal " << chordal_tolerance_ << '\n'
-       << geometry::fingerprint(part(0)) << '\n'
-       << geometry::fingerprint(part(1));
+    os << std::hexfloat << "fcl-pair/1 chordal " << chordal_tolerance << '\n'
+       << geometry::fingerprint(a) << '\n'
+       << geometry::fingerprint(b);
     return os.str();
 }
 

@@ -30,6 +30,9 @@ public:
     [[nodiscard]] bool blocked(const Eigen::Vector2d& q) const override;
     [[nodiscard]] Eigen::Vector2d free_normal(const Eigen::Vector2d& q) const override;
     [[nodiscard]] std::string fingerprint() const override;
+    // The fingerprint of the oracle these arguments would build, without building its meshes (a
+    // place cache can be consulted before paying for them).
+    [[nodiscard]] static std::string fingerprint_of(const Part& a, const Part& b, double chordal_tolerance);
     // FCL's distance between the placed parts when apart; -1 when FCL reports a collision (a
     // mesh pair gives no penetration depth, only the sign).
     [[nodiscard]] double signed_distance(const Eigen::Vector2d& q) const;

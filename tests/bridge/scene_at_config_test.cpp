@@ -63,33 +63,29 @@ void check_invariants(const s::Scene& scene) {
         for (s::SurfaceId id : scene.objects[s::ObjectId{i}].surfaces) CHECK(scene.surfaces[id].object == s::ObjectId{i});
 }
 
-// Configurations that put parts in contact: for every pair, a coordinate of its first part, then the
-// second part turned or slid (bisection on the pair's FCL distance) until they touch.
-std::vector<g::Configuration> touching_configurations(const g::Mechanism& m, int per_pair, std::mt19937& rng) {
+// Configurations that put one pair's parts in contact: a coordinate of its first part, then the
+// second part turned or slid (bisection on the pair's FCL distance) until they touch; the other
+// parts stay as drawn (where they may overlap: a clock's gears are drawn unmeshed).
+std::vector<g::Configuration> touching_configurations(const g::Mechanism& m, const g::PairSpec& pair, int count, std::mt19937& rng) {
     std::vector<g::Configuration> out;
-    g::Configuration drawn{std::vector<double>(m.parts.size(), 0.0)};
-    out.push_back(drawn);
-    for (const auto& pair : g::kinematic_pairs(m).modelled) {
-        const auto oracle = g::pair_oracle(m, pair);
-        const auto request = g::place_request(m, pair);
-        const auto& ax = request.cspace.axes;
-        std::uniform_real_distribution<double> u0(ax[0].lo, ax[0].hi), u1(ax[1].lo, ax[1].hi);
-        int found = 0;
-        for (int k = 0; k < per_pair * 50 && found < per_pair; ++k) {
-            Eigen::Vector2d free{u0(rng), u1(rng)}, blocked{free[0], u1(rng)};
-            if (oracle->blocked(free) || !oracle->blocked(blocked)) continue;
-            for (int i = 0; i < 60; ++i) {
-                const Eigen::Vector2d mid = (free + blocked) / 2;
-                (oracle->blocked(mid) ? blocked : free) = mid;
-            }
-            g::Configuration q = drawn;
-            for (std::uint32_t p = 0; p < m.parts.size(); ++p) {
-                if (m.same_shaft(g::PartId{p}, pair.a)) q.q[p] = free[0];
-                if (m.same_shaft(g::PartId{p}, pair.b)) q.q[p] = free[1];
-            }
-            out.push_back(q);
-            ++found;
+    const g::Configuration drawn{std::vector<double>(m.parts.size(), 0.0)};
+    const auto oracle = g::pair_oracle(m, pair);
+    const auto request = g::place_request(m, pair);
+    const auto& ax = request.cspace.axes;
+    std::uniform_real_distribution<double> u0(ax[0].lo, ax[0].hi), u1(ax[1].lo, ax[1].hi);
+    for (int k = 0; k < count * 50 && static_cast<int>(out.size()) < count; ++k) {
+        Eigen::Vector2d free{u0(rng), u1(rng)}, blocked{free[0], u1(rng)};
+        if (oracle->blocked(free) || !oracle->blocked(blocked)) continue;
+        for (int i = 0; i < 60; ++i) {
+            const Eigen::Vector2d mid = (free + blocked) / 2;
+            (oracle->blocked(mid) ? blocked : free) = mid;
         }
+        g::Configuration q = drawn;
+        for (std::uint32_t p = 0; p < m.parts.size(); ++p) {
+            if (m.same_shaft(g::PartId{p}, pair.a)) q.q[p] = free[0];
+            if (m.same_shaft(g::PartId{p}, pair.b)) q.q[p] = free[1];
+        }
+        out.push_back(q);
     }
     return out;
 }
@@ -102,11 +98,15 @@ TEST_CASE("bridge/scene_at_config: every bundled metric scene, as drawn and touc
     for (const std::string& path : bundled_metric_scenes()) {
         CAPTURE(path);
         const g::Mechanism m = read(path);
-        const qm::bridge::SceneAtConfig at(m);
-        for (const g::Configuration& q : touching_configurations(m, 2, rng)) {
+        // Every pair as drawn, and each pair alone at configurations where it touches.
+        std::vector<std::pair<qm::bridge::SceneAtConfig, g::Configuration>> cases;
+        cases.emplace_back(qm::bridge::SceneAtConfig(m), g::Configuration{std::vector<double>(m.parts.size(), 0.0)});
+        for (const g::PairSpec& pair : g::kinematic_pairs(m).modelled)
+            for (g::Configuration& q : touching_configurations(m, pair, 2, rng)) cases.emplace_back(qm::bridge::SceneAtConfig(m, {pair}), std::move(q));
+        for (const auto& [at, q] : cases) {
             qm::Diagnostics d;
             const auto scene = at.at(q, d);
-            if (!scene) continue;  // parts overlapping by more than the tolerance at a bisected point
+            if (!scene) continue;  // parts overlapping by more than the tolerance (as drawn, or at a bisected point)
             ++scenes;
             check_invariants(*scene);
             std::string errors;

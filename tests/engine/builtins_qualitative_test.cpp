@@ -227,6 +227,34 @@ TEST_CASE("engine/builtins_qualitative: components of a direction") {
     CHECK(!apply("components", {values.integer(2)}).error.empty());
 }
 
+TEST_CASE("engine/builtins_qualitative: resolutions are exactly the definite directions a sum with `?` may stand for") {
+    // The resolutions of qsum(a, b) are exactly the sign vectors of sums of numbers with a's and b's
+    // signs (section 2.3).
+    std::mt19937 rng(11);
+    const std::string signs = "+0-";
+    for (char a0 : signs)
+        for (char a1 : signs)
+            for (char b0 : signs)
+                for (char b1 : signs) {
+                    const ValueId sum = *apply("qsum", {dir({a0, a1}), dir({b0, b1})}).value;
+                    const Value& set = values.value(*apply("resolutions", {sum}).value);
+                    std::set<std::string> listed, sampled;
+                    for (ValueId x : set.elements) listed.insert(values.value(x).text);
+                    // Small whole magnitudes, so that opposite terms can balance exactly (a `?` may be 0).
+                    std::uniform_int_distribution<int> magnitude(1, 3);
+                    auto term = [&](char s) { return s == '+' ? magnitude(rng) : s == '-' ? -magnitude(rng) : 0; };
+                    for (int i = 0; i < 400; ++i) {
+                        const int y0 = term(a0) + term(b0), y1 = term(a1) + term(b1);
+                        sampled.insert(std::string{sign_of(y0), sign_of(y1)});
+                    }
+                    CHECK(listed == sampled);
+                }
+    CHECK(text(apply("resolutions", {dir("+0")})) == "{(+ 0)}");
+    CHECK(values.value(*apply("resolutions", {dir("????????")}).value).elements.size() == 6561);
+    CHECK(!apply("resolutions", {dir("?????????")}).error.empty());
+    CHECK(!apply("resolutions", {values.symbol("x")}).error.empty());
+}
+
 namespace {
 // The former implementation of nearness, kept as the oracle: Def 38 for a definite v, and for an
 // ambiguous v the minimum over the explicit list of its 3^k resolutions.

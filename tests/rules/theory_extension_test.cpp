@@ -20,8 +20,8 @@ fs::path copy_rules(const std::string& name) {
     const fs::path dir = fs::path(QM_BINARY_DIR) / ("rules_copy_" + name);
     fs::remove_all(dir);
     fs::create_directories(dir);
-    for (const auto& e : fs::directory_iterator(fs::path(QM_SOURCE_DIR) / "rules"))
-        fs::copy_file(e.path(), dir / e.path().filename());
+    // Recursive: the envisioner's laws live in rules/clock/, and a copy must carry the whole theory.
+    fs::copy(fs::path(QM_SOURCE_DIR) / "rules", dir, fs::copy_options::recursive);
     return dir;
 }
 

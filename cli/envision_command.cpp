@@ -1,0 +1,284 @@
+// cli/envision_command.cpp: `qm-atms envision` (docs/ENVISION.md).
+#include "envision_command.hpp"
+#include "pair_places.hpp"
+#include "rules_location.hpp"
+
+#include "envision/envisionment.hpp"
+#include "envision/behaviour_query.hpp"
+#include "envision/dot_printer.hpp"
+#include "envision/json_printer.hpp"
+#include "envision/state_query.hpp"
+#include "envision/state_report.hpp"
+#include "envision/table_printer.hpp"
+#include "envision/text_printer.hpp"
+#include "envision/why_not.hpp"
+#include "geometry/metric_scene_parser.hpp"
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <cstdio>
+#include <optional>
+#include <sstream>
+#include <unistd.h>
+
+namespace qm::cli {
+namespace g = qm::geometry;
+namespace ev = qm::envision;
+
+namespace {
+
+struct Options {
+    std::string scene;
+    bool table = false, json = false, stats = false, use_cache = true;
+    std::size_t max_states = 1'000'000;
+    std::optional<std::filesystem::path> cache, rules;
+    std::vector<std::string> without;
+    std::optional<std::string> next, previous, from, path, why_not;
+    std::vector<std::string> avoid;
+    std::optional<std::filesystem::path> dot, svg;
+};
+
+int usage_error(std::ostream& err, const std::string& what) {
+    err << "qm-atms: " << what << "\n" << envision_usage();
+    return 2;
+}
+
+std::optional<std::size_t> count_of(const std::string& s) {
+    if (s.empty() || s.size() > 12 || s.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+    return static_cast<std::size_t>(std::stoull(s));
+}
+
+// `Force PART [CAUSE]`, located in the option's text on error.
+std::optional<bridge::ForceRef> parse_without(const g::Mechanism& m, const std::string& text, Diagnostics& diags) {
+    std::vector<std::pair<std::string, std::size_t>> words;
+    for (std::size_t i = 0; i < text.size();) {
+        while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+        const std::size_t start = i;
+        while (i < text.size() && !std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+        if (i > start) words.emplace_back(text.substr(start, i - start), start + 1);
+    }
+    auto error = [&](std::size_t column, const std::string& message) {
+        diags.error({"--without", 1, static_cast<std::uint32_t>(column)}, message, text);
+        return std::nullopt;
+    };
+    auto lower = [](std::string s) {
+        for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        return s;
+    };
+    if (words.empty() || lower(words[0].first) != "force")
+        return error(words.empty() ? 1 : words[0].second, "expected 'Force PART [CAUSE]' (an external force to take away)");
+    if (words.size() < 2 || words.size() > 3) return error(words[0].second, "expected 'Force PART [CAUSE]': a part, and optionally a cause");
+    const auto part = m.find_part(lower(words[1].first));
+    if (!part) return error(words[1].second, "unknown part '" + words[1].first + "'");
+    bridge::ForceRef ref{*part, std::nullopt};
+    bool any = false, cause_found = false;
+    for (const auto& f : m.forces) {
+        if (f.part != *part) continue;
+        any = true;
+        cause_found = cause_found || (words.size() == 3 && f.cause == lower(words[2].first));
+    }
+    if (!any) return error(words[1].second, "no external force acts on '" + words[1].first + "'");
+    if (words.size() == 3) {
+        if (!cause_found) return error(words[2].second, "no force of cause '" + words[2].first + "' acts on '" + words[1].first + "'");
+        ref.cause = lower(words[2].first);
+    }
+    return ref;
+}
+
+// A progress bar on stderr, once the run has taken a second, only when stderr is a terminal.
+class ProgressBar {
+public:
+    ProgressBar() : start_(std::chrono::steady_clock::now()), on_(isatty(STDERR_FILENO) == 1) {}
+    ~ProgressBar() {
+        if (drawn_) std::fprintf(stderr, "\r%-78s\r", "");
+    }
+    void operator()(const ev::Progress& p) {
+        if (!on_ || std::chrono::steady_clock::now() - start_ < std::chrono::seconds(1)) return;
+        drawn_ = true;
+        if (p.total == 0) {
+            std::fprintf(stderr, "\r%-40s %zu", p.phase.c_str(), p.done);
+        } else {
+            const int width = 30, filled = static_cast<int>(width * p.done / p.total);
+            std::fprintf(stderr, "\r%-32s [%s%s] %zu/%zu", p.phase.c_str(), std::string(static_cast<std::size_t>(filled), '#').c_str(),
+                         std::string(static_cast<std::size_t>(width - filled), ' ').c_str(), p.done, p.total);
+        }
+        std::fflush(stderr);
+    }
+
+private:
+    std::chrono::steady_clock::time_point start_;
+    bool on_ = false, drawn_ = false;
+};
+
+// Writes text to path whole, or not at all (a file beside it, renamed).
+bool write_whole(const std::filesystem::path& path, const std::string& text, std::ostream& err) {
+    const std::filesystem::path part = path.string() + ".part";
+    {
+        std::ofstream os(part);
+        os << text;
+        if (!os) {
+            err << "qm-atms: cannot write '" << path.string() << "'\n";
+            return false;
+        }
+    }
+    std::error_code ec;
+    std::filesystem::rename(part, path, ec);
+    if (ec) err << "qm-atms: cannot write '" << path.string() << "': " << ec.message() << '\n';
+    return !ec;
+}
+
+// The graph rendered by Graphviz's `dot`, when it is installed.
+bool render_svg(const std::filesystem::path& path, const std::string& graph, std::ostream& err) {
+    if (std::system("command -v dot >/dev/null 2>&1") != 0) {
+        err << "qm-atms: --svg needs Graphviz's `dot`, which is not installed: write the graph with --dot FILE and render it with "
+               "`dot -Tsvg FILE -o OUT.svg` where Graphviz is\n";
+        return false;
+    }
+    const std::filesystem::path input = path.string() + ".dot.part", output = path.string() + ".part";
+    if (!write_whole(input, graph, err)) return false;
+    const std::string command = "dot -Tsvg '" + input.string() + "' -o '" + output.string() + "'";
+    const int status = std::system(command.c_str());
+    std::filesystem::remove(input);
+    if (status != 0) {
+        err << "qm-atms: `dot` failed to render '" << path.string() << "'\n";
+        std::filesystem::remove(output);
+        return false;
+    }
+    std::error_code ec;
+    std::filesystem::rename(output, path, ec);
+    return !ec;
+}
+
+// --next, --previous, --path, --why-not: each answered in turn; 2 after a bad question.
+int answer_questions(const Options& o, const g::Mechanism& m, const ev::Envisionment& e, const ev::EnvisionOptions& options,
+                     std::ostream& text, Diagnostics& diags) {
+    for (const auto& [option, value] : {std::pair{"--next", o.next}, std::pair{"--previous", o.previous}}) {
+        if (!value) continue;
+        const auto s = ev::find_state(e, *value, option, diags);
+        if (!s) return 2;
+        if (std::string(option) == "--next") {
+            if (!ev::write_next(text, m, e, *s, options, diags)) return 2;
+        } else {
+            ev::write_previous(text, e, *s);
+        }
+    }
+    if (o.path) {
+        const auto b = ev::parse_behaviour(e, *o.path, "--path", o.avoid, diags);
+        if (!b) return 2;
+        ev::write_behaviour(text, e, *b, ev::find_behaviour(e, *b));
+    }
+    if (o.why_not && !ev::write_why_not(text, m, e, options, *o.why_not, diags)) return 2;
+    return 0;
+}
+
+}  // namespace
+
+const char* envision_usage() noexcept {
+    return "       qm-atms envision METRIC-SCENE [--table | --json] [--max-states N] [--without 'Force PART [CAUSE]']...\n"
+           "                        [--from STATE] [--next STATE] [--previous STATE] [--path 'DESC; DESC; ...' [--avoid 'DESC']...]\n"
+           "                        [--why-not 'STATE -> STATE'] [--dot FILE] [--svg FILE]\n"
+           "                        [--cache DIR | --no-cache] [--rules DIR] [--stats]\n"
+           "                                                  the envisionment: states, transitions, cycles (docs/ENVISION.md)\n";
+}
+
+int envision_command(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
+    if (args.empty()) return usage_error(err, "envision takes a metric scene");
+    Options o;
+    o.scene = args[0];
+    for (std::size_t i = 1; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        const bool has_value = i + 1 < args.size();
+        if (a == "--table") o.table = true;
+        else if (a == "--json") o.json = true;
+        else if (a == "--stats") o.stats = true;
+        else if (a == "--no-cache") o.use_cache = false;
+        else if (a == "--cache" && has_value) o.cache = args[++i];
+        else if (a == "--rules" && has_value) o.rules = args[++i];
+        else if (a == "--without" && has_value) o.without.push_back(args[++i]);
+        else if (a == "--next" && has_value) o.next = args[++i];
+        else if (a == "--previous" && has_value) o.previous = args[++i];
+        else if (a == "--from" && has_value) o.from = args[++i];
+        else if (a == "--path" && has_value) o.path = args[++i];
+        else if (a == "--avoid" && has_value) o.avoid.push_back(args[++i]);
+        else if (a == "--why-not" && has_value) o.why_not = args[++i];
+        else if (a == "--dot" && has_value) o.dot = args[++i];
+        else if (a == "--svg" && has_value) o.svg = args[++i];
+        else if (a == "--max-states" && has_value) {
+            const auto n = count_of(args[++i]);
+            if (!n || *n == 0) return usage_error(err, "--max-states takes a positive whole number, not '" + args[i] + "'");
+            o.max_states = *n;
+        } else {
+            return usage_error(err, "unknown or incomplete option '" + a + "' for envision");
+        }
+    }
+    if (o.table && o.json) return usage_error(err, "--table and --json are two different outputs: give one");
+    if (!o.avoid.empty() && !o.path) return usage_error(err, "--avoid goes with --path");
+    Diagnostics diags;
+    const auto m = g::read_mechanism_file(o.scene, diags);
+    if (!m) {
+        diags.print(err);
+        return 2;
+    }
+    ev::EnvisionOptions options;
+    for (const auto& w : o.without)
+        if (auto ref = parse_without(*m, w, diags)) options.without.push_back(*ref);
+    if (diags.has_errors()) {
+        diags.print(err);
+        return 2;
+    }
+    if (o.rules) {
+        options.rules = *o.rules;
+    } else if (const auto dir = default_rules_directory()) {
+        options.rules = *dir / "clock";
+    } else {
+        return usage_error(err, "cannot find the laws (rules/clock): give --rules DIR or set QM_ATMS_RULES");
+    }
+    const std::optional<g::PlaceCache> cache = open_place_cache(o.use_cache, o.cache);
+    options.cache = cache ? &*cache : nullptr;
+    options.max_states = o.max_states;
+    std::optional<ev::Envisionment> e;
+    {
+        ProgressBar bar;
+        options.progress = [&bar](const ev::Progress& p) { bar(p); };
+        e = ev::envision(*m, options, diags);
+    }
+    diags.print(err);
+    if (!e || diags.has_errors()) return 2;
+    std::ostringstream text;
+    if (o.next || o.previous || o.path || o.why_not) {
+        const int status = answer_questions(o, *m, *e, options, text, diags);
+        diags.print(err);
+        if (status != 0) return status;
+        out << text.str();
+        return 0;
+    }
+    if (o.from) {
+        const auto s = ev::find_state(*e, *o.from, "--from", diags);
+        if (!s) {
+            diags.print(err);
+            return 2;
+        }
+        ev::restrict_to_reachable(*e, s->chain, s->state);
+    }
+    if (o.dot || o.svg) {
+        std::ostringstream graph;
+        ev::write_dot(graph, *e);
+        if (o.dot && !write_whole(*o.dot, graph.str(), err)) return 2;
+        if (o.svg && !render_svg(*o.svg, graph.str(), err)) return 2;
+    }
+    if (o.json) ev::write_json(text, *m, *e);
+    else if (o.table) ev::write_table(text, *m, *e);
+    else ev::write_text(text, *m, *e);
+    out << text.str();
+    if (o.stats) {
+        err << "places: " << e->seconds_places << " s\n";
+        for (const auto& c : e->chains)
+            err << "chain " << c.chain.index + 1 << ": states " << c.seconds_states << " s, transitions " << c.seconds_transitions
+                << " s, nogoods " << c.nogoods << '\n';
+    }
+    return 0;
+}
+
+}  // namespace qm::cli

@@ -1,0 +1,22 @@
+// cli/envision_command.hpp
+// Provides:   `qm-atms envision MECH.def [options]`, the Clock envisioner at the command line
+//             (docs/ENVISION.md): every mechanical state and transition of each kinematic chain of a
+//             metric mechanism (docs/METRIC_SCENE_FORMAT.md), as text, as the transition table of the
+//             thesis' Appendices A-D (--table), or as JSON (--json, schema qm-envisionment/1).
+//             Options: --max-states N (default 1000000), --without 'Force PART [CAUSE]' (repeatable),
+//             --cache DIR | --no-cache (place vocabularies), --rules DIR (the laws; default the
+//             rules/clock folder beside the other laws), --stats (timings on stderr).
+// Errors:     bad input (the scene, the options, the laws' files, too many states) is reported on
+//             `err` as `file:line:col: error: ...` and the command returns 2, having written nothing
+//             on `out`. A progress bar goes to stderr when it is a terminal and the run takes more
+//             than a second. qm::InternalError propagates to main (exit 1).
+#pragma once
+#include <ostream>
+#include <span>
+#include <string>
+
+namespace qm::cli {
+// args: the arguments after `envision`.
+[[nodiscard]] int envision_command(std::span<const std::string> args, std::ostream& out, std::ostream& err);
+[[nodiscard]] const char* envision_usage() noexcept;
+}  // namespace qm::cli

@@ -1,0 +1,46 @@
+// envision/chain_tables.cpp
+#include "envision/chain_tables.hpp"
+#include <algorithm>
+
+namespace qm::envision {
+
+std::optional<How> how_of(std::string_view word) noexcept {
+    if (word == "stay") return How::stay;
+    if (word == "move") return How::move;
+    if (word == "wrap") return How::wrap;
+    return std::nullopt;
+}
+
+const char* to_string(How h) noexcept {
+    switch (h) {
+        case How::stay: return "stay";
+        case How::move: return "move";
+        case How::wrap: return "wrap";
+    }
+    return "?";
+}
+
+void ChainTables::add_arrival(std::size_t pair, geometry::PlaceId place, How how, geometry::QualDirection v,
+                              geometry::QualDirection after) {
+    auto& list = arrival_[{pair, place.value, how, v}];
+    if (std::find(list.begin(), list.end(), after) == list.end()) {
+        list.push_back(after);
+        std::sort(list.begin(), list.end());
+    }
+}
+
+const std::vector<geometry::QualDirection>& ChainTables::arrival(std::size_t pair, geometry::PlaceId place, How how,
+                                                                 geometry::QualDirection v) const {
+    static const std::vector<geometry::QualDirection> none;
+    const auto it = arrival_.find({pair, place.value, how, v});
+    return it == arrival_.end() ? none : it->second;
+}
+
+bool ChainTables::ranks_complete() const {
+    for (const auto& row : rank_)
+        for (int r : row)
+            if (r < 0) return false;
+    return true;
+}
+
+}  // namespace qm::envision

@@ -1,0 +1,13 @@
+// envision/dot_printer.hpp
+// Provides:   write_dot(), the envisionment as a Graphviz digraph (issue 16 item 1, --dot), drawn as
+//             the thesis' Figures 9.21-9.24 group it: each behavioural cycle a cluster, terminal
+//             states doubled, transitions over an instant dashed, collisions red, changes of motion
+//             by force blue, changes of place black.
+// Ownership:  writes to the stream given.
+#pragma once
+#include "envision/envisionment.hpp"
+#include <ostream>
+
+namespace qm::envision {
+void write_dot(std::ostream& os, const Envisionment& e);
+}

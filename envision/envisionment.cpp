@@ -1,0 +1,126 @@
+// envision/envisionment.cpp: the envisioner's pipeline (thesis Figures 8.1, 8.4, 8.5).
+#include "envision/envisionment.hpp"
+#include "envision/behaviour_query.hpp"
+#include "envision/pair_places.hpp"
+#include "envision/state_dynamics.hpp"
+#include "envision/state_space.hpp"
+#include "envision/successors.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <thread>
+
+namespace qm::envision {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Every state's transitions (Figure 8.5). One engine per state, its forces and motions premises.
+// (One engine per place vector with its states as contexts was measured slower: the contexts'
+// labels cost more than the engines, docs/PERFORMANCE.md.) The states are independent: workers
+// take them in turn, each with its own engines and diagnostics; the results are put in state order.
+bool find_transitions(const Laws& laws, const geometry::Mechanism& m, const Envisionment& e, ChainEnvisionment& c,
+                      const ChainTables& tables, const EnvisionOptions& options, const std::string& phase, Diagnostics& diagnostics) {
+    const std::size_t n = c.states.size();
+    std::vector<std::vector<Transition>> out(n);
+    std::vector<std::vector<std::int8_t>> net(n);
+    std::atomic<std::size_t> next{0}, done{0};
+    std::atomic<bool> failed{false};
+    const unsigned workers = std::max(1u, std::min<unsigned>(options.threads, static_cast<unsigned>(std::max<std::size_t>(1, n / 64))));
+    std::vector<Diagnostics> reported(workers);
+    auto work = [&](unsigned w) {
+        for (std::size_t i = next++; i < n && !failed; i = next++) {
+            const StateId id{static_cast<std::uint32_t>(i)};
+            const State* const only[] = {&c.states[id]};
+            PlaceVectorEngine engine(laws, m, e.pairs, c.chain, only, options.without, /*labelled=*/false);
+            const auto env = engine.run(0, reported[w]);
+            const auto dynamics = env ? read_dynamics(engine.engine(), *env, m, e.pairs, c.chain, reported[w]) : std::nullopt;
+            if (!dynamics) {
+                failed = true;
+                return;
+            }
+            net[i] = dynamics->net_force;
+            out[i] = successors(id, c.states, c.chain, e.pairs, tables, *dynamics);
+            const std::size_t finished = ++done;
+            if (w == 0 && options.progress && finished % 16 == 0) options.progress({phase, finished, n});
+        }
+    };
+    std::vector<std::thread> threads;
+    for (unsigned w = 1; w < workers; ++w) threads.emplace_back(work, w);
+    work(0);
+    for (auto& t : threads) t.join();
+    for (const auto& r : reported)
+        for (const auto& d : r.items()) diagnostics.add(d);
+    if (failed) return false;
+    for (std::size_t i = 0; i < n; ++i) {
+        c.states[StateId{static_cast<std::uint32_t>(i)}].net_force = std::move(net[i]);
+        c.transitions.insert(c.transitions.end(), out[i].begin(), out[i].end());
+    }
+    return true;
+}
+
+}  // namespace
+
+std::optional<Envisionment> envision(const geometry::Mechanism& m, const EnvisionOptions& options, Diagnostics& diagnostics) {
+    const auto laws = Laws::load(options.rules, diagnostics);
+    if (!laws) return std::nullopt;
+    Envisionment e;
+    e.mechanism = m.name;
+    for (const auto& part : m.parts) e.parts.push_back(part.name);
+    auto t0 = std::chrono::steady_clock::now();
+    if (options.progress) options.progress({"place vocabularies", 0, 0});
+    auto pairs = load_pair_places(m, options.cache, diagnostics);
+    if (!pairs) return std::nullopt;
+    e.pairs = std::move(*pairs);
+    e.seconds_places = seconds_since(t0);
+    std::size_t budget = options.max_states;
+    for (auto& chain : kinematic_chains(m, e.pairs)) {
+        ChainEnvisionment c;
+        c.chain = std::move(chain);
+        t0 = std::chrono::steady_clock::now();
+        auto space = enumerate_states(*laws, m, e.pairs, c.chain, budget, options.progress, diagnostics);
+        if (!space) return std::nullopt;
+        budget -= space->states.size();
+        c.states = StateIndex(std::move(space->states));
+        c.nogoods = space->nogoods;
+        c.seconds_states = seconds_since(t0);
+        t0 = std::chrono::steady_clock::now();
+        const std::string phase = "chain " + std::to_string(c.chain.index + 1) + ": transitions";
+        if (!find_transitions(*laws, m, e, c, space->tables, options, phase, diagnostics)) return std::nullopt;
+        c.seconds_transitions = seconds_since(t0);
+        c.tables = std::move(space->tables);
+        c.graph = behaviour_graph(c.states.size(), c.transitions);
+        e.chains.push_back(std::move(c));
+    }
+    return e;
+}
+
+std::size_t ChainEnvisionment::shown_count() const {
+    return shown.empty() ? states.size() : static_cast<std::size_t>(std::count(shown.begin(), shown.end(), true));
+}
+
+void restrict_to_reachable(Envisionment& e, std::size_t chain, StateId from) {
+    ChainEnvisionment c = std::move(e.chains[chain]);
+    c.shown = reachable_from(c, from);
+    std::erase_if(c.transitions, [&](const Transition& t) { return !c.shown[t.from.value]; });
+    // The reachable set is closed under transitions: its cycles are whole components of the graph.
+    std::erase_if(c.graph.cycles, [&](const std::vector<StateId>& cycle) { return !c.shown[cycle.front().value]; });
+    std::erase_if(c.graph.terminal, [&](StateId s) { return !c.shown[s.value]; });
+    e.chains.clear();
+    e.chains.push_back(std::move(c));
+}
+
+std::string state_name(const Envisionment& e, const ChainEnvisionment& c, StateId s) {
+    const State& state = c.states[s];
+    std::string out;
+    for (std::size_t k = 0; k < c.chain.pairs.size(); ++k)
+        out += (k ? " " : "") + e.pairs[c.chain.pairs[k]].name + "-" + std::to_string(state.places[k].value);
+    for (const auto m : state.motions) out += std::string(" ") + sign_word(m);
+    return out;
+}
+
+}  // namespace qm::envision

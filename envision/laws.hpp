@@ -1,0 +1,45 @@
+// envision/laws.hpp
+// Provides:   Laws, the envisioner's rule program (every *.rules file directly in a folder, by
+//             default rules/clock/, in name order), read and compiled once, and fresh engines over
+//             it: one for a chain's state space, one per state for its transitions. Each of these
+//             two gets only the rules that can matter for it (engine/program_slice.hpp, with the
+//             facts the bridge gives it and the conclusions the driver reads,
+//             bridge/clock_vocabulary.hpp): a state's engine is small, and it is made hundreds
+//             of times.
+// Ownership:  Laws owns the compiled programs and their pristine value tables; each engine made
+//             gets its own copies, so engines are independent.
+// Errors:     a folder with no .rules file, or rule files with errors: located diagnostics, and
+//             load() returns nothing.
+// Knows nothing of any law: which laws there are is the folder's business.
+#pragma once
+#include "engine/engine.hpp"
+#include "engine/rule_compiler.hpp"
+#include "qm/diagnostics.hpp"
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+
+namespace qm::envision {
+
+class Laws {
+public:
+    [[nodiscard]] static std::optional<Laws> load(const std::filesystem::path& folder, Diagnostics& diagnostics);
+    // Exactly these files (e.g. a folder's files but one, to see what that law changes).
+    [[nodiscard]] static std::optional<Laws> load_files(std::span<const std::string> files, const std::filesystem::path& folder,
+                                                        Diagnostics& diagnostics);
+    // Over every law (for tests and questions about any law).
+    [[nodiscard]] std::unique_ptr<engine::Engine> engine() const;
+    [[nodiscard]] std::unique_ptr<engine::Engine> state_space_engine() const;
+    [[nodiscard]] std::unique_ptr<engine::Engine> state_engine() const;
+    [[nodiscard]] const std::filesystem::path& folder() const noexcept { return folder_; }
+
+private:
+    Laws(engine::LoadedProgram all, engine::LoadedProgram space, engine::LoadedProgram state, std::filesystem::path folder)
+        : all_(std::move(all)), space_(std::move(space)), state_(std::move(state)), folder_(std::move(folder)) {}
+    engine::LoadedProgram all_, space_, state_;
+    std::filesystem::path folder_;
+};
+
+}  // namespace qm::envision

@@ -1,0 +1,198 @@
+// envision/state_space.cpp: states as ATMS interpretations (thesis Def 35, Figure 8.4, 8.2.3).
+#include "envision/state_space.hpp"
+#include "bridge/clock_vocabulary.hpp"
+#include "envision/fact_reader.hpp"
+#include "qm/assert.hpp"
+
+#include <algorithm>
+#include <map>
+
+namespace qm::envision {
+namespace g = qm::geometry;
+namespace v = qm::bridge::clock;
+
+namespace {
+
+// What one assumption of a choice set stands for.
+struct Choice {
+    bool is_place = false;
+    std::size_t index = 0;  // chain pair or chain object
+    std::uint32_t value = 0;  // place id
+    std::int8_t motion = 0;
+};
+
+struct OrderedSets {
+    std::vector<std::vector<atms::AssumptionId>> sets;
+    std::vector<std::vector<Choice>> meaning;  // parallel to sets
+};
+
+// The choice sets of the laws, recognised by what their assumptions stand for, in the order of
+// 8.2.3: each pair's places, then the motions of its parts not chosen yet.
+std::optional<OrderedSets> order_choice_sets(engine::Engine& e, const g::Mechanism& m, std::span<const bridge::PairPlaces> pairs,
+                                             const Chain& chain, Diagnostics& diagnostics) {
+    std::map<std::string, std::size_t> pair_index, object_index;
+    for (std::size_t k = 0; k < chain.pairs.size(); ++k) pair_index[pairs[chain.pairs[k]].name] = k;
+    for (std::size_t k = 0; k < chain.objects.size(); ++k) object_index[m.parts[chain.objects[k]].name] = k;
+    std::vector<std::optional<std::size_t>> place_set(chain.pairs.size()), motion_set(chain.objects.size());
+    const FactReader read(e, std::nullopt);
+    const auto& sets = e.choice_sets();
+    std::vector<std::vector<Choice>> meaning(sets.size());
+    for (std::size_t s = 0; s < sets.size(); ++s) {
+        for (const atms::AssumptionId a : sets[s]) {
+            const auto f = e.fact_of(e.atms().node_of(a));
+            if (!f) continue;
+            const engine::Fact& fact = e.facts().fact(*f);
+            const std::string& predicate = e.values().print(fact.predicate);
+            Choice c;
+            if (predicate == v::at && fact.args.size() == 2 && pair_index.count(read.symbol(fact.args[0]))) {
+                c.is_place = true;
+                c.index = pair_index.at(read.symbol(fact.args[0]));
+                c.value = static_cast<std::uint32_t>(read.integer(fact.args[1]));
+                place_set[c.index] = s;
+            } else if (predicate == v::motion && fact.args.size() == 2 && object_index.count(read.symbol(fact.args[0]))) {
+                c.index = object_index.at(read.symbol(fact.args[0]));
+                c.motion = read.sign(fact.args[1]);
+                motion_set[c.index] = s;
+            } else {
+                break;  // a choice set of some other kind: not the envisioner's
+            }
+            meaning[s].push_back(c);
+        }
+    }
+    OrderedSets out;
+    std::vector<bool> used(sets.size(), false);
+    auto take = [&](std::optional<std::size_t> s) {
+        if (!s || used[*s]) return;
+        used[*s] = true;
+        out.sets.push_back(sets[*s]);
+        out.meaning.push_back(meaning[*s]);
+    };
+    for (std::size_t k = 0; k < chain.pairs.size(); ++k) {
+        if (!place_set[k]) {
+            diagnostics.error({"<envision>", 1, 1}, "the laws give pair " + pairs[chain.pairs[k]].name +
+                                                        " no choice of place: expected a choice set of (at P PLACE) assumptions (rules/clock/states.rules)");
+            return std::nullopt;
+        }
+        take(place_set[k]);
+        const auto& spec = pairs[chain.pairs[k]].spec;
+        for (std::size_t o = 0; o < chain.objects.size(); ++o)
+            if (m.same_shaft(chain.objects[o], spec.a) || m.same_shaft(chain.objects[o], spec.b)) take(motion_set[o]);
+    }
+    for (std::size_t o = 0; o < chain.objects.size(); ++o) {
+        if (!motion_set[o]) {
+            diagnostics.error({"<envision>", 1, 1}, "the laws give part " + m.parts[chain.objects[o]].name +
+                                                        " no choice of motion: expected a choice set of (motion O M) assumptions (rules/clock/states.rules)");
+            return std::nullopt;
+        }
+        take(motion_set[o]);
+    }
+    return out;
+}
+
+void read_tables(engine::Engine& e, std::span<const bridge::PairPlaces> pairs, const Chain& chain, ChainTables& tables) {
+    const FactReader read(e, std::nullopt);
+    std::map<std::string, std::size_t> pair_index;
+    for (std::size_t k = 0; k < chain.pairs.size(); ++k) pair_index[pairs[chain.pairs[k]].name] = k;
+    read.each(v::arrival, 5, [&](std::span<const engine::ValueId> a) {
+        const auto it = pair_index.find(read.symbol(a[0]));
+        const auto how = how_of(read.symbol(a[2]));
+        if (it == pair_index.end() || !how) return;
+        tables.add_arrival(it->second, g::PlaceId{static_cast<std::uint32_t>(read.integer(a[1]))}, *how, read.direction(a[3]),
+                           read.direction(a[4]));
+    });
+    read.each(v::nearness_rank, 3, [&](std::span<const engine::ValueId> a) {
+        tables.set_rank(read.sign(a[0]), read.sign(a[1]), static_cast<int>(read.integer(a[2])));
+    });
+}
+
+bool state_less(const State& x, const State& y) {
+    if (x.places != y.places) return x.places < y.places;
+    return x.motions < y.motions;
+}
+
+}  // namespace
+
+namespace {
+
+std::unique_ptr<engine::Engine> run_laws(const Laws& laws, const g::Mechanism& m, std::span<const bridge::PairPlaces> pairs,
+                                         const Chain& chain, Diagnostics& diagnostics) {
+    auto e = laws.state_space_engine();
+    bridge::assert_parts(*e, m, chain.objects, /*choices=*/true);
+    bridge::assert_linkages(*e, m, chain.objects);
+    bridge::PlaceFactOptions all;
+    all.choice = true;
+    for (const std::size_t k : chain.pairs) bridge::assert_pair(*e, m, pairs[k], all);
+    for (std::size_t i = 0; i < chain.pairs.size(); ++i)
+        for (std::size_t j = i + 1; j < chain.pairs.size(); ++j) bridge::assert_correlation(*e, m, pairs[chain.pairs[i]], pairs[chain.pairs[j]]);
+    const std::size_t before = diagnostics.size();
+    e->run(diagnostics);
+    for (std::size_t i = before; i < diagnostics.size(); ++i)
+        if (diagnostics.items()[i].severity == Severity::error) return nullptr;
+    return e;
+}
+
+}  // namespace
+
+std::optional<StateSpaceEngine> state_space_engine(const Laws& laws, const g::Mechanism& m, std::span<const bridge::PairPlaces> pairs,
+                                                   const Chain& chain, Diagnostics& diagnostics) {
+    auto e = run_laws(laws, m, pairs, chain, diagnostics);
+    if (!e) return std::nullopt;
+    const auto ordered = order_choice_sets(*e, m, pairs, chain, diagnostics);
+    if (!ordered) return std::nullopt;
+    StateSpaceEngine out{std::move(e), std::vector<std::map<std::uint32_t, atms::AssumptionId>>(chain.pairs.size()),
+                         std::vector<std::map<std::int8_t, atms::AssumptionId>>(chain.objects.size())};
+    for (std::size_t k = 0; k < ordered->sets.size(); ++k)
+        for (std::size_t i = 0; i < ordered->sets[k].size(); ++i) {
+            const Choice& c = ordered->meaning[k][i];
+            if (c.is_place) out.place[c.index][c.value] = ordered->sets[k][i];
+            else out.motion[c.index][c.motion] = ordered->sets[k][i];
+        }
+    return out;
+}
+
+std::optional<StateSpace> enumerate_states(const Laws& laws, const g::Mechanism& m, std::span<const bridge::PairPlaces> pairs,
+                                           const Chain& chain, std::size_t max_states, const ProgressFn& progress,
+                                           Diagnostics& diagnostics) {
+    auto e = run_laws(laws, m, pairs, chain, diagnostics);
+    if (!e) return std::nullopt;
+    const auto ordered = order_choice_sets(*e, m, pairs, chain, diagnostics);
+    if (!ordered) return std::nullopt;
+
+    StateSpace out;
+    bool exceeded = false;
+    const std::string phase = "chain " + std::to_string(chain.index + 1) + ": states";
+    e->atms().for_each_interpretation(ordered->sets, e->atms().empty_environment(), [&](const atms::Environment& env) {
+        if (out.states.size() >= max_states) {
+            exceeded = true;
+            return false;
+        }
+        State s;
+        s.places.assign(chain.pairs.size(), g::PlaceId{0});
+        s.motions.assign(chain.objects.size(), 0);
+        for (std::size_t k = 0; k < ordered->sets.size(); ++k)
+            for (std::size_t i = 0; i < ordered->sets[k].size(); ++i)
+                if (env.contains(ordered->sets[k][i])) {
+                    const Choice& c = ordered->meaning[k][i];
+                    if (c.is_place) s.places[c.index] = g::PlaceId{c.value};
+                    else s.motions[c.index] = c.motion;
+                    break;
+                }
+        out.states.push_back(std::move(s));
+        if (progress && out.states.size() % 4096 == 0) progress({phase, out.states.size(), 0});
+        return true;
+    });
+    if (exceeded) {
+        diagnostics.error({m.where.file.empty() ? m.name : m.where.file, m.where.line, m.where.column},
+                          "chain " + std::to_string(chain.index + 1) + " has more than " + std::to_string(max_states) +
+                              " states (the limit of --max-states): nothing was written; raise the limit or simplify the mechanism");
+        return std::nullopt;
+    }
+    std::sort(out.states.begin(), out.states.end(), state_less);
+    read_tables(*e, pairs, chain, out.tables);
+    if (!out.tables.ranks_complete())
+        throw InternalError("the laws rank nearness (nearness-rank H M K) for only some pairs of motions (rules/clock/nearness.rules)");
+    out.nogoods = e->atms().minimal_nogoods().size();
+    return out;
+}
+
+}  // namespace qm::envision

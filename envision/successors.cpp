@@ -1,0 +1,295 @@
+// envision/successors.cpp: hypothesised next states, collisions, consistency along the chain
+// (thesis Figure 8.5 step 1.4, 8.3.3-8.3.5).
+#include "envision/successors.hpp"
+#include "atms/pareto_front.hpp"
+
+#include <algorithm>
+#include <map>
+#include <utility>
+#include "qm/assert.hpp"
+
+namespace qm::envision {
+namespace g = qm::geometry;
+
+namespace {
+
+// A pair whose arrival changes its motion (a collision, the end of an axis): the motions its two
+// parts may have after, each a branch of its own (5.3.3: no two collisions at once, each outcome
+// its own history).
+struct Arrival {
+    std::size_t pair = 0;
+    std::vector<g::QualDirection> after;
+};
+
+class Builder {
+public:
+    Builder(StateId from, const StateIndex& states, const Chain& chain, std::span<const bridge::PairPlaces> pairs,
+            const ChainTables& tables)
+        : from_(from), current_(states[from]), states_(states), tables_(tables) {
+        for (const std::size_t k : chain.pairs)
+            parts_.emplace_back(chain.object_index(pairs[k].spec.a), chain.object_index(pairs[k].spec.b));
+    }
+
+    // Only the hypotheses that lead to `target`, and why each fails (for --why-not).
+    void explain(StateId target, const std::vector<std::string>& pair_names, const std::vector<std::string>& object_names) {
+        target_ = target;
+        pair_names_ = pair_names;
+        object_names_ = object_names;
+    }
+    [[nodiscard]] std::vector<std::string> reasons() { return std::exchange(reasons_, {}); }
+
+    void step(const StepOptions& s) {
+        // A pair that may wrap may also stay: both reach the same state, so keep the wrap.
+        std::vector<std::vector<PlaceOption>> places = s.places;
+        if (target_) {
+            const State& t = states_[*target_];
+            for (std::size_t k = 0; k < places.size(); ++k) {
+                std::vector<PlaceOption> to;
+                for (const auto& o : places[k])
+                    if (o.place == t.places[k]) to.push_back(o);
+                if (to.empty()) {
+                    std::string options;
+                    for (const auto& o : places[k]) options += (options.empty() ? "" : ", ") + std::to_string(o.place.value);
+                    reasons_.push_back("pair " + pair_names_[k] + " cannot be at place " + std::to_string(t.places[k].value) +
+                                       " after this step: its next places are " + options);
+                    return;
+                }
+                places[k] = std::move(to);
+            }
+        }
+        for (std::size_t k = 0; k < places.size(); ++k) {
+            auto& opts = places[k];
+            if (std::any_of(opts.begin(), opts.end(), [](const PlaceOption& o) { return o.how == How::wrap; }))
+                opts.erase(std::remove_if(opts.begin(), opts.end(),
+                                          [&](const PlaceOption& o) { return o.how == How::stay && o.place == current_.places[k]; }),
+                           opts.end());
+        }
+        std::vector<PlaceOption> chosen(places.size());
+        combine_places(s, places, 0, chosen);
+    }
+
+    // The transitions one step found (and forgets them).
+    [[nodiscard]] std::map<std::pair<StateId, Duration>, std::uint8_t> take() { return std::exchange(found_, {}); }
+
+private:
+    // One next place per pair (8.3.2: "all combinations of the changes in place").
+    void combine_places(const StepOptions& s, const std::vector<std::vector<PlaceOption>>& places, std::size_t k,
+                        std::vector<PlaceOption>& chosen) {
+        if (k < places.size()) {
+            for (const auto& o : places[k]) {
+                chosen[k] = o;
+                combine_places(s, places, k + 1, chosen);
+            }
+            return;
+        }
+        // Each pair's arrival with each motion the step allows its parts.
+        std::vector<Arrival> arrivals;
+        for (std::size_t p = 0; p < chosen.size(); ++p) {
+            Arrival a{p, {}};
+            bool unchanged = true;
+            for (const auto ma : s.motions[parts_[p].first])
+                for (const auto mb : s.motions[parts_[p].second]) {
+                    const g::QualDirection v{{ma, mb}};
+                    for (const auto after : tables_.arrival(p, chosen[p].place, chosen[p].how, v)) {
+                        unchanged = unchanged && after == v;
+                        if (std::find(a.after.begin(), a.after.end(), after) == a.after.end()) a.after.push_back(after);
+                    }
+                }
+            if (a.after.empty()) {  // the laws give no way on: no such next state
+                if (target_)
+                    reasons_.push_back("pair " + pair_names_[p] + " arriving at place " + std::to_string(chosen[p].place.value) +
+                                       " has no motion to go on with (the laws give no arrival there)");
+                return;
+            }
+            if (!unchanged) arrivals.push_back(std::move(a));
+        }
+        std::vector<g::QualDirection> branch(arrivals.size());
+        choose(s, chosen, arrivals, 0, branch);
+    }
+
+    void choose(const StepOptions& s, const std::vector<PlaceOption>& places, const std::vector<Arrival>& arrivals, std::size_t i,
+                std::vector<g::QualDirection>& branch) {
+        if (i < arrivals.size()) {
+            for (const auto after : arrivals[i].after) {
+                branch[i] = after;
+                choose(s, places, arrivals, i + 1, branch);
+            }
+            return;
+        }
+        settle(s, places, arrivals, branch);
+    }
+
+    // The chain made consistent (8.3.4): among the states with these places, those whose colliding
+    // pairs move as the branch says and whose objects that must change (the current motion is not
+    // among the step's options) take one of their options; of those, the ones no other beats in
+    // nearness to the step's options for every other object at once.
+    void settle(const StepOptions& s, const std::vector<PlaceOption>& places, const std::vector<Arrival>& arrivals,
+                const std::vector<g::QualDirection>& branch) {
+        const std::size_t n = current_.motions.size();
+        std::vector<std::optional<std::int8_t>> fixed(n);
+        for (std::size_t i = 0; i < arrivals.size(); ++i) {
+            const auto [a, b] = parts_[arrivals[i].pair];
+            for (const auto& [o, x] : {std::pair{a, branch[i].s[0]}, std::pair{b, branch[i].s[1]}}) {
+                if (fixed[o] && *fixed[o] != x) return;  // two collisions disagree (5.3.3: never at once)
+                fixed[o] = x;
+            }
+        }
+        if (target_) {
+            const State& t = states_[*target_];
+            for (std::size_t i = 0; i < arrivals.size(); ++i) {
+                const auto [a, b] = parts_[arrivals[i].pair];
+                if (t.motions[a] != branch[i].s[0] || t.motions[b] != branch[i].s[1]) {
+                    reasons_.push_back("arriving at place " + std::to_string(places[arrivals[i].pair].place.value) + ", pair " +
+                                       pair_names_[arrivals[i].pair] + " moves on with " + g::to_string(branch[i]) +
+                                       " in this outcome, not with the target's motions");
+                    return;
+                }
+            }
+        }
+        std::vector<bool> must(n, false);
+        for (std::size_t o = 0; o < n; ++o)
+            must[o] = std::find(s.motions[o].begin(), s.motions[o].end(), current_.motions[o]) == s.motions[o].end();
+        bool wraps = false;
+        std::uint8_t causes = s.cause | (arrivals.empty() ? 0 : Cause::collision);
+        std::vector<g::PlaceId> target;
+        for (std::size_t k = 0; k < places.size(); ++k) {
+            wraps = wraps || places[k].how == How::wrap;
+            if (places[k].place != current_.places[k] || places[k].how == How::wrap) causes |= Cause::kinematic;
+            target.push_back(places[k].place);
+        }
+        std::vector<StateId> candidates;
+        std::vector<std::vector<int>> ranks;
+        for (const StateId id : states_.with_places(target)) {
+            const State& t = states_[id];
+            bool ok = true;
+            std::vector<int> r;
+            for (std::size_t o = 0; o < n && ok; ++o) {
+                const auto& options = s.motions[o];
+                if (fixed[o]) ok = t.motions[o] == *fixed[o];
+                else if (must[o]) ok = std::find(options.begin(), options.end(), t.motions[o]) != options.end();
+                else r.push_back(nearness(options, t.motions[o]));
+            }
+            if (!ok) continue;
+            candidates.push_back(id);
+            ranks.push_back(std::move(r));
+        }
+        if (target_) {
+            explain_target(s, candidates, ranks, must, fixed);
+            return;
+        }
+        for (const std::size_t i : atms::pareto_front(ranks)) {
+            if (candidates[i] == from_ && !wraps) continue;  // nothing happens: no transition
+            found_[{candidates[i], s.duration}] |= causes;
+        }
+    }
+
+    void explain_target(const StepOptions& s, const std::vector<StateId>& candidates, const std::vector<std::vector<int>>& ranks,
+                        const std::vector<bool>& must, const std::vector<std::optional<std::int8_t>>& fixed) {
+        const State& t = states_[*target_];
+        const auto it = std::find(candidates.begin(), candidates.end(), *target_);
+        if (it == candidates.end()) {
+            for (std::size_t o = 0; o < t.motions.size(); ++o) {
+                if (fixed[o] || !must[o]) continue;
+                std::string options;
+                for (const auto x : s.motions[o]) options += std::string(options.empty() ? "" : " ") + sign_word(x);
+                if (std::find(s.motions[o].begin(), s.motions[o].end(), t.motions[o]) == s.motions[o].end())
+                    reasons_.push_back("part " + object_names_[o] + " must change its motion in this step, to one of " + options +
+                                       " (Table 5.1 with its net force), not " + sign_word(t.motions[o]));
+            }
+            return;
+        }
+        const auto& mine = ranks[static_cast<std::size_t>(it - candidates.begin())];
+        for (std::size_t i = 0; i < candidates.size(); ++i) {
+            const auto& other = ranks[i];
+            bool le = true, lt = false;
+            for (std::size_t k = 0; k < mine.size(); ++k) {
+                le = le && other[k] <= mine[k];
+                lt = lt || other[k] < mine[k];
+            }
+            if (le && lt) {
+                reasons_.push_back("state #" + std::to_string(candidates[i].value) +
+                                   " has these places too and is nearer to what the step allows for every part (Def 38: the chain is made consistent by nearness, 8.3.4)");
+                return;
+            }
+        }
+        reasons_.push_back(candidates[static_cast<std::size_t>(it - candidates.begin())] == from_
+                               ? "this step changes nothing that would lead back to the state itself"
+                               : "this step allows it");
+    }
+
+    // Def 38 with 8.3.4's threshold: how near a motion is to the nearest of an object's options.
+    int nearness(const std::vector<std::int8_t>& options, std::int8_t m) const {
+        int best = 3;
+        for (const auto y : options) best = std::min(best, tables_.rank(y, m));
+        return best;
+    }
+
+    StateId from_;
+    const State& current_;
+    const StateIndex& states_;
+    const ChainTables& tables_;
+    std::vector<std::pair<std::size_t, std::size_t>> parts_;  // per pair: its parts' object indices
+    std::map<std::pair<StateId, Duration>, std::uint8_t> found_;
+    std::optional<StateId> target_;
+    std::vector<std::string> pair_names_, object_names_, reasons_;
+};
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::vector<std::string>>> why_no_transition(StateId from, StateId to, const StateIndex& states,
+                                                                                const Chain& chain, std::span<const bridge::PairPlaces> pairs,
+                                                                                const std::vector<std::string>& object_names,
+                                                                                const ChainTables& tables, const StateDynamics& dynamics) {
+    Builder b(from, states, chain, pairs, tables);
+    std::vector<std::string> pair_names;
+    for (const std::size_t k : chain.pairs) pair_names.push_back(pairs[k].name);
+    b.explain(to, pair_names, object_names);
+    std::vector<std::pair<std::string, std::vector<std::string>>> out;
+    for (const auto& s : dynamics.steps) {
+        b.step(s);
+        auto reasons = b.reasons();
+        std::sort(reasons.begin(), reasons.end());
+        reasons.erase(std::unique(reasons.begin(), reasons.end()), reasons.end());
+        out.emplace_back(s.name, std::move(reasons));
+    }
+    return out;
+}
+
+std::vector<Transition> successors(StateId from, const StateIndex& states, const Chain& chain,
+                                   std::span<const bridge::PairPlaces> pairs, const ChainTables& tables,
+                                   const StateDynamics& dynamics) {
+    Builder b(from, states, chain, pairs, tables);
+    const std::size_t n = dynamics.steps.size();
+    std::vector<std::map<std::pair<StateId, Duration>, std::uint8_t>> found(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        b.step(dynamics.steps[i]);
+        found[i] = b.take();
+    }
+    // A step happens only if no step that preempts it can (Law 4, as the laws order them). The
+    // preemptions form no cycle (steps that preempt come first), so one pass in that order settles it.
+    std::vector<bool> kept(n, false), settled(n, false);
+    for (std::size_t round = 0; round < n; ++round)
+        for (std::size_t i = 0; i < n; ++i) {
+            if (settled[i]) continue;
+            bool ready = true, preempted = false;
+            for (const auto& [s, t] : dynamics.preempts)
+                if (t == i) {
+                    ready = ready && settled[s];
+                    preempted = preempted || (settled[s] && kept[s]);
+                }
+            if (!ready) continue;
+            settled[i] = true;
+            kept[i] = !preempted && !found[i].empty();
+        }
+    for (std::size_t i = 0; i < n; ++i)
+        if (!settled[i]) throw InternalError("the laws' preemptions between steps form a cycle");
+    std::map<std::pair<StateId, Duration>, std::uint8_t> merged;
+    for (std::size_t i = 0; i < n; ++i)
+        if (kept[i])
+            for (const auto& [key, causes] : found[i]) merged[key] |= causes;
+    std::vector<Transition> out;
+    for (const auto& [key, causes] : merged) out.push_back({from, key.first, key.second, causes});
+    return out;
+}
+
+}  // namespace qm::envision

@@ -1,0 +1,39 @@
+// envision/successors.hpp
+// Provides:   successors(), the transitions out of one state (thesis Figure 8.5 step 1.4): every
+//             combination of one option per pair and per object of each step the laws allow
+//             (state_dynamics.hpp) is a hypothesised next state; each pair's motion is carried
+//             through its arrival at its next place (a collision or the end of an axis may change
+//             it: collision.rules, a stop at the end of an axis too); the motions the step or an arrival fixed
+//             stay, and the chain is made consistent (8.3.4) by keeping, among the generated states
+//             with the hypothesised places and those motions, the ones no other such state beats in
+//             nearness (nearness.rules) for every other object at once (atms/pareto_front.hpp); a
+//             hypothesis that matches no generated state is dropped (8.3.5). The combination that
+//             changes nothing is no transition, unless some pair wraps round a periodic axis: then
+//             the state has a transition to itself over an interval. A step that another preempts
+//             (Law 4: the laws' `preempts`) gives its transitions only if that one gives none.
+// Ownership:  value types.
+// Invariants: one transition per (target, duration), its causes the union of those found; sorted
+//             by target, then duration.
+#pragma once
+#include "envision/chain.hpp"
+#include "envision/chain_tables.hpp"
+#include "envision/state_dynamics.hpp"
+#include "envision/state_index.hpp"
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace qm::envision {
+
+[[nodiscard]] std::vector<Transition> successors(StateId from, const StateIndex& states, const Chain& chain,
+                                                 std::span<const bridge::PairPlaces> pairs, const ChainTables& tables,
+                                                 const StateDynamics& dynamics);
+
+// Why `from` has no transition to `to` (--why-not): per step of the state, the reasons its
+// hypotheses do not give `to` (a pair that cannot reach the place, a collision's outcome, a part
+// that must change, a nearer state, or "this step allows it" when only a preemption stops it).
+[[nodiscard]] std::vector<std::pair<std::string, std::vector<std::string>>> why_no_transition(
+    StateId from, StateId to, const StateIndex& states, const Chain& chain, std::span<const bridge::PairPlaces> pairs,
+    const std::vector<std::string>& object_names, const ChainTables& tables, const StateDynamics& dynamics);
+
+}  // namespace qm::envision

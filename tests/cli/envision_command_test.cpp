@@ -1,0 +1,235 @@
+// tests/cli/envision_command_test.cpp: `qm-atms envision` end to end through the built executable
+// (cli/envision_command.hpp, docs/ENVISION.md): the text summary, the Appendix-style table, the
+// qm-envisionment/1 JSON checked against its schema, --next/--previous, --without, and bad input:
+// each a located or clear error with exit status 2 and nothing on standard output.
+#include "../support/json_value.hpp"
+#include <cstdio>
+#include <cstdlib>
+#include <doctest/doctest.h>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+using qm::test::Json;
+
+namespace {
+
+struct Result {
+    int status = -1;
+    std::string out, err;
+};
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+Result envision(const std::string& args) {
+    static int counter = 0;
+    const std::string base = std::string(QM_BINARY_DIR) + "/envision_test_" + std::to_string(++counter);
+    const std::string cmd = std::string(QM_BINARY_DIR) + "/cli/qm-atms envision " + args + " --cache " + QM_BINARY_DIR +
+                            "/envision-test-place-cache >" + base + ".out 2>" + base + ".err";
+    const int raw = std::system(cmd.c_str());
+    Result r;
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = slurp(base + ".out");
+    r.err = slurp(base + ".err");
+    std::remove((base + ".out").c_str());
+    std::remove((base + ".err").c_str());
+    return r;
+}
+
+std::string scene(const std::string& name) { return std::string(QM_SOURCE_DIR) + "/scenarios/metric/" + name; }
+
+std::string write_temp(const std::string& name, const std::string& text) {
+    const std::string path = std::string(QM_BINARY_DIR) + "/" + name;
+    std::ofstream(path) << text;
+    return path;
+}
+
+}  // namespace
+
+TEST_CASE("cli/envision: the text summary names the chain, its pairs, states, transitions, cycles and terminal states") {
+    const auto r = envision(scene("cam.def"));
+    REQUIRE(r.status == 0);
+    CHECK(r.out.find("mechanism cam: 1 kinematic pair, 1 kinematic chain\n") == 0);
+    CHECK(r.out.find("  objects: cam follower\n") != std::string::npos);
+    CHECK(r.out.find("  pairs: cam/follower (") != std::string::npos);
+    CHECK(r.out.find("  states: ") != std::string::npos);
+    CHECK(r.out.find("summary: 1 chain, ") != std::string::npos);
+}
+
+TEST_CASE("cli/envision: --json follows qm-envisionment/1") {
+    const auto r = envision(scene("escapement.def") + " --json");
+    REQUIRE(r.status == 0);
+    const auto j = Json::parse(r.out);
+    REQUIRE(j.has_value());
+    CHECK((*j)["schema"].string() == "qm-envisionment/1");
+    CHECK((*j)["mechanism"].string() == "escapement");
+    CHECK(j->object().size() == 3);
+    const auto& chains = (*j)["chains"].array();
+    REQUIRE(chains.size() == 1);
+    const auto& c = chains[0];
+    CHECK(c.object().size() == 7);
+    CHECK(c["index"].number() == 1);
+    CHECK(c["objects"].array().size() == 2);
+    const auto& pairs = c["pairs"].array();
+    REQUIRE(pairs.size() == 1);
+    CHECK(pairs[0]["parts"].array()[0].string() == "scape-wheel");
+    const auto places = static_cast<std::size_t>(pairs[0]["places"].number());
+    const auto& states = c["states"].array();
+    REQUIRE(!states.empty());
+    for (std::size_t i = 0; i < states.size(); ++i) {
+        const auto& s = states[i];
+        CHECK(s.object().size() == 4);
+        CHECK(s["id"].number() == static_cast<double>(i));
+        CHECK(s["places"].array().size() == 1);
+        CHECK(s["places"].array()[0]["place"].number() < static_cast<double>(places));
+        for (const char* key : {"motions", "net_force"}) {
+            CHECK(s[key].object().size() == 2);
+            for (const auto& [obj, sign] : s[key].object()) {
+                const std::set<std::string> allowed = key == std::string("motions") ? std::set<std::string>{"(+)", "(0)", "(-)"}
+                                                                                      : std::set<std::string>{"(+)", "(0)", "(-)", "(?)"};
+                CHECK(allowed.count(sign.string()) == 1);
+            }
+        }
+    }
+    for (const auto& t : c["transitions"].array()) {
+        CHECK(t.object().size() == 4);
+        CHECK(t["from"].number() < static_cast<double>(states.size()));
+        CHECK(t["to"].number() < static_cast<double>(states.size()));
+        CHECK((t["duration"].string() == "instant" || t["duration"].string() == "interval"));
+        CHECK(!t["causes"].array().empty());
+        for (const auto& cause : t["causes"].array())
+            CHECK(std::set<std::string>{"kinematic", "dynamic", "collision"}.count(cause.string()) == 1);
+    }
+    for (const auto& cycle : c["cycles"].array()) CHECK(!cycle.array().empty());
+    CHECK(c["terminal"].is_array());
+}
+
+TEST_CASE("cli/envision: --table has the columns of Appendices A-D") {
+    const auto r = envision(scene("cam.def") + " --table");
+    REQUIRE(r.status == 0);
+    CHECK(r.out.find("chain 1: rows: place of cam/follower; columns: motions of cam / follower\n") != std::string::npos);
+    CHECK(r.out.find("place | --       | -0       | -+       | 0-       | 00       | 0+       | +-       | +0       | ++") != std::string::npos);
+}
+
+TEST_CASE("cli/envision: --next, --previous and --without") {
+    const auto next = envision(scene("cam.def") + " --next 'cam/follower-0 0 0'");
+    REQUIRE(next.status == 0);
+    CHECK(next.out.find("state #") == 0);
+    // At rest in the cam's lowest join, the follower's weight rests on both flanks and comes back to
+    // it with the opposite sign (Law 5: the same cause cancels), and the motor lifts it.
+    CHECK(next.out.find("  forces: cam (+) motor; follower (-) gravity;") != std::string::npos);
+    CHECK(next.out.find("  net force: cam (+), follower (+)") != std::string::npos);
+    CHECK(next.out.find("  next (") != std::string::npos);
+    const auto previous = envision(scene("cam.def") + " --previous 0");
+    REQUIRE(previous.status == 0);
+    CHECK(previous.out.find("  previous (") != std::string::npos);
+    // The cam without the follower's return force (9.4): the follower feels no force of its own.
+    const auto without = envision(scene("cam.def") + " --without 'Force follower' --next 'cam/follower-0 0 0'");
+    REQUIRE(without.status == 0);
+    CHECK(without.out.find("  forces: cam (+) motor; follower (+) motor\n") != std::string::npos);
+    CHECK(without.out.find("gravity") == std::string::npos);
+}
+
+TEST_CASE("cli/envision: --from, --path, --why-not, --dot and --svg") {
+    const std::string ratchet = std::string(QM_SOURCE_DIR) + "/scenarios/clock/ratchet.def";
+    const auto all = envision(ratchet + " --json");
+    REQUIRE(all.status == 0);
+    const auto j = Json::parse(all.out);
+    REQUIRE(j.has_value());
+    const auto& c = (*j)["chains"].array()[0];
+    REQUIRE(c["terminal"].array().size() == 1);
+    const std::string jam = "#" + std::to_string(static_cast<int>(c["terminal"].array()[0].number()));
+    // What the jammed state leads to: itself alone.
+    const auto from = envision(ratchet + " --from '" + jam + "' --json");
+    REQUIRE(from.status == 0);
+    const auto f = Json::parse(from.out);
+    REQUIRE(f.has_value());
+    CHECK((*f)["chains"].array()[0]["states"].array().size() == 1);
+    CHECK((*f)["chains"].array()[0]["transitions"].array().empty());
+    // From rest in free space to the jam (9.2.3, Figure 9.27).
+    const auto path = envision(ratchet + " --path 'ratchet-wheel/pawl:free ratchet-wheel=0 pawl=0 ; " + jam + "'");
+    REQUIRE(path.status == 0);
+    CHECK(path.out.find("path (") != std::string::npos);
+    CHECK(path.out.find("<- 2: " + jam) != std::string::npos);
+    const auto none = envision(ratchet + " --path '" + jam + " ; ratchet-wheel=+'");
+    REQUIRE(none.status == 0);
+    CHECK(none.out.find("no path: descriptions 1..1 are matched") != std::string::npos);
+    // Why not: a combination the jam's corner blocks, and a transition that is not there.
+    const auto blocked = envision(ratchet + " --why-not '" + jam + " -> ratchet-wheel/pawl-2 + 0'");
+    REQUIRE(blocked.status == 0);
+    CHECK(blocked.out.find("is not a state") != std::string::npos);
+    CHECK(blocked.out.find("false <= rule motion-into-blocked-space") != std::string::npos);
+    const auto stuck = envision(ratchet + " --why-not '" + jam + " -> #0'");
+    REQUIRE(stuck.status == 0);
+    CHECK(stuck.out.find("no transition " + jam) == 0);
+    CHECK(stuck.out.find("the laws in the first state:") != std::string::npos);
+    // Graphviz: the graph written whole; --svg needs `dot`.
+    const std::string dot = std::string(QM_BINARY_DIR) + "/envision_test.dot";
+    std::remove(dot.c_str());
+    const auto d = envision(ratchet + " --dot " + dot);
+    REQUIRE(d.status == 0);
+    std::ifstream in(dot);
+    std::stringstream graph;
+    graph << in.rdbuf();
+    CHECK(graph.str().find("digraph \"ratchet\"") == 0);
+    CHECK(graph.str().find("peripheries=2") != std::string::npos);  // the terminal state
+    const auto svg = envision(ratchet + " --svg " + std::string(QM_BINARY_DIR) + "/envision_test.svg");
+    if (std::system("command -v dot >/dev/null 2>&1") != 0) {
+        CHECK(svg.status == 2);
+        CHECK(svg.err.find("--svg needs Graphviz's `dot`") != std::string::npos);
+    } else {
+        CHECK(svg.status == 0);
+    }
+}
+
+TEST_CASE("cli/envision: bad input is a located error, exit status 2, and nothing on standard output") {
+    struct Case {
+        std::string args, message;
+    };
+    const std::string lonely = write_temp("envision_lonely.def", "(Defmechanism lonely\n  Parts ((wheel (circle (0 0) 1) (rotation))))\n");
+    const std::string apart = write_temp("envision_apart.def",
+                                         "(Defmechanism apart\n  Parts ((a (circle (0 0) 1) (rotation (0 0.5)))\n         (b (circle (5 0) 1) (rotation (5 0.5))))\n"
+                                         "  Pairs ((a b)))\n");
+    const std::string free = write_temp("envision_free.def",
+                                        "(Defmechanism free\n  Parts ((crank (crank (crank-radius 0.6) (pin-radius 0.1)) (rotation))\n"
+                                        "         (hub (block (width 0.2) (height 0.2)) (fixed)))\n  Pairs ((crank hub)))\n");
+    const std::vector<Case> cases{
+        {lonely, "envision_lonely.def:1:1: error: mechanism 'lonely' has no kinematic pair"},
+        {apart, "envision_apart.def:4:10: error: the parts 'a' and 'b' never touch"},
+        {free, "envision_free.def:4:10: error: 'crank' and 'hub' never touch: their configuration space is all free"},
+        {scene("cam.def") + " --max-states 10", "has more than 10 states (the limit of --max-states): nothing was written"},
+        {scene("cam.def") + " --max-states 0", "--max-states takes a positive whole number"},
+        {scene("cam.def") + " --next 'cam/follower-99 0 0'", "--next:1:1: error: pair 'cam/follower' has no place 99"},
+        {scene("cam.def") + " --next 'wheel/follower-1 0 0'", "--next:1:1: error: unknown pair 'wheel/follower'"},
+        {scene("cam.def") + " --next 'cam/follower-1 0'", "--next:1:16: error: expected 2 motions"},
+        {scene("cam.def") + " --next 'cam/follower-1 x 0'", "--next:1:16: error: expected a motion +, 0 or -, not 'x'"},
+        {scene("cam.def") + " --next '#100000'", "--next:1:1: error: no state 100000"},
+        {scene("cam.def") + " --previous ''", "--previous:1:1: error: expected a state"},
+        {scene("cam.def") + " --without 'Force wheel'", "--without:1:7: error: unknown part 'wheel'"},
+        {scene("cam.def") + " --without 'Force cam wind'", "--without:1:11: error: no force of cause 'wind' acts on 'cam'"},
+        {scene("cam.def") + " --without 'Contact cam follower'", "--without:1:1: error: expected 'Force PART [CAUSE]'"},
+        {scene("cam.def") + " --table --json", "--table and --json are two different outputs"},
+        {scene("cam.def") + " --avoid 'cam=+'", "--avoid goes with --path"},
+        {scene("cam.def") + " --path 'cam=x'", "--path:1:5: error: expected a motion +, 0 or -, not 'x'"},
+        {scene("cam.def") + " --why-not '#0 #1'", "--why-not:1:1: error: expected 'STATE -> STATE'"},
+        {scene("cam.def") + " --why-not '#0 -> cam/follower-0 + x'", "--why-not:1:24: error: expected a motion +, 0 or -, not 'x'"},
+        {scene("cam.def") + " --from 'cam/follower-1'", "--from:1:1: error: expected 2 motions (one per part of the chain) after the places, found 0"},
+        {scene("cam.def") + " --frobnicate", "unknown or incomplete option '--frobnicate'"},
+        {scene("cam.def") + " --rules /nonexistent", "/nonexistent:1:1: error: expected a folder of .rules files"},
+        {std::string(QM_BINARY_DIR) + "/no_such_scene.def", "no_such_scene.def"},
+    };
+    for (const auto& c : cases) {
+        CAPTURE(c.args);
+        const auto r = envision(c.args);
+        CHECK(r.status == 2);
+        CHECK(r.out.empty());
+        CHECK_MESSAGE(r.err.find(c.message) != std::string::npos, r.err);
+    }
+}

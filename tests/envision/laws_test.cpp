@@ -1,0 +1,87 @@
+// tests/envision/laws_test.cpp: the laws live in rule files, and the envisionment follows them
+// (issue 16 item 5): the laws' folder read as a program; a copy of rules/clock/ without the
+// collision law (collision.rules) gives the escapement's envisionment without its collisions and
+// changes nothing else; without the metric diagram's constraint (metric_constraint.rules) states the
+// geometry blocks come back; a folder with no laws, or a law with an error, is a located error.
+#include "envision_fixture.hpp"
+
+#include <fstream>
+#include <set>
+
+using namespace qm;
+using namespace qm::envision;
+using namespace qm::envision::testing;
+namespace fs = std::filesystem;
+
+namespace {
+
+// rules/clock/ copied into a fresh folder, without the files named.
+fs::path laws_without(const std::string& name, const std::set<std::string>& dropped) {
+    const fs::path dir = fs::path(QM_BINARY_DIR) / "envision-test-laws" / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    for (const auto& entry : fs::directory_iterator(rules_folder()))
+        if (entry.path().extension() == ".rules" && !dropped.count(entry.path().filename().string()))
+            fs::copy_file(entry.path(), dir / entry.path().filename());
+    return dir;
+}
+
+using Edge = std::tuple<std::uint32_t, std::uint32_t, Duration>;
+std::set<Edge> edges(const ChainEnvisionment& c, bool collisions) {
+    std::set<Edge> out;
+    for (const auto& t : c.transitions)
+        if (((t.causes & Cause::collision) != 0) == collisions) out.insert({t.from.value, t.to.value, t.duration});
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("envision/laws: deleting the collision law removes the escapement's collisions and nothing else") {
+    const auto m = mechanism("scenarios/metric/escapement.def");
+    const auto& full = envisioned_once("scenarios/metric/escapement.def");
+    EnvisionOptions o;
+    o.rules = laws_without("no-collision", {"collision.rules"});
+    const auto without = envisioned(m, o);
+    REQUIRE(full.chains.size() == 1);
+    REQUIRE(without.chains.size() == 1);
+    const auto& a = full.chains[0];
+    const auto& b = without.chains[0];
+    CHECK(a.states.size() == b.states.size());  // the states do not depend on collisions
+    CHECK(!edges(a, true).empty());
+    CHECK(edges(b, true).empty());
+    CHECK(edges(a, false) == edges(b, false));
+    MESSAGE("escapement: " << edges(a, true).size() << " collision transitions of " << a.transitions.size() << " go with the law");
+}
+
+TEST_CASE("envision/laws: without the metric diagram's constraint, states the geometry blocks come back") {
+    const auto m = mechanism("scenarios/metric/scotch_yoke.def");
+    const auto& full = envisioned_once("scenarios/metric/scotch_yoke.def");
+    EnvisionOptions o;
+    o.rules = laws_without("no-metric", {"metric_constraint.rules"});
+    const auto loose = envisioned(m, o);
+    CHECK(loose.chains[0].states.size() > full.chains[0].states.size());
+    for (const State& s : full.chains[0].states.states()) CHECK(loose.chains[0].states.find(s).has_value());
+}
+
+TEST_CASE("envision/laws: an empty folder or a broken law is a located error") {
+    const auto m = mechanism("scenarios/metric/cam.def");
+    EnvisionOptions o;
+    o.cache = &test_cache();
+    o.rules = laws_without("none", {});
+    for (const auto& entry : fs::directory_iterator(o.rules)) fs::remove(entry.path());
+    Diagnostics d;
+    CHECK(!qm::envision::envision(m, o, d).has_value());
+    CHECK(printed(d).find("expected a folder of .rules files") != std::string::npos);
+
+    o.rules = laws_without("broken", {});
+    std::ofstream(o.rules / "zz_broken.rules") << "rule broken\n  when (pair ?p ?a\n  then (x)\n";
+    Diagnostics d2;
+    CHECK(!qm::envision::envision(m, o, d2).has_value());
+    CHECK(printed(d2).find("zz_broken.rules:3:11: error: expected a term or ')' to close the '(' at 2:8") != std::string::npos);
+
+    // Laws that leave a pair without a choice of place: said, not a crash.
+    o.rules = laws_without("no-states", {"states.rules"});
+    Diagnostics d3;
+    CHECK(!qm::envision::envision(m, o, d3).has_value());
+    CHECK(printed(d3).find("no choice of place") != std::string::npos);
+}
