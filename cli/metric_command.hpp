@@ -7,15 +7,14 @@
 //             - `qm-atms --places METRIC-SCENE [--json] [--svg DIR] [--cache DIR | --no-cache]`:
 //               the place vocabulary of each kinematic pair (Def 20), from the on-disk cache when
 //               the same pair and settings were computed before (8.1.3);
-//             - metric_scene_at(), the conversion geometry -> scene::Scene behind --emit-def, for
-//               analysing a metric scene at a configuration exactly as a symbolic scene.
+//             The Alex scene itself is built by bridge/scene_at_config.hpp (also for `qm-atms
+//             METRIC-SCENE --config CONFIG`, cli/scene_command.cpp); this file only prints it.
 // Errors:     bad input (scene, CONFIG, parts overlapping at CONFIG, bad options) goes to `diags`
 //             / `err` as `file:line:col: error: ...` with the source line and a caret; the
 //             commands then return 2. Warnings (a pair with no free space) are printed and do
 //             not fail. Corners in contact are written as Alex corners (Def 18).
 //             qm::InternalError propagates to main (exit 1).
 #pragma once
-#include "scene/scene.hpp"
 #include "qm/diagnostics.hpp"
 #include <optional>
 #include <ostream>
@@ -24,9 +23,6 @@
 
 namespace qm::cli {
 
-// The scene at `config` (the CONFIG syntax; empty = as drawn). The result is a checked Scene
-// (it has been printed and read back through the Alex reader). Errors go to diags.
-[[nodiscard]] std::optional<qm::scene::Scene> metric_scene_at(const std::string& path, const std::string& config, Diagnostics& diags);
 
 // args: the arguments after `--emit-def` / `--places`.
 [[nodiscard]] int emit_def_command(std::span<const std::string> args, std::ostream& out, std::ostream& err);

@@ -5,7 +5,7 @@
 #include "scene_command.hpp"
 #include "analysis/analysis.hpp"
 #include "analysis/result_printer.hpp"
-#include "metric_command.hpp"
+#include "bridge/scene_at_config.hpp"
 #include "query_text.hpp"
 #include "rules_location.hpp"
 #include "scene/scene_parser.hpp"
@@ -47,8 +47,8 @@ std::optional<scene::Scene> load_scene(const SceneOptions& options, Diagnostics&
         return std::nullopt;
     }
     if (is_metric_scene(*file.text)) {
-        // A metric scene is analysed at a configuration, as the Alex scene --emit-def would write.
-        auto scene = metric_scene_at(options.scene, options.config.value_or(""), d);
+        // A metric scene is analysed at a configuration, as the Alex scene --emit-def writes it.
+        auto scene = bridge::read_scene_at_config(options.scene, options.config.value_or(""), d);
         if (scene && !d.items().empty()) {
             d.print(err);  // warnings (e.g. a contact an Alex scene cannot state)
             d = Diagnostics{};
