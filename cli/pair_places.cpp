@@ -57,7 +57,7 @@ std::optional<PairPlaces> pair_places(const g::Mechanism& m, const g::PairSpec& 
         out.from_cache = loaded.from_cache;
         note = std::move(loaded.note);
     }
-    if (!note.empty()) diags.add({Severity::warning, pair.where, std::move(note), m.source ? m.source->line_of(pair.where) : std::string(), {}});
+    if (!note.empty()) diags.add(Severity::warning, pair.where, std::move(note), m.source ? m.source->line_of(pair.where) : std::string_view());
     if (out.vocabulary.count(g::PlaceKind::face) == 0) {
         // No free area: parts drawn in contact with zero play move only in contact (8.1.6's gap
         // place in the limit); parts drawn overlapping have no place at all.

@@ -10,6 +10,7 @@
 #include <doctest/doctest.h>
 #include <fstream>
 #include <poll.h>
+#include <thread>
 #include <pty.h>
 #include <vector>
 #include <string>
@@ -74,13 +75,17 @@ public:
     }
     int wait_exit() {
         int status = 0;
-        for (int i = 0; i < 20; ++i) {
+        // Up to 20 s. Once the child has closed the terminal, reading returns at once (EIO) while
+        // the child may not be reapable yet: wait a little between tries rather than spin.
+        const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+        while (std::chrono::steady_clock::now() < end) {
             keep_ += read_until("\x01never", 1);  // drained, so the child is not blocked writing
             if (waitpid(pid_, &status, WNOHANG) == pid_) {
                 exited_ = true;
                 keep_ += read_until("\x01never", 0);
                 return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
             }
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
         }
         return -1;
     }

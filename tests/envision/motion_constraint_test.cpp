@@ -24,7 +24,9 @@ using Key = std::tuple<std::uint32_t, g::QualDirection>;
 // The motions blocked by the laws of `files` (names in rules/clock/), for every place of the pair.
 std::set<Key> blocked_by(const std::vector<std::string>& files, const g::Mechanism& m, const bridge::PairPlaces& pair) {
     std::vector<std::string> paths;
+    // The facts the driver asserts are declared in place_facts.rules (the rule checker needs them).
     for (const auto& f : files) paths.push_back((rules_folder() / f).string());
+    paths.push_back((rules_folder() / "place_facts.rules").string());
     Diagnostics d;
     const auto laws = Laws::load_files(paths, rules_folder(), d);
     REQUIRE_MESSAGE(laws.has_value(), printed(d));
@@ -114,5 +116,9 @@ TEST_CASE("envision/motion_constraint: Law 2 from the normals agrees with the me
     }
     MESSAGE("places " << places << ", blocked by the normals " << by_normals << ", by the normals only " << normals_only);
     for (const auto& [why, n] : reasons) MESSAGE("blocked by the geometry only (" << why << "): " << n);
-    CHECK(normals_only > 0);  // e.g. scotch_yoke.def places 12 and 19
+    // Since the place builder decides joins independently of rounding (issue 19 item 5), no bundled
+    // place has the normals blocking more than the geometry (before: scotch_yoke.def places 12 and
+    // 19); any that appears must be of the kind explained above. The comparison itself must run.
+    CHECK(by_normals > 0);
+    CHECK(places > 0);
 }
