@@ -221,12 +221,20 @@ CacheStore PlaceCache::store(const std::string& material, const PlaceVocabulary&
 CacheLoad PlaceCache::load(const std::string& material) const {
     const auto path = path_for(material);
     std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) return {};
-    const auto size = std::filesystem::file_size(path, ec);
-    if (ec) return refused(CacheStatus::corrupt, "it cannot be examined: " + ec.message());
-    if (size > largest_file) return refused(CacheStatus::corrupt, "it is larger than any vocabulary the cache writes");
+    // Opened first and sized through the open file: another process may remove or replace the
+    // file at any moment (stores rename a whole file into place), and an open file stays the one
+    // that was opened. A file gone before it could be opened is a miss, not damage.
     std::ifstream in(path, std::ios::binary);
-    if (!in) return refused(CacheStatus::corrupt, std::string("it cannot be read: ") + std::strerror(errno));
+    if (!in) {
+        if (!std::filesystem::exists(path, ec)) return {};
+        return refused(CacheStatus::corrupt, std::string("it cannot be read: ") + std::strerror(errno));
+    }
+    in.seekg(0, std::ios::end);
+    const std::streamoff end = in.tellg();
+    in.seekg(0, std::ios::beg);
+    if (end < 0 || !in) return refused(CacheStatus::corrupt, "it cannot be examined");
+    const auto size = static_cast<std::uintmax_t>(end);
+    if (size > largest_file) return refused(CacheStatus::corrupt, "it is larger than any vocabulary the cache writes");
     std::string text(static_cast<std::size_t>(size), '\0');
     if (!in.read(text.data(), static_cast<std::streamsize>(size)))
         return refused(CacheStatus::corrupt, "it could not be read whole (it changed while being read?)");
