@@ -35,6 +35,23 @@ std::uint32_t picked(const atms::Environment& env, const std::vector<atms::Assum
     return static_cast<std::uint32_t>(it - set.begin());
 }
 
+// Records the combination an interpretation env (joined with base) picks; false, and `truncated`,
+// once `limit` combinations are held (both enumerations below stop there).
+bool record_combination(ChainOutcome& out, std::span<const ObjectChoices> chain, const atms::Environment& env,
+                        const atms::Environment& base, std::size_t limit) {
+    if (out.motions.combinations.size() >= limit) {
+        out.truncated = true;
+        return false;
+    }
+    const atms::Environment full = join(env, base);
+    std::vector<ObjectMotion> combination;
+    combination.reserve(chain.size());
+    for (const ObjectChoices& c : chain)
+        combination.push_back({c.trans_dirs[picked(full, c.trans)], c.rot_dirs[picked(full, c.rot)]});
+    out.motions.combinations.push_back(std::move(combination));
+    return true;
+}
+
 }  // namespace
 
 ChainOutcome solve_chain(atms::Atms& atms, std::span<const ObjectChoices> chain, std::span<const Nearness> nearness,
@@ -91,17 +108,7 @@ ChainOutcome solve_chain(atms::Atms& atms, std::span<const ObjectChoices> chain,
         members.insert(members.end(), f->picks.begin(), f->picks.end());
         const atms::EnvId with = atms.environment(members);
         atms.for_each_interpretation(free_sets, with, [&](const atms::Environment& env) {
-            if (out.motions.combinations.size() >= limit) {
-                out.truncated = true;
-                return false;
-            }
-            const atms::Environment full = join(env, atms.env(with));
-            std::vector<ObjectMotion> combination;
-            combination.reserve(chain.size());
-            for (const ObjectChoices& c : chain)
-                combination.push_back({c.trans_dirs[picked(full, c.trans)], c.rot_dirs[picked(full, c.rot)]});
-            out.motions.combinations.push_back(std::move(combination));
-            return true;
+            return record_combination(out, chain, env, atms.env(with), limit);
         });
     }
     out.consistent = feasible.size();
@@ -119,17 +126,7 @@ ChainOutcome consistent_combinations(atms::Atms& atms, std::span<const ObjectCho
         out.motions.objects.push_back(c.object);
     }
     atms.for_each_interpretation(sets, base, [&](const atms::Environment& env) {
-        if (out.motions.combinations.size() >= limit) {
-            out.truncated = true;
-            return false;
-        }
-        const atms::Environment full = join(env, atms.env(base));
-        std::vector<ObjectMotion> combination;
-        combination.reserve(chain.size());
-        for (const ObjectChoices& c : chain)
-            combination.push_back({c.trans_dirs[picked(full, c.trans)], c.rot_dirs[picked(full, c.rot)]});
-        out.motions.combinations.push_back(std::move(combination));
-        return true;
+        return record_combination(out, chain, env, atms.env(base), limit);
     });
     out.consistent = out.motions.combinations.size();
     std::sort(out.motions.combinations.begin(), out.motions.combinations.end(), combination_less);
