@@ -103,8 +103,10 @@ void for_each_combination(const std::vector<ChainMotions>& chains, const std::fu
 struct Derivation {
     std::string fact;                      // the thesis' notation where one exists, else the rule language's
     std::string law;                       // the rule's name; empty for a leaf
-    std::string source;                    // "rules/motion_transfer.rules:12", or the scene's file:line for a leaf
+    std::string citation;                  // the thesis part the law's file cites (`cite`), e.g. "section 3.2, Table 3.2"
+    std::string source;                    // "motion_transfer.rules:12" (relative to the rules folder), or the scene's file:line for a leaf
     std::vector<std::string> bindings;     // "?o = block", in the rule's slot order
+    std::vector<std::string> absent;       // the law's `not` conditions: facts the situation does not hold, which it relied on
     std::vector<Derivation> from;          // antecedents
     bool shown_above = false;              // derived earlier in the same tree: not repeated
     friend bool operator==(const Derivation&, const Derivation&) = default;

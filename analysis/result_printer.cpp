@@ -20,40 +20,6 @@ void print_combination(std::ostream& os, const Scene& scene, const ChainMotions&
     }
 }
 
-void print_tree(std::ostream& os, const Derivation& d, const std::string& indent) {
-    os << indent << d.fact;
-    if (d.shown_above) {
-        os << "  (derived above)\n";
-        return;
-    }
-    if (!d.law.empty()) os << "  <= " << d.law;
-    if (!d.source.empty()) os << (d.law.empty() ? "  from " : " at ") << d.source;
-    if (!d.bindings.empty()) {
-        os << "  {";
-        for (std::size_t i = 0; i < d.bindings.size(); ++i) os << (i ? ", " : "") << d.bindings[i];
-        os << '}';
-    }
-    os << '\n';
-    for (const Derivation& f : d.from) print_tree(os, f, indent + "    ");
-}
-
-void write_strings(std::ostream& os, const std::vector<std::string>& xs) {
-    os << '[';
-    for (std::size_t i = 0; i < xs.size(); ++i) os << (i ? ", " : "") << json_string(xs[i]);
-    os << ']';
-}
-
-void write_tree(std::ostream& os, const Derivation& d) {
-    os << "{\"fact\": " << json_string(d.fact) << ", \"law\": " << json_string(d.law)
-       << ", \"source\": " << json_string(d.source) << ", \"bindings\": ";
-    write_strings(os, d.bindings);
-    os << ", \"shown_above\": " << (d.shown_above ? "true" : "false") << ", \"from\": [";
-    for (std::size_t i = 0; i < d.from.size(); ++i) {
-        if (i) os << ", ";
-        write_tree(os, d.from[i]);
-    }
-    os << "]}";
-}
 }  // namespace
 
 void print_freedom(std::ostream& os, const Scene& scene, const SituationResult& r) {
@@ -151,37 +117,6 @@ void print_analysis(std::ostream& os, const Scene& scene, std::span<const Situat
     }
 }
 
-void print_why(std::ostream& os, const WhyAnswer& w) {
-    os << w.query << " in situation " << w.situation << ": "
-       << (w.status == WhyAnswer::Status::holds ? "holds" : "ruled out") << "\n";
-    for (const std::string& n : w.notes) os << "  " << n << "\n";
-    for (std::size_t i = 0; i < w.exclusions.size(); ++i) {
-        const Exclusion& x = w.exclusions[i];
-        os << "  " << (w.exclusions.size() > 1 ? "Reason " + std::to_string(i + 1) : std::string("Reason"));
-        if (x.responsible.empty()) {
-            os << ": the scene's description alone (no contact, force or given motion)\n";
-        } else {
-            os << ": resting on {";
-            for (std::size_t k = 0; k < x.responsible.size(); ++k) os << (k ? ", " : "") << x.responsible[k];
-            os << "}\n";
-        }
-        print_tree(os, x.derivation, "    ");
-    }
-    if (!w.responsible_sets.empty()) {
-        os << (w.responsible_minimal ? "  Responsible (contacts, forces and given motions; the minimal sets, each suffices):\n"
-                                     : "  Responsible (contacts, forces and given motions; a set that suffices, maybe not minimal):\n");
-        for (const auto& set : w.responsible_sets) {
-            if (set.empty()) {
-                os << "    {} (the scene's description alone)\n";
-                continue;
-            }
-            os << "    {";
-            for (std::size_t k = 0; k < set.size(); ++k) os << (k ? ", " : "") << set[k];
-            os << "}\n";
-        }
-    }
-}
-
 void write_situation_json(std::ostream& os, const Scene& scene, const SituationResult& r, MotionSet shown) {
     os << "{\"index\": " << r.index << ", \"freedom\": {";
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
@@ -220,26 +155,6 @@ void write_analysis_json(std::ostream& os, const Scene& scene, std::span<const S
         write_situation_json(os, scene, results[i], shown);
     }
     os << "]}\n";
-}
-
-void write_why_json(std::ostream& os, const WhyAnswer& w) {
-    os << "{\"query\": " << json_string(w.query) << ", \"situation\": " << w.situation << ", \"status\": "
-       << (w.status == WhyAnswer::Status::holds ? "\"holds\"" : "\"ruled-out\"") << ", \"notes\": ";
-    write_strings(os, w.notes);
-    os << ", \"exclusions\": [";
-    for (std::size_t i = 0; i < w.exclusions.size(); ++i) {
-        os << (i ? ", " : "") << "{\"responsible\": ";
-        write_strings(os, w.exclusions[i].responsible);
-        os << ", \"derivation\": ";
-        write_tree(os, w.exclusions[i].derivation);
-        os << '}';
-    }
-    os << "], \"responsible_sets\": [";
-    for (std::size_t i = 0; i < w.responsible_sets.size(); ++i) {
-        if (i) os << ", ";
-        write_strings(os, w.responsible_sets[i]);
-    }
-    os << "], \"responsible_minimal\": " << (w.responsible_minimal ? "true" : "false") << "}\n";
 }
 
 }  // namespace qm::analysis

@@ -1,8 +1,7 @@
 // analysis/result_printer.hpp
 // Provides:   the outputs of an analysis: for people, in the thesis' notation (Figures 7.3-7.18:
 //             `Translational-Freedom (block (0 +))`, `Rotational-Motion (driver (+))`); for programs,
-//             JSON with the schema of docs/OUTPUT.md. Also "why" answers, as an indented derivation
-//             tree or as JSON.
+//             JSON with the schema of docs/OUTPUT.md. ("Why" answers: analysis/why_printer.hpp.)
 // Ownership:  writes to the stream given; keeps nothing.
 #pragma once
 #include "analysis/analysis.hpp"
@@ -21,7 +20,6 @@ void print_freedom(std::ostream& os, const Scene& scene, const SituationResult& 
 void print_motions(std::ostream& os, const Scene& scene, const SituationResult& r, MotionSet shown = MotionSet::selected);
 void print_analysis(std::ostream& os, const Scene& scene, std::span<const SituationResult> results,
                     MotionSet shown = MotionSet::selected);
-void print_why(std::ostream& os, const WhyAnswer& w);
 
 // {"scene": NAME, "dimensions": N, "situations": [SITUATION...]} (docs/OUTPUT.md).
 void write_analysis_json(std::ostream& os, const Scene& scene, std::span<const SituationResult> results,
@@ -29,5 +27,4 @@ void write_analysis_json(std::ostream& os, const Scene& scene, std::span<const S
 // One situation object: {"index", "freedom", "motions", "motion_set", "combinations", "stable"}.
 void write_situation_json(std::ostream& os, const Scene& scene, const SituationResult& r,
                           MotionSet shown = MotionSet::selected);
-void write_why_json(std::ostream& os, const WhyAnswer& w);
 }  // namespace qm::analysis

@@ -3,11 +3,13 @@
 // derivation down to the scene's premises and assumptions, naming the law at every step.
 #include "analysis/analysis.hpp"
 #include "analysis/detail/analysis_state.hpp"
+#include "engine/why.hpp"
 #include "scene/direction_text.hpp"
 #include "scene/vocabulary.hpp"
 #include "qm/assert.hpp"
 #include <algorithm>
 #include <bit>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <set>
@@ -80,9 +82,11 @@ public:
         if (firing.kind == engine::Firing::Kind::rule) {
             const engine::CompiledRule& rule = e.program().rules[*firing.rule];
             d.law = rule.name;
-            d.source = located(firing.where);
+            d.source = law_location(firing.where);
+            if (auto c = st_.program.citations.find(firing.where.file); c != st_.program.citations.end()) d.citation = c->second;
             for (std::size_t i = 0; i < firing.binding.size(); ++i)
                 if (firing.binding[i]) d.bindings.push_back(rule.slot_names[i] + " = " + e.values().print(*firing.binding[i]));
+            d.absent = engine::absent_conditions(*st_.engine, firing);
         } else if (firing.kind == engine::Firing::Kind::closed_world) {
             d.law = "closed world";
             d.source = "the situation";
@@ -94,6 +98,15 @@ public:
             // "item <- assume item".
             d.from.push_back(build(a));
         }
+        // The closed world is one assumption for every `not` of the situation: say which facts'
+        // absence this step used.
+        if (!d.absent.empty())
+            for (Derivation& f : d.from)
+                if (f.fact == closed_world_text) {
+                    f.fact = "the situation holds no ";
+                    for (std::size_t i = 0; i < d.absent.size(); ++i) f.fact += (i ? ", no " : "") + d.absent[i];
+                    f.fact += " (closed world: what it does not say is false)";
+                }
         collapse_assumption_step(d);
         return d;
     }
@@ -110,7 +123,7 @@ private:
                 d.fact = item->text;
                 d.source = located(item->where);
             } else if (!e.fact_of(n)) {
-                d.fact = "the closed world of the situation (what it does not say is false)";
+                d.fact = closed_world_text;
             } else {
                 d.fact = "assumed: " + d.fact;  // a choice (Law 1) or an assumption the laws made
             }
@@ -126,6 +139,14 @@ private:
             d = std::move(inner);
         }
     }
+
+    // A law's file:line relative to the rules folder, when it is in it (else as loaded).
+    [[nodiscard]] std::string law_location(const SourceLocation& w) const {
+        const std::filesystem::path rel = std::filesystem::path(w.file).lexically_relative(st_.options.rules_directory);
+        const bool inside = !rel.empty() && *rel.begin() != "..";
+        return (inside ? rel.generic_string() : w.file) + ":" + std::to_string(w.line);
+    }
+    static constexpr const char* closed_world_text = "the closed world of the situation (what it does not say is false)";
 
     const Analysis::State& st_;
     std::map<atms::NodeId, atms::JustId> by_consequent_;

@@ -5,6 +5,7 @@
 #include "scene_command.hpp"
 #include "analysis/analysis.hpp"
 #include "analysis/result_printer.hpp"
+#include "analysis/why_printer.hpp"
 #include "bridge/scene_at_config.hpp"
 #include "query_text.hpp"
 #include "rules_location.hpp"
@@ -102,7 +103,7 @@ void print_results(const analysis::Analysis& analysis, const SceneOptions& optio
 }  // namespace
 
 std::string scene_usage() {
-    return "usage: qm-atms SCENE.def [--json] [--kinematic] [--why FACT [--situation N]] [--given 'OBJ TRANS ROT']...\n"
+    return "usage: qm-atms SCENE.def [--json] [--kinematic] [--why FACT [--situation N] [--full]] [--given 'OBJ TRANS ROT']...\n"
            "                         [--without 'Contact A B' | 'Force OBJ [CAUSE]']... [--with 'Contact A B' | 'Force OBJ DIR ORIGIN [CAUSE]']...\n"
            "                         [--rules DIR] [--limit N] [-i]\n"
            "                         [--config 'PART=VALUE, ...']   (a metric scene, at that configuration)\n"
@@ -113,6 +114,8 @@ std::string scene_usage() {
            "                  motions alone, before the forces choose) instead of those the forces select\n"
            "  --why FACT      why a motion or freedom holds or was ruled out, e.g.\n"
            "                  --why 'Rotational-Motion (follower (-))' (situation 1 unless --situation N)\n"
+           "  --full          with --why: every reason and every step of its derivation (by default the\n"
+           "                  first reasons, trees cut a few steps down, saying what was left out)\n"
            "  --given M       a current motion added to every situation, e.g. --given 'pallet (0 0) (+)'\n"
            "  --without F     take a contact or force away in every situation (what if): 'Contact A B',\n"
            "                  'Force OBJ' (every force on OBJ, gravity included) or 'Force OBJ CAUSE'\n"
@@ -194,7 +197,7 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
             d.print(err);
             return 2;
         }
-        options->json ? analysis::write_why_json(answer, *w) : analysis::print_why(answer, *w);
+        options->json ? analysis::write_why_json(answer, *w) : analysis::print_why(answer, *w, {.full = options->full});
     } else {
         print_results(*analysis, *options, ao.without, added, answer, err);
     }

@@ -13,6 +13,8 @@ std::optional<SceneOptions> parse_scene_options(std::span<const std::string> arg
             o.json = true;
         } else if (a == "-i" || a == "--interactive") {
             o.interactive = true;
+        } else if (a == "--full") {
+            o.full = true;
         } else if (a == "--kinematic") {
             o.kinematic = true;
         } else if (a == "--why") {
@@ -61,6 +63,10 @@ std::optional<SceneOptions> parse_scene_options(std::span<const std::string> arg
     }
     if (o.scene.empty()) {
         cl.error("no scene given");
+        return std::nullopt;
+    }
+    if (o.full && !o.why) {
+        cl.error("--full shows a --why answer whole: give it with --why (or `full on` in -i)");
         return std::nullopt;
     }
     if (o.interactive && o.why) {

@@ -19,6 +19,7 @@ struct SceneOptions {
     std::string scene;
     bool json = false;
     bool interactive = false;
+    bool full = false;       // --why: every reason and every step (docs/OUTPUT.md)
     bool kinematic = false;  // list the kinematically consistent combinations (docs/OUTPUT.md)
     std::optional<std::string> why;
     std::optional<std::string> situation_text;  // --situation as given

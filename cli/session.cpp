@@ -2,6 +2,7 @@
 #include "session.hpp"
 #include "analysis/analysis.hpp"
 #include "analysis/result_printer.hpp"
+#include "analysis/why_printer.hpp"
 #include "line_editor.hpp"
 #include "query_text.hpp"
 #include "qm/spelling.hpp"
@@ -33,6 +34,7 @@ constexpr std::array commands = {
     Command{"with", "Contact A B | Force OBJ DIR ORIGIN [CAUSE] [; ...]", "with Force block (+ 0) (0 0) push",
             "the situation with contacts or forces added"},
     Command{"json", "[on|off]", "json on", "answer in JSON (docs/OUTPUT.md)"},
+    Command{"full", "[on|off]", "full on", "show `why` answers whole: every reason and every step"},
     Command{"help", "", "", "this list"},
     Command{"quit", "", "", "leave (so does exit, or the end of the input)"},
 };
@@ -109,13 +111,14 @@ private:
                 out_ << head << std::string(head.size() < 24 ? 24 - head.size() : 1, ' ') << k.does << '\n';
                 if (!k.example.empty()) out_ << std::string(24, ' ') << "e.g. " << k.example << '\n';
             }
-        } else if (c.name == "json") {
+        } else if (c.name == "json" || c.name == "full") {
             if (!rest.empty() && rest != "on" && rest != "off") {
                 err_ << usage(c) << '\n';
                 return;
             }
-            json_ = rest.empty() ? !json_ : rest == "on";
-            out_ << "json " << (json_ ? "on" : "off") << '\n';
+            bool& flag = c.name == "json" ? json_ : full_;
+            flag = rest.empty() ? !flag : rest == "on";
+            out_ << c.name << (flag ? " on" : " off") << '\n';
         } else if (c.name == "situation") {
             auto n = positive(rest);
             if (!n || *n > analysis_.situations().size())
@@ -153,7 +156,7 @@ private:
             q.reset();
         }
         if (q)
-            if (auto w = analysis_.why(*q, situation_, d)) json_ ? analysis::write_why_json(out_, *w) : analysis::print_why(out_, *w);
+            if (auto w = analysis_.why(*q, situation_, d)) json_ ? analysis::write_why_json(out_, *w) : analysis::print_why(out_, *w, {.full = full_});
     }
 
     void show(const std::optional<analysis::SituationResult>& r) {
@@ -169,6 +172,7 @@ private:
 
     analysis::Analysis& analysis_;
     bool json_;
+    bool full_ = false;  // `full on`: why answers whole
     std::size_t situation_ = 1;
     std::ostream& out_;
     std::ostream& err_;

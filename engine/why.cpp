@@ -111,6 +111,11 @@ std::vector<atms::Environment> support(const atms::Atms& atms, atms::NodeId n, s
 
 }  // namespace
 
+std::vector<std::string> absent_conditions(Engine& engine, const Firing& firing) {
+    if (firing.kind != Firing::Kind::rule) return {};
+    return absent_of(engine, engine.program().rules[*firing.rule], firing.binding);
+}
+
 Why why(Engine& engine, FactId f) {
     Why w;
     w.fact = engine.print(f);

@@ -40,4 +40,9 @@ struct Why {
 
 // Pre: f issued by engine; the engine has been run.
 [[nodiscard]] Why why(Engine& engine, FactId f);
+
+// The `not` conditions of a rule firing under its binding, as WhyStep::absent gives them (empty for
+// a firing that is not a rule's): the facts whose absence the firing relied on, for drivers that
+// build their own explanations (the closed world is one assumption; these say what it was used for).
+[[nodiscard]] std::vector<std::string> absent_conditions(Engine& engine, const Firing& firing);
 }  // namespace qm::engine

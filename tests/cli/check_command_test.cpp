@@ -59,6 +59,11 @@ TEST_CASE("cli/check: the bundled laws have no error and no warning, in 2-D and 
         CHECK(r.err == "");
         CHECK(std::regex_search(r.out, std::regex("^checked [0-9]+ files, [0-9]+ rules: no errors, no warnings\n$")));
     }
+    // The envisioner's laws (chapters 5 and 8) too: every file cites the thesis (issue 17 item 1).
+    auto clock = qm_atms("check " + source + "/rules/clock", "check");
+    CHECK(clock.status == 0);
+    CHECK(clock.err == "");
+    CHECK(std::regex_search(clock.out, std::regex("no errors, no warnings\n$")));
     // With no path: the laws qm-atms uses.
     auto r = qm_atms("check", "check");
     CHECK(r.status == 0);

@@ -2,6 +2,7 @@
 // thesis notation, the JSON schema of docs/OUTPUT.md, --situation, --why (both spellings),
 // --without, --given, the interactive mode, and exit statuses for bad input.
 #include "../support/json_value.hpp"
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -537,4 +538,46 @@ TEST_CASE("cli/scene_command: --with adds a contact or a force, and says so") {
     CHECK(facing.status == 0);
     CHECK(facing.err.find("--with:1:1: warning: Contact (tb block-t-m): the surface normals (0 +) of 'tb' and (0 +) of "
                           "'block-t-m' are not opposite") == 0);
+}
+
+// Issue 17 item 1: a --why answer that reads like one. The arch query of the issue (292 lines
+// before) is a golden file, run from the source folder so that the scene's paths in it are relative
+// (QM_WRITE_GOLDEN=1 rewrites it); --full shows everything, bindings included.
+TEST_CASE("cli/scene_command: --why starts with the verdict and stays short; --full shows it all (golden)") {
+    const std::string golden = std::string(QM_SOURCE_DIR) + "/tests/cli/why/arch_cross_bar.txt";
+    const std::string out = std::string(QM_BINARY_DIR) + "/scene_cli_why_arch.out";
+    const std::string run = "cd " + std::string(QM_SOURCE_DIR) + " && " + QM_BINARY_DIR + "/cli/qm-atms scenarios/alex/arch.def" +
+                            " --why 'Rotational-Motion (cross-bar (+))'";
+    REQUIRE(std::system((run + " >" + out).c_str()) == 0);
+    const std::string text = slurp(out);
+    if (std::getenv("QM_WRITE_GOLDEN")) std::ofstream(golden) << text;
+    CHECK(text == slurp(golden));
+    CHECK(std::count(text.begin(), text.end(), '\n') < 40);
+    CHECK(text.find("in situation 1: ruled out by constraint-prevents-rotation (section 3.1, Table 3.1; Definition 23), resting on {") == 34);
+    CHECK(text.find(" at contact_constraint.rules:") != std::string::npos);  // relative to the rules folder
+    CHECK(text.find("/rules/") == std::string::npos);
+    REQUIRE(std::system((run + " --full >" + out).c_str()) == 0);
+    const std::string full = slurp(out);
+    std::remove(out.c_str());
+    CHECK(std::count(full.begin(), full.end(), '\n') > 150);
+    CHECK(full.find("{?o = cross-bar, ?r = (+)}") != std::string::npos);  // bindings
+    CHECK(full.find("(see [1])") != std::string::npos);
+    CHECK(full.find("--full") == std::string::npos);                      // nothing left out
+    // The closed world names the facts whose absence a law used (rules/freedom.rules and others).
+    CHECK(full.find("the situation holds no (torque-decided-by cross-bar ?i ?c1 ?c2 ?s1 ?s2) (closed world") != std::string::npos);
+    // JSON: the citation and the `not` conditions of each step.
+    Result json = qm_atms(scene("arch.def") + " --json --why 'Rotational-Motion (cross-bar (+))'");
+    CHECK(json.out.find("\"law\": \"constraint-prevents-rotation\", \"citation\": \"section 3.1, Table 3.1; Definition 23\"") !=
+          std::string::npos);
+    CHECK(json.out.find("\"absent\": [\"(torque-decided-by cross-bar ?i ?c1 ?c2 ?s1 ?s2)\"]") != std::string::npos);
+    // In the interactive mode, `full on` does what --full does.
+    Result session = qm_atms(scene("arch.def") + " -i", "why Rotational-Motion (cross-bar (+))\nfull on\nwhy Rotational-Motion (cross-bar (+))\n");
+    CHECK(session.status == 0);
+    CHECK(session.out.find("full on\n") != std::string::npos);
+    CHECK(session.out.find("{?o = cross-bar, ?r = (+)}") > session.out.find("full on\n"));
+    CHECK(session.out.find("cut short: --full") < session.out.find("full on\n"));
+    // --full goes with --why.
+    Result alone = qm_atms(scene("arch.def") + " --full");
+    CHECK(alone.status == 2);
+    CHECK(alone.err.find("--full shows a --why answer whole: give it with --why") != std::string::npos);
 }
