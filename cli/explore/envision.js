@@ -3,8 +3,8 @@
 // (qm-envisionment/1, as `qm-atms envision --json` writes it); "chains" has, per chain, a drawing of
 // its parts, their motions' arrows and each pair's contact marks at each place; "paths" the
 // described behaviours asked for with `explore --path`.
-//   - a graph of a chain's states grouped by behavioural cycle (a ring each), terminal states and
-//     the other states (grids), at most VIEW_CAP states at a time (larger chains are shown by group,
+//   - a graph of a chain's states grouped by behavioural cycle (a ring each, in the order of its
+//     transitions; a grid past 40 states), terminal states and the other states (grids), at most VIEW_CAP states at a time (larger chains are shown by group,
 //     in pages, or around a state);
 //   - a state: the chain drawn at it (each pair's parts at its place's sample configuration, as
 //     `draw --history` draws it) with its motions as arrows, the point in a pair's configuration
@@ -22,7 +22,7 @@ const stateName = (c, s) => s.places.map((p) => p.parts.join('/') + '-' + p.plac
 const idText = (c, id) => '#' + id + ' ' + stateName(c, c.byId.get(id));
 const push = (map, key, value) => { if (!map.has(key)) map.set(key, []); map.get(key).push(value); };
 
-function prepare(k) {
+function prepareChain(k) {
   const e = env.chains[k], c = { k, e, d: data.chains[k], byId: new Map(), next: new Map(), prev: new Map(), group: new Map() };
   for (const s of e.states) c.byId.set(s.id, s);
   for (const t of e.transitions) { push(c.next, t.from, t); push(c.prev, t.to, t); }
@@ -59,27 +59,44 @@ function around(c, id) {
   return { label: 'around #' + id + ' (' + seen.size + ' states)', ids: [...seen] };
 }
 
-// Layout: one box per group (a cycle's states on a ring, the others in a grid), boxes in rows.
-function layout(c, ids) {
+// A group's states in the order of its transitions: from its least id, on to a next state of the
+// group not yet placed (the least), else to the least not yet placed; so a cycle reads round its ring.
+function orderAlong(c, members) {
+  const left = new Set(members), order = [];
+  for (let s = Math.min(...members); left.size;) {
+    left.delete(s);
+    order.push(s);
+    const next = (c.next.get(s) || []).map((t) => t.to).filter((t) => left.has(t));
+    if (left.size) s = next.length ? Math.min(...next) : Math.min(...left);
+  }
+  return order;
+}
+
+// Layout: one box per group (a cycle's states on a ring, a large cycle's and the others in a grid),
+// boxes in rows.
+function layoutGraph(c, ids) {
   const groups = new Map();
   for (const id of ids) push(groups, c.group.has(id) ? c.group.get(id) : 'other', id);
-  const order = [...groups.keys()].sort((a, b) => (typeof a === 'number' ? a : a === 'terminal' ? 1e9 : 2e9) -
-                                                  (typeof b === 'number' ? b : b === 'terminal' ? 1e9 : 2e9));
+  const rank = (k) => (typeof k === 'number' ? k : k === 'terminal' ? 1e9 : 2e9);
+  const order = [...groups.keys()].sort((a, b) => rank(a) - rank(b));
   const width = 900, at = new Map(), boxes = [];
   let x = 0, y = 0, rowHeight = 0;
   for (const key of order) {
-    const members = groups.get(key);
+    const members = orderAlong(c, groups.get(key));
     let w, h, place;
-    if (typeof key === 'number') {
+    if (typeof key === 'number' && members.length <= 40) {
       const r = Math.max(28, members.length * 30 / (2 * Math.PI));
       w = h = 2 * r + 44;
       place = (i) => [w / 2 + r * Math.cos(2 * Math.PI * i / members.length - Math.PI / 2),
                       h / 2 + 8 + r * Math.sin(2 * Math.PI * i / members.length - Math.PI / 2)];
-    } else {
+    } else {  // rows back and forth, so that consecutive states stay side by side
       const cols = Math.max(1, Math.min(members.length, Math.ceil(Math.sqrt(members.length * 2))));
       w = cols * 34 + 20;
       h = Math.ceil(members.length / cols) * 34 + 36;
-      place = (i) => [27 + (i % cols) * 34, 44 + Math.floor(i / cols) * 34];
+      place = (i) => {
+        const row = Math.floor(i / cols), col = row % 2 ? cols - 1 - (i % cols) : i % cols;
+        return [27 + col * 34, 44 + row * 34];
+      };
     }
     if (x > 0 && x + w > width) { x = 0; y += rowHeight + 12; rowHeight = 0; }
     boxes.push({ key, x, y, w, h, n: members.length });
@@ -87,11 +104,11 @@ function layout(c, ids) {
     x += w + 12;
     rowHeight = Math.max(rowHeight, h);
   }
-  return { at, boxes, width, height: y + rowHeight + 4 };
+  return { at, boxes, width: Math.max(width, ...boxes.map((b) => b.x + b.w)), height: y + rowHeight + 4 };
 }
 
 function drawGraph() {
-  const c = graph.chain, v = graph.view, { at, boxes, width, height } = layout(c, v.ids);
+  const c = graph.chain, v = graph.view, { at, boxes, width, height } = layoutGraph(c, v.ids);
   const colour = (t) => (t.causes.includes('collision') ? '#c0392b' : t.causes.includes('dynamic') ? '#2c6fbb' : '#333333');
   let svg = '<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 ' + width + ' ' + Math.max(height, 60) + '">' +
     '<defs>' + ['#c0392b', '#2c6fbb', '#333333'].map((col, i) => '<marker id="arrow' + i + '" viewBox="0 0 10 10" refX="10" refY="5" ' +
@@ -153,7 +170,7 @@ function setView(v) {
 }
 
 function showChain(k) {
-  graph.chain = prepare(k);
+  graph.chain = prepareChain(k);
   graph.state = null;
   play.states = [];
   play.at = -1;
@@ -270,7 +287,7 @@ function parseHistory(text) {
   return states;
 }
 
-function step(at) {
+function playStep(at) {
   play.at = at;
   const id = play.states[at];
   byId('history-status').textContent = 'step ' + (at + 1) + ' of ' + play.states.length + ': ' + idText(graph.chain, id);
@@ -278,14 +295,14 @@ function step(at) {
   showState(id);
 }
 
-function stop() {
+function stopPlay() {
   clearInterval(play.timer);
   play.timer = null;
   byId('history-play').textContent = 'Play';
 }
 
-function load() {
-  stop();
+function loadHistory() {
+  stopPlay();
   try {
     play.states = parseHistory(byId('history-input').value);
   } catch (e) {
@@ -302,11 +319,11 @@ function load() {
 }
 
 function startPlay() {
-  if (play.timer) return stop();
-  if (!load()) return;
-  step(0);
+  if (play.timer) return stopPlay();
+  if (!loadHistory()) return;
+  playStep(0);
   byId('history-play').textContent = 'Stop';
-  play.timer = setInterval(() => (play.at + 1 < play.states.length ? step(play.at + 1) : stop()), Math.max(50, Number(byId('history-speed').value) || 800));
+  play.timer = setInterval(() => (play.at + 1 < play.states.length ? playStep(play.at + 1) : stopPlay()), Math.max(50, Number(byId('history-speed').value) || 800));
 }
 
 function startEnvisionment() {
@@ -314,7 +331,7 @@ function startEnvisionment() {
   for (const id of ['envision-panel', 'state-panel', 'history-panel']) byId(id).hidden = false;
   byId('chains').innerHTML = env.chains.map((c, k) => '<button data-chain="' + k + '">chain ' + c.index + ': ' +
     escape(c.objects.join(', ')) + ' (' + c.states.length + ' states)</button>').join('');
-  byId('chains').addEventListener('click', (e) => { const b = e.target.closest('button[data-chain]'); if (b) { stop(); showChain(Number(b.getAttribute('data-chain'))); } });
+  byId('chains').addEventListener('click', (e) => { const b = e.target.closest('button[data-chain]'); if (b) { stopPlay(); showChain(Number(b.getAttribute('data-chain'))); } });
   byId('graph-view').addEventListener('change', (e) => setView(e.target.extra && Number(e.target.value) === graph.chain.views.length
     ? e.target.extra : graph.chain.views[Number(e.target.value)]));
   byId('graph').addEventListener('click', (e) => { const g = e.target.closest('g.state'); if (g) showState(Number(g.getAttribute('data-state'))); });
@@ -331,16 +348,16 @@ function startEnvisionment() {
     if (!p) return;
     showChain(env.chains.findIndex((c) => c.index === p.chain));
     byId('history-input').value = p.states.map((s) => '#' + s).join(' ');
-    load();
+    loadHistory();
   });
   byId('history-play').addEventListener('click', startPlay);
-  byId('history-back').addEventListener('click', () => { stop(); if (play.at > 0 || load()) step(Math.max(0, play.at - 1)); });
+  byId('history-back').addEventListener('click', () => { stopPlay(); if (play.at > 0 || loadHistory()) playStep(Math.max(0, play.at - 1)); });
   byId('history-forward').addEventListener('click', () => {
-    stop();
-    if (play.at < 0 && !load()) return;
-    step(Math.min(play.states.length - 1, play.at + 1));
+    stopPlay();
+    if (play.at < 0 && !loadHistory()) return;
+    playStep(Math.min(play.states.length - 1, play.at + 1));
   });
-  byId('history-input').addEventListener('change', () => { stop(); play.at = -1; });
+  byId('history-input').addEventListener('change', () => { stopPlay(); play.at = -1; });
   showChain(0);
 }
 

@@ -129,7 +129,7 @@ TEST_CASE("cli/explore_command: the envisionment in the page is `envision --json
 }
 
 TEST_CASE("cli/explore_command: bad input is refused with exit status 2") {
-    CHECK(run("explore " + metric_scene("cam.def") + " -o x --no-envision --path '#1'").err.find("--no-envision leaves it out") != std::string::npos);
+    CHECK(run("explore " + metric_scene("cam.def") + " -o x --no-envision --path '#1'").err.find("which --no-envision leaves out") != std::string::npos);
     CHECK(run("explore " + metric_scene("cam.def") + " -o x --avoid 'cam=0'").err.find("--avoid goes with --path") != std::string::npos);
     CHECK(run("explore").status == 2);
     CHECK(run("explore " + metric_scene("cam.def")).err.find("explore needs -o DIR") != std::string::npos);
