@@ -125,7 +125,7 @@ void write_history_svg(std::ostream& os, const g::Mechanism& m, const ev::Envisi
     const auto drawn = chain_drawn_parts(e, c);
     columns = std::max<std::size_t>(1, std::min(columns, h.states.size()));
     const std::size_t rows = (h.states.size() + columns - 1) / columns;
-    const int header = 28, footer = 22;
+    const int header = 28, footer = 22, label_height = 36;
     const int width = static_cast<int>(columns) * panel_width, height = header + static_cast<int>(rows) * panel_height + footer;
     os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 " << width << ' '
        << height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n<text x=\"12\" y=\"19\" font-family=\"sans-serif\" "
@@ -141,15 +141,20 @@ void write_history_svg(std::ostream& os, const g::Mechanism& m, const ev::Envisi
             if (it != c.chain.objects.end()) parts[i].motion = c.states[s].motions[static_cast<std::size_t>(it - c.chain.objects.begin())];
         }
         const auto contacts = g::mechanism_contacts(m, q, drawn);
-        std::string title = std::to_string(k + 1) + ". #" + std::to_string(s.value) + " " + ev::state_name(e, c, s);
-        if (k > 0) title += ", " + transition_text(c, h.states[k - 1], s);
-        std::ostringstream panel;
-        g::write_parts_svg(panel, parts, contacts.marks, {panel_width, panel_height, title, false, m.settings.normal_zero_tolerance});
+        // Two lines above each drawing, the same for every drawing so that the drawings line up: the
+        // state, and how the history got there.
         const int x = static_cast<int>(k % columns) * panel_width, y = header + static_cast<int>(k / columns) * panel_height;
+        os << "<text class=\"state-name\" x=\"" << x + 10 << "\" y=\"" << y + 16 << "\" font-family=\"sans-serif\" font-size=\"12\">"
+           << xml_text(std::to_string(k + 1) + ". #" + std::to_string(s.value) + " " + ev::state_name(e, c, s)) << "</text>\n";
+        if (k > 0)
+            os << "<text x=\"" << x + 10 << "\" y=\"" << y + 31 << "\" font-family=\"sans-serif\" font-size=\"11\" fill=\"#555555\">"
+               << xml_text(transition_text(c, h.states[k - 1], s)) << "</text>\n";
+        std::ostringstream panel;
+        g::write_parts_svg(panel, parts, contacts.marks, {panel_width, panel_height - label_height, "", false, m.settings.normal_zero_tolerance});
         // Each drawing is a nested <svg> placed in the strip (its own viewBox keeps its coordinates).
         std::string text = panel.str();
         text.insert(4, " class=\"history-state\" data-state=\"" + std::to_string(s.value) + "\" x=\"" + std::to_string(x) + "\" y=\"" +
-                           std::to_string(y) + "\"");
+                           std::to_string(y + label_height) + "\"");
         os << text;
         os << "<rect x=\"" << x + 0.5 << "\" y=\"" << y + 0.5 << "\" width=\"" << panel_width - 1 << "\" height=\"" << panel_height - 1
            << "\" fill=\"none\" stroke=\"#cccccc\"/>\n";

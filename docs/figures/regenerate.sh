@@ -109,8 +109,8 @@ history clock-ratchet-jam clock/ratchet "the ratchet jams (Figure 9.27)" \
   'ratchet-wheel/pawl:free ratchet-wheel=0 pawl=0 ; #13'
 history clock-ratchet-skip clock/ratchet "the ratchet skips, turning backwards (Figure 9.28)" \
   '#209 ; ratchet-wheel/pawl:free pawl=- ; #209' ratchet-wheel=0 ratchet-wheel=-
-history clock-scotch_yoke-reverse clock/scotch_yoke "the yoke stops and reverses (Figure 9.32)" \
-  '#47 ; crank/yoke:contact yoke=- ; #47' crank=0 crank=-
+history clock-scotch_yoke-reverse clock/scotch_yoke "the crank turning, the yoke stops and reverses, twice (Figure 9.32)" \
+  'crank/yoke:contact crank=+ yoke=+ ; crank/yoke:contact yoke=- ; crank/yoke:contact yoke=+' crank=0 crank=-
 history clock-cam-ride clock/cam "the follower rides the turning cam (9.4)" \
   'cam=+ follower=+ ; cam=+ follower=- ; cam=+ follower=+' cam=0 cam=-
 COLUMNS_OF_STRIP=6 history clock-escapement-de-carle clock/escapement "de Carle's cycle of the recoil escapement (9.1.5, Figures 9.21, 9.25)" \

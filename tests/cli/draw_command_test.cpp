@@ -177,9 +177,13 @@ TEST_CASE("cli/draw_command: a history, a drawing per state") {
     for (std::size_t k = 0; k < states.size(); ++k) {
         const auto& [id, name] = states[k];
         CAPTURE(name);
-        at = svg.find("<svg class=\"history-state\" data-state=\"" + id.substr(1) + "\"", at);
-        REQUIRE(at != std::string::npos);  // in the history's order
-        const auto end = svg.find("</svg>", at);
+        // The state's name above its drawing, in the history's order.
+        at = svg.find("<text class=\"state-name\"", at + 1);
+        REQUIRE(at != std::string::npos);
+        const auto nested = svg.find("<svg class=\"history-state\" data-state=\"" + id.substr(1) + "\"", at);
+        REQUIRE(nested != std::string::npos);
+        CHECK(nested < svg.find("<text class=\"state-name\"", at + 1));
+        const auto end = svg.find("</svg>", nested);
         const std::string panel = svg.substr(at, end - at);
         CHECK(panel.find(std::to_string(k + 1) + ". " + id + " " + name) != std::string::npos);
         if (k > 0) CHECK(panel.find("after an") != std::string::npos);  // the transition that led here
