@@ -9,6 +9,7 @@
 #include "geometry/place_sample.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <sstream>
 
 namespace qm::cli {
