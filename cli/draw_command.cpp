@@ -2,6 +2,7 @@
 #include "draw_command.hpp"
 
 #include "pair_places.hpp"
+#include "state_drawing.hpp"
 
 #include "geometry/mechanism_drawing.hpp"
 #include "geometry/metric_scene_parser.hpp"
@@ -21,10 +22,11 @@ namespace {
 namespace g = qm::geometry;
 
 struct DrawArgs {
-    std::string scene, config, place, svg;
-    bool has_config = false, use_cache = true;
+    std::string scene, config, place, svg, history;
+    bool has_config = false, has_history = false, has_size = false, use_cache = true;
     std::optional<std::filesystem::path> cache_dir;
     int width = 720, height = 540;
+    std::size_t columns = 4;  // --history: drawings a row
 };
 
 int usage_error(std::ostream& err, const std::string& what) {
@@ -52,14 +54,23 @@ std::optional<std::string> parse_args(std::span<const std::string> args, DrawArg
         if (o == "--no-cache") a.use_cache = false;
         else if (o == "--config" && has_value) a.config = args[++i], a.has_config = true;
         else if (o == "--place" && has_value) a.place = args[++i];
+        else if (o == "--history" && has_value) a.history = args[++i], a.has_history = true;
+        else if (o == "--columns" && has_value) {
+            const std::string& n = args[++i];
+            if (n.empty() || n.size() > 2 || n.find_first_not_of("0123456789") != std::string::npos || std::stoi(n) < 1)
+                return "--columns takes a number of drawings a row, 1 to 99, not '" + n + "'";
+            a.columns = static_cast<std::size_t>(std::stoi(n));
+        }
         else if (o == "--svg" && has_value) a.svg = args[++i];
         else if (o == "--cache" && has_value) a.cache_dir = args[++i];
         else if (o == "--size" && has_value) {
             if (!parse_size(args[++i], a.width, a.height)) return "--size takes WIDTHxHEIGHT, each 100 to 4000 pixels, not '" + args[i] + "'";
+            a.has_size = true;
         } else return "unknown or incomplete option '" + o + "' for draw";
     }
     if (a.svg.empty()) return "draw needs --svg FILE";
-    if (a.has_config && !a.place.empty()) return "draw takes --config or --place, not both";
+    if (int(a.has_config) + int(!a.place.empty()) + int(a.has_history) > 1) return "draw takes one of --config, --place and --history";
+    if (a.has_history && !a.has_size) a.width = 340, a.height = 300;  // one drawing of a strip
     return std::nullopt;
 }
 
@@ -113,11 +124,27 @@ int draw_place(const g::Mechanism& m, const DrawArgs& a, std::ostream& os, std::
     return 0;
 }
 
+// A history: the envisionment, then one drawing of the chain per state (cli/state_drawing.hpp).
+int draw_history(const g::Mechanism& m, const DrawArgs& a, std::ostream& os, std::ostream& err) {
+    Diagnostics diags;
+    const auto e = envision_for_drawing(m, a.use_cache, a.cache_dir, diags);
+    if (!e || diags.has_errors()) {
+        diags.print(err);
+        return 2;
+    }
+    const auto h = parse_history(*e, a.history, diags);
+    diags.print(err);
+    if (!h) return 2;
+    write_history_svg(os, m, *e, *h, a.width, a.height, a.columns);
+    return 0;
+}
+
 }  // namespace
 
 const char* draw_usage() noexcept {
-    return "       qm-atms draw METRIC-SCENE [--config 'PART=VALUE, ...' | --place A--B:ID] --svg FILE [--size WxH]\n"
-           "                    [--cache DIR | --no-cache]    the parts drawn at a configuration or at a place\n";
+    return "       qm-atms draw METRIC-SCENE [--config 'PART=VALUE, ...' | --place A--B:ID | --history 'STATE STATE ...' [--columns N]]\n"
+           "                    --svg FILE [--size WxH] [--cache DIR | --no-cache]\n"
+           "                                                  the parts drawn at a configuration, at a place, or along a history\n";
 }
 
 int draw_command(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
@@ -132,7 +159,9 @@ int draw_command(std::span<const std::string> args, std::ostream& out, std::ostr
     }
     std::ostringstream svg;
     std::string title;
-    if (!a.place.empty()) {
+    if (a.has_history) {
+        if (const int status = draw_history(*m, a, svg, err)) return status;
+    } else if (!a.place.empty()) {
         if (const int status = draw_place(*m, a, svg, err, title)) return status;
     } else {
         const auto q = g::parse_configuration(*m, a.config, diags);

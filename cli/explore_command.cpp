@@ -3,7 +3,9 @@
 
 #include "explore_assets.hpp"
 #include "explore_data.hpp"
+#include "state_drawing.hpp"
 
+#include "envision/behaviour_query.hpp"
 #include "geometry/metric_scene_parser.hpp"
 
 #include <filesystem>
@@ -25,20 +27,25 @@ int usage_error(std::ostream& err, const std::string& what) {
 }  // namespace
 
 const char* explore_usage() noexcept {
-    return "       qm-atms explore METRIC-SCENE -o DIR [--cache DIR | --no-cache]\n"
-           "                                                  a page (DIR/index.html) to explore the places\n";
+    return "       qm-atms explore METRIC-SCENE -o DIR [--no-envision | --path 'DESC; DESC; ...'... [--avoid 'DESC']...]\n"
+           "                       [--cache DIR | --no-cache]  a page (DIR/index.html) to explore the places and states\n";
 }
 
 int explore_command(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
     if (args.empty()) return usage_error(err, "explore takes a metric scene");
     std::optional<std::filesystem::path> dir, cache_dir;
-    bool use_cache = true;
+    bool use_cache = true, envisioned = true;
+    std::vector<std::string> path_texts, avoid;
     for (std::size_t i = 1; i < args.size(); ++i) {
         if (args[i] == "--no-cache") use_cache = false;
+        else if (args[i] == "--no-envision") envisioned = false;
+        else if ((args[i] == "--path" || args[i] == "--avoid") && i + 1 < args.size()) (args[i] == "--path" ? path_texts : avoid).push_back(args[i + 1]), ++i;
         else if ((args[i] == "-o" || args[i] == "--cache") && i + 1 < args.size()) (args[i] == "-o" ? dir : cache_dir) = args[i + 1], ++i;
         else return usage_error(err, "unknown or incomplete option '" + args[i] + "' for explore");
     }
     if (!dir) return usage_error(err, "explore needs -o DIR");
+    if (!envisioned && !path_texts.empty()) return usage_error(err, "--path plays a path of the envisionment, which --no-envision leaves out");
+    if (!avoid.empty() && path_texts.empty()) return usage_error(err, "--avoid goes with --path");
     Diagnostics diags;
     const auto m = g::read_mechanism_file(args[0], diags);
     if (!m) {
@@ -60,9 +67,30 @@ int explore_command(std::span<const std::string> args, std::ostream& out, std::o
         }
         pairs.push_back({pair, std::move(*places)});
     }
+    // The envisionment, as `qm-atms envision` computes it (the same ids), and the behaviours asked for.
+    std::optional<qm::envision::Envisionment> e;
+    std::vector<ExplorePath> paths;
+    if (envisioned) {
+        e = envision_for_drawing(*m, use_cache, cache_dir, diags);
+        if (!e || diags.has_errors()) {
+            diags.print(err);
+            err << "qm-atms: explore: the envisionment failed (above); --no-envision writes the page without it\n";
+            return 2;
+        }
+        for (const auto& text : path_texts) {
+            const auto b = qm::envision::parse_behaviour(*e, text, "--path", avoid, diags);
+            if (!b) {
+                diags.print(err);
+                return 2;
+            }
+            const auto answer = qm::envision::find_behaviour(*e, *b);
+            if (answer.path.empty()) err << "qm-atms: explore: no path matches '" << text << "' (envision --path says how far one gets)\n";
+            paths.push_back({text, b->chain, answer.path});
+        }
+    }
     diags.print(err);
     std::ostringstream data;
-    write_explore_data(data, *m, pairs, selection.skipped);
+    write_explore_data(data, *m, pairs, selection.skipped, e ? &*e : nullptr, paths);
     std::error_code ec;
     std::filesystem::create_directories(*dir, ec);
     if (ec) return usage_error(err, "cannot create the folder '" + dir->string() + "'");
@@ -76,7 +104,13 @@ int explore_command(std::span<const std::string> args, std::ostream& out, std::o
         file << text;
         if (!file) return usage_error(err, "cannot write '" + (*dir / std::string(asset.name)).string() + "'");
     }
-    out << "wrote " << (*dir / "index.html").string() << " (" << pairs.size() << " pair" << (pairs.size() == 1 ? "" : "s") << ")\n";
+    out << "wrote " << (*dir / "index.html").string() << " (" << pairs.size() << " pair" << (pairs.size() == 1 ? "" : "s");
+    if (e) {
+        std::size_t states = 0;
+        for (const auto& c : e->chains) states += c.states.size();
+        out << ", " << e->chains.size() << " chain" << (e->chains.size() == 1 ? "" : "s") << ", " << states << " state" << (states == 1 ? "" : "s");
+    }
+    out << ")\n";
     return 0;
 }
 

@@ -70,6 +70,9 @@ std::string axis_mark(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
     return os.str();
 }
 
+// Motion arrows are one colour, apart from the parts' and the normals' colours.
+constexpr const char* motion_colour = "#d35400";
+
 std::vector<detail::LegendRow> legend_rows(const std::vector<DrawnPart>& parts) {
     std::vector<detail::LegendRow> rows;
     for (std::size_t k = 0; k < parts.size(); ++k) {
@@ -84,6 +87,8 @@ std::vector<detail::LegendRow> legend_rows(const std::vector<DrawnPart>& parts) 
     if (any(&Part::rotates)) rows.push_back({pivot_mark({12, 5}), "pivot"});
     if (any(&Part::translates)) rows.push_back({axis_mark({1, 5}, {23, 5}), "translation axis, limits"});
     rows.push_back({"<circle cx=\"3\" cy=\"5\" r=\"3\" fill=\"#000000\"/>" + arrow({3, 5}, {24, 5}, "#000000"), "contact, outward normal"});
+    if (std::any_of(parts.begin(), parts.end(), [](const DrawnPart& d) { return d.motion != 0; }))
+        rows.push_back({arrow({1, 5}, {24, 5}, motion_colour), "motion (+: counter-clockwise, along the axis)"});
     return rows;
 }
 
@@ -139,6 +144,38 @@ std::string outline_path(const Part& p) {
         d += 'Z';
     }
     return d;
+}
+
+std::string motion_arrow(const Part& p, double q, int sign, double scale) {
+    if (sign == 0 || p.fixed()) return "";
+    sign = sign > 0 ? 1 : -1;
+    const double head = 10 / scale, half = 4.5 / scale;  // the head in pixels
+    Eigen::Vector2d tip, along;
+    std::string line;
+    if (p.rotates()) {
+        // An arc of 90 degrees about the pivot, inside the part's reach, ending in the direction
+        // of turning (world coordinates: y up, so sweep flag 1 is counter-clockwise).
+        const double r = 0.6 * p.reach(), from = std::numbers::pi / 6, to = from + sign * std::numbers::pi / 2;
+        const Eigen::Vector2d c = p.dof.pivot, a = c + r * Eigen::Vector2d(std::cos(from), std::sin(from));
+        tip = c + r * Eigen::Vector2d(std::cos(to), std::sin(to));
+        along = sign * Eigen::Vector2d(-std::sin(to), std::cos(to));
+        line = "<path d=\"M" + wn(a.x()) + ',' + wn(a.y()) + 'A' + wn(r) + ',' + wn(r) + " 0 0 " + (sign > 0 ? '1' : '0') + ' ' + wn(tip.x()) +
+               ',' + wn(tip.y()) + "\"";
+    } else {
+        const Eigen::Vector2d c = drawing_centre(p);
+        along = sign * p.dof.axis.normalized();
+        const double length = 44 / scale;
+        tip = c + 0.5 * length * along;
+        const Eigen::Vector2d a = c - 0.5 * length * along;
+        line = "<path d=\"M" + wn(a.x()) + ',' + wn(a.y()) + 'L' + wn(tip.x()) + ',' + wn(tip.y()) + "\"";
+    }
+    const Eigen::Vector2d n(-along.y(), along.x()), base = tip - head * along, l = base + half * n, r = base - half * n;
+    std::ostringstream os;
+    os << "<g class=\"motion\" data-part=\"" << xml_text(p.name) << "\" data-motion=\"" << (sign > 0 ? '+' : '-') << "\" transform=\""
+       << part_transform(p, q) << "\">" << line << " fill=\"none\" stroke=\"" << motion_colour
+       << "\" stroke-width=\"2.5\" vector-effect=\"non-scaling-stroke\"/><polygon points=\"" << wn(tip.x()) << ',' << wn(tip.y()) << ' '
+       << wn(l.x()) << ',' << wn(l.y()) << ' ' << wn(r.x()) << ',' << wn(r.y()) << "\" fill=\"" << motion_colour << "\"/></g>";
+    return os.str();
 }
 
 DrawingFrame parts_frame(const std::vector<DrawnPart>& parts, const DrawingOptions& o) {
@@ -205,7 +242,13 @@ void write_parts_svg(std::ostream& os, const std::vector<DrawnPart>& parts, cons
         }
         os << "</g>\n";
     }
-    os << "</g>\n<g class=\"marks\">\n";
+    os << "</g>\n";
+    if (std::any_of(parts.begin(), parts.end(), [](const DrawnPart& d) { return d.motion != 0; })) {
+        os << "<g class=\"motions\" transform=\"" << f.world_transform() << "\">";
+        for (const auto& d : parts) os << motion_arrow(*d.part, d.q, d.motion, f.scale);
+        os << "</g>\n";
+    }
+    os << "<g class=\"marks\">\n";
     for (const auto& d : parts) {
         const Part& p = *d.part;
         if (p.rotates()) os << pivot_mark(f.pixel(p.dof.pivot)) << '\n';

@@ -5,14 +5,19 @@
 //             inside a group whose transform is the part's pose at its coordinate; pivots and
 //             translation axes (with their limits) marked; contacts marked with the outward
 //             normals of the surfaces in contact and their qualitative directions (Defs 17-19);
-//             a legend. The pieces are offered separately for the explorer page, which moves
+//             each part's motion as an arrow, the way the thesis' histories show it (Figures
+//             9.25, 9.27, 9.28: curved about a pivot, straight along a slide); a legend. The
+//             pieces are offered separately for the explorer page, which moves
 //             the parts by changing their groups' transforms and swaps the contact marks.
 // Ownership:  values; DrawnPart points at a Part its caller owns for the call.
 // Invariants: the world is shown with x right and y up at one scale on both axes; a frame
 //             holds every drawn part anywhere along its motion, so one frame serves every
 //             configuration. A part's group is <g class="part" data-part="NAME" transform=...>
 //             holding its outline path in world coordinates as drawn (coordinate 0); the
-//             contact marks are <g class="contacts">.
+//             contact marks are <g class="contacts">; the motion arrows are
+//             <g class="motion" data-part="NAME" data-motion="+|-" transform=...> in world
+//             coordinates inside <g class="motions"> (the world's transform), each carrying its
+//             part's transform so that it moves with the part.
 // Knows nothing of the ATMS or the engine.
 #pragma once
 #include "geometry/part.hpp"
@@ -48,6 +53,7 @@ void extend_motion_bounds(const Part& p, Eigen::Vector2d& lo, Eigen::Vector2d& h
 struct DrawnPart {
     const Part* part = nullptr;
     double q = 0.0;  // its coordinate: radians or offset along the axis
+    int motion = 0;  // its motion's sign (counter-clockwise or along the axis positive); 0: no arrow
 };
 
 // A contact between two drawn parts: its point and, for each side that touches with a surface
@@ -72,6 +78,10 @@ struct DrawingOptions {
 // The contact marks alone, as <g class="contacts">...</g>, for a frame from parts_frame().
 void write_contact_marks(std::ostream& os, const DrawingFrame& frame, const std::vector<DrawnPart>& parts,
                          const std::vector<ContactMark>& contacts, const DrawingOptions& options);
+// The arrow of a part's motion (sign +1 or -1) at coordinate q, in world coordinates, for a frame
+// of `scale` pixels per world unit: an arc about the pivot, or a straight arrow along the axis
+// beside the part's centre; nothing for a fixed part or a sign 0.
+[[nodiscard]] std::string motion_arrow(const Part& p, double q, int sign, double scale);
 // The whole picture. Pre: every DrawnPart points at a part with profiles.
 void write_parts_svg(std::ostream& os, const std::vector<DrawnPart>& parts, const std::vector<ContactMark>& contacts,
                      const DrawingOptions& options);

@@ -1,8 +1,8 @@
 # Writes OUT, a C++ source holding the explorer page's files (DIR/index.html, explore.js,
-# explore.css) as raw string literals, so that `qm-atms explore` needs no file at run time.
+# envision.js, explore.css) as raw string literals, so that `qm-atms explore` needs no file at run time.
 # Run as: cmake -DDIR=... -DOUT=... -P embed_assets.cmake
 set(text "// Generated from cli/explore/ by embed_assets.cmake: do not edit.\n#include \"explore_assets.hpp\"\n\nnamespace qm::cli {\n\nstd::span<const ExploreAsset> explore_assets() noexcept {\n    static const ExploreAsset assets[] = {\n")
-foreach(name index.html explore.js explore.css)
+foreach(name index.html explore.js envision.js explore.css)
   file(READ ${DIR}/${name} content)
   string(FIND "${content}" ")qm_asset\"" clash)
   if(NOT clash EQUAL -1)

@@ -1,8 +1,10 @@
 // tests/cli/draw_command_test.cpp: `qm-atms draw` end to end through the built executable
 // (cli/draw_command.hpp): the parts at a CONFIG (their transforms are the configuration, the
 // contact found there is marked with both surfaces' qualitative normals), the pair's parts at a
-// place's sample configuration (the place of `--places --json`), a warning for parts drawn
-// overlapping, and bad input with exit status 2.
+// place's sample configuration (the place of `--places --json`), a history of envisioned states
+// (the answer of `envision --path`: one drawing per state, in order, titled with the state's name,
+// the parts at the places' samples, one arrow per moving part pointing its way), a warning for parts
+// drawn overlapping, and bad input with exit status 2.
 #include "../support/json_value.hpp"
 #include "qm_atms_run.hpp"
 
@@ -11,7 +13,9 @@
 #include <filesystem>
 #include <map>
 #include <numbers>
+#include <sstream>
 #include <string>
+#include <vector>
 
 using qm::test::Json;
 using qm::test::metric_scene;
@@ -115,7 +119,9 @@ TEST_CASE("cli/draw_command: bad input is refused with exit status 2") {
     refused("", "draw takes a metric scene");
     refused(cam + " --svg " + file + " --config 'cam=x'", "CONFIG:1:");
     refused(cam + " --svg " + file + " --config 'wheel=3'", "CONFIG:1:");
-    refused(cam + " --svg " + file + " --place cam--follower:0 --config 'cam=3'", "--config or --place, not both");
+    refused(cam + " --svg " + file + " --place cam--follower:0 --config 'cam=3'", "one of --config, --place and --history");
+    refused(cam + " --svg " + file + " --history '#1' --config 'cam=3'", "one of --config, --place and --history");
+    refused(cam + " --svg " + file + " --history '#1' --columns 0", "--columns takes");
     refused(cam + " --svg " + file + " --place follower--cam:0", "--place takes PAIR:ID");
     refused(cam + " --svg " + file + " --place cam--follower", "--place takes PAIR:ID");
     refused(cam + " --svg " + file + " --place cam--follower:999 --no-cache", "has places 0 to");
@@ -124,4 +130,84 @@ TEST_CASE("cli/draw_command: bad input is refused with exit status 2") {
     refused(cam + " --svg " + file + " --frobnicate", "unknown or incomplete option '--frobnicate'");
     refused(cam + " --svg /nonexistent-dir/x.svg", "cannot write '/nonexistent-dir/x.svg'");
     refused(std::string(QM_SOURCE_DIR) + "/no-such.def --svg " + file, "no-such.def");
+}
+
+namespace {
+
+// The lines "  #ID NAME   <- ..." of `envision --path`: the ids and names of the path's states.
+std::vector<std::pair<std::string, std::string>> path_states(const std::string& text) {
+    std::vector<std::pair<std::string, std::string>> out;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("  #", 0) != 0) continue;
+        const auto space = line.find(' ', 3);
+        auto name = line.substr(space + 1);
+        name = name.substr(0, name.find("   <-"));
+        out.emplace_back(line.substr(2, space - 2), name);
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("cli/draw_command: a history, a drawing per state") {
+    // The cam turning one way while its follower rises and falls (ENVISION.md, 9.4).
+    const std::string cam = std::string(QM_SOURCE_DIR) + "/scenarios/clock/cam.def";
+    const std::string cache = std::string(QM_BINARY_DIR) + "/draw_test_history_cache";
+    const auto path = qm::test::qm_atms("envision " + cam + " --cache " + cache +
+                                            " --path 'cam=+ follower=+ ; cam=+ follower=- ; cam=+ follower=+' --avoid 'cam=0' --avoid 'cam=-'",
+                                        "draw_test");
+    REQUIRE(path.status == 0);
+    const auto states = path_states(path.out);
+    REQUIRE(states.size() >= 3);
+    const auto places = qm::test::qm_atms("--places " + cam + " --json --cache " + cache, "draw_test");
+    REQUIRE(places.status == 0);
+    const auto doc = Json::parse(places.out);
+    REQUIRE(doc);
+    const auto& vocabulary = (*doc)["pairs"].array().at(0)["vocabulary"]["places"].array();
+    std::string ids;
+    for (const auto& [id, name] : states) ids += id + " ";
+    const std::string file = out_file("draw_history.svg");
+    const auto r = draw(cam + " --history '" + ids + "' --columns 3 --svg " + file + " --cache " + cache);
+    CHECK(r.status == 0);
+    CHECK(r.err.empty());
+    const std::string svg = slurp(file);
+    CHECK(count(svg, "<svg class=\"history-state\"") == states.size());
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < states.size(); ++k) {
+        const auto& [id, name] = states[k];
+        CAPTURE(name);
+        // The state's name above its drawing, in the history's order.
+        at = svg.find("<text class=\"state-name\"", at + 1);
+        REQUIRE(at != std::string::npos);
+        const auto nested = svg.find("<svg class=\"history-state\" data-state=\"" + id.substr(1) + "\"", at);
+        REQUIRE(nested != std::string::npos);
+        CHECK(nested < svg.find("<text class=\"state-name\"", at + 1));
+        const auto end = svg.find("</svg>", nested);
+        const std::string panel = svg.substr(at, end - at);
+        CHECK(panel.find(std::to_string(k + 1) + ". " + id + " " + name) != std::string::npos);
+        if (k > 0) CHECK(panel.find("after an") != std::string::npos);  // the transition that led here
+        // "cam/follower-P CAM FOLLOWER": the cam at the place's sample, an arrow per moving part.
+        const std::size_t place = std::stoul(name.substr(name.find('-') + 1));
+        const auto& p = vocabulary.at(place);
+        const std::string kind = p["kind"].string();
+        if (!((kind == "fsd" || kind == "external-division") && p["points"].array().size() == 2)) {
+            const auto& pts = p["points"].array();
+            const double want = pts[pts.size() / 2].array()[0].number() * 180 / std::numbers::pi;
+            CHECK(std::stod(transform_of(panel, "cam").substr(7)) == doctest::Approx(want).epsilon(1e-9));
+        }
+        const char cam_motion = name[name.size() - 3], follower_motion = name[name.size() - 1];
+        CHECK(cam_motion == '+');
+        CHECK(count(panel, "class=\"motion\"") == std::size_t(cam_motion != '0') + std::size_t(follower_motion != '0'));
+        CHECK(panel.find("data-part=\"cam\" data-motion=\"+\"") != std::string::npos);
+        if (follower_motion != '0')
+            CHECK(panel.find(std::string("data-part=\"follower\" data-motion=\"") + follower_motion + "\"") != std::string::npos);
+    }
+    // Bad histories.
+    const auto skip = draw(cam + " --history '" + states[0].first + " " + states[2].first + "' --svg " + file + " --cache " + cache);
+    CHECK(skip.status == 2);
+    CHECK(skip.err.find("--history:1:") != std::string::npos);
+    CHECK(skip.err.find("no transition from " + states[0].first + " to " + states[2].first) != std::string::npos);
+    CHECK(draw(cam + " --history '#999999' --svg " + file + " --cache " + cache).status == 2);
+    CHECK(draw(cam + " --history ' ' --svg " + file + " --cache " + cache).err.find("expected the states of a history") != std::string::npos);
 }

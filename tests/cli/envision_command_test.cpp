@@ -233,3 +233,38 @@ TEST_CASE("cli/envision: bad input is a located error, exit status 2, and nothin
         CHECK_MESSAGE(r.err.find(c.message) != std::string::npos, r.err);
     }
 }
+
+TEST_CASE("cli/envision: --dot groups the states by behavioural cycle and doubles the terminal states") {
+    // The cam without its return force has many cycles (docs/ENVISION.md); the ratchet a terminal state.
+    for (const std::string def : {"clock/cam_free.def", "clock/ratchet.def"}) {
+        CAPTURE(def);
+        const std::string mech = std::string(QM_SOURCE_DIR) + "/scenarios/" + def;
+        const std::string dot = std::string(QM_BINARY_DIR) + "/envision_test_groups.dot";
+        const auto r = envision(mech + " --json --dot " + dot);
+        REQUIRE(r.status == 0);
+        const auto doc = Json::parse(r.out);
+        REQUIRE(doc);
+        const Json& chain = (*doc)["chains"].array().at(0);
+        const std::string graph = slurp(dot);
+        const auto& cycles = chain["cycles"].array();
+        REQUIRE(!cycles.empty());
+        // Each cycle is one cluster holding exactly its states.
+        for (std::size_t i = 0; i < cycles.size(); ++i) {
+            const std::string head = "subgraph \"cluster_1_cycle_" + std::to_string(i + 1) + "\" {";
+            const auto from = graph.find(head);
+            REQUIRE(from != std::string::npos);
+            const std::string body = graph.substr(from, graph.find("    }\n", from) - from);
+            std::set<int> inside, want;
+            for (auto at = body.find("      c1s"); at != std::string::npos; at = body.find("      c1s", at + 1))
+                inside.insert(std::stoi(body.substr(at + 9)));
+            for (const auto& s : cycles[i].array()) want.insert(static_cast<int>(s.number()));
+            CHECK(inside == want);
+        }
+        CHECK(graph.find("cluster_1_cycle_" + std::to_string(cycles.size() + 1)) == std::string::npos);
+        for (const auto& t : chain["terminal"].array())
+            CHECK(graph.find("c1s" + std::to_string(static_cast<int>(t.number())) + " [label=") != std::string::npos);
+        std::size_t doubled = 0;
+        for (auto at = graph.find("peripheries=2"); at != std::string::npos; at = graph.find("peripheries=2", at + 1)) ++doubled;
+        CHECK(doubled == chain["terminal"].array().size());
+    }
+}

@@ -10,7 +10,16 @@ Checks, on the bundled escapement:
     drawn parts to that place's sample configuration, computed here from the --places JSON by the
     rule of geometry/place_sample.hpp, and shows as many contact marks as the data says (at least
     one at a CSEG); pointing at a place shows it, and leaving it shows the selected one again;
-  - screenshots at two window sizes have non-blank configuration-space and drawing areas.
+  - the page's envisionment is `qm-atms envision --json`'s; its graph shows at most 150 states at a
+    time (the escapement has more, and the page says so); selecting a state shows its next and
+    previous states (those of the transitions), the parts at its places' samples with one arrow per
+    moving part pointing its way, and its point in the configuration space; following a next state
+    selects it;
+  - a history typed in plays state by state (each of its states shown in turn, the point's trail
+    growing), `...` finds the shortest path, a step with no transition is refused, and the
+    described behaviour of `explore --path` (`envision --path`'s answer) steps through its states;
+  - screenshots at two window sizes have non-blank configuration-space, drawing, graph and state
+    areas.
 
 Usage: explore_page_test.py QM_ATMS SOURCE_DIR WORK_DIR. Exit 0 pass, 1 fail, 77 skipped (ctest's
 SKIP_RETURN_CODE) only when chromium, chromedriver or Python's Selenium is not installed
@@ -25,10 +34,12 @@ import struct
 import subprocess
 import sys
 import tempfile
+import time
 import zlib
 
 SKIP = 77
 SCENE = "scenarios/metric/escapement.def"
+DESCRIBED = "scape-wheel/pallets:free ; scape-wheel/pallets:contact ; scape-wheel/pallets:free"
 FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
          "--disable-background-networking", "--disable-component-update", "--disable-sync",
          "--disable-dev-shm-usage"]
@@ -107,10 +118,110 @@ def sample_configuration(vocabulary, place):
     return points[len(points) // 2]
 
 
+def Select(element):
+    from selenium.webdriver.support.ui import Select as Chosen
+    return Chosen(element)
+
+
 def rotation_degrees(transform):
     m = re.fullmatch(r"rotate\(([-0-9.eE+]+) [-0-9.eE+]+ [-0-9.eE+]+\)", transform or "")
     check(m is not None, "a turning part's transform is a rotation, not %r" % transform)
     return float(m.group(1))
+
+
+def check_envisionment(driver, data, wheel, pallets, described):
+    from selenium.webdriver.common.action_chains import ActionChains
+    from selenium.webdriver.common.by import By
+    chain = data["envisionment"]["chains"][0]
+    states = {s["id"]: s for s in chain["states"]}
+    nexts, prevs = {}, {}
+    for t in chain["transitions"]:
+        nexts.setdefault(t["from"], []).append(t["to"])
+        prevs.setdefault(t["to"], []).append(t["from"])
+    check(len(states) > 150, "the escapement has more states than the graph shows at once")
+    nodes = driver.find_elements(By.CSS_SELECTOR, "#graph g.state")
+    check(0 < len(nodes) <= 150, "the graph shows %d states" % len(nodes))
+    check("at most" in driver.find_element(By.ID, "graph-note").text, "the page says the graph is shown in parts")
+    shown = [int(n.get_attribute("data-state")) for n in nodes]
+    check(all(s in states for s in shown), "the graph shows states of the envisionment")
+    drawing = driver.find_element(By.ID, "state-drawing")
+
+    def rotation(part):
+        return rotation_degrees(drawing.find_element(By.CSS_SELECTOR, 'g.part[data-part="%s"]' % part).get_attribute("transform"))
+
+    def expect_state(sid, how):
+        check(drawing.get_attribute("data-state") == str(sid), "%s: state %s shown, not %d" % (how, drawing.get_attribute("data-state"), sid))
+        listed = lambda which: sorted(int(b.get_attribute("data-state")) for b in driver.find_elements(By.CSS_SELECTOR, "#state-%s button" % which))
+        check(listed("next") == sorted(nexts.get(sid, [])), "%s: state %d lists next states %r" % (how, sid, listed("next")))
+        check(listed("previous") == sorted(prevs.get(sid, [])), "%s: state %d lists previous states %r" % (how, sid, listed("previous")))
+        place = states[sid]["places"][0]["place"]
+        sample = data["pairs"][0]["samples"][place]["config"]
+        check(abs(rotation(wheel) - sample[0]) < 1e-6 and abs(rotation(pallets) - sample[1]) < 1e-6,
+              "%s: state %d draws the parts at place %d's sample" % (how, sid, place))
+        arrows = sorted((a.get_attribute("data-part"), a.get_attribute("data-motion"))
+                        for a in drawing.find_elements(By.CSS_SELECTOR, "g.motions g.motion"))
+        moving = sorted((part, m[1]) for part, m in states[sid]["motions"].items() if m != "(0)")
+        check(arrows == moving, "%s: state %d's motion arrows %r, its motions %r" % (how, sid, arrows, moving))
+        check(len(driver.find_elements(By.CSS_SELECTOR, "#state-cspace g.state-point circle")) == 1, "%s: the state's point" % how)
+
+    # Selecting a state in the graph: one with next and previous states.
+    target = next(s for s in shown if nexts.get(s) and prevs.get(s))
+    node = driver.find_element(By.CSS_SELECTOR, '#graph g.state[data-state="%d"] circle' % target)
+    driver.execute_script("arguments[0].scrollIntoView()", node)
+    ActionChains(driver).move_to_element(node).click().perform()
+    expect_state(target, "a click in the graph")
+    check("selected" in driver.find_element(By.CSS_SELECTOR, '#graph g.state[data-state="%d"]' % target).get_attribute("class"), "highlighted")
+    follow = driver.find_elements(By.CSS_SELECTOR, "#state-next button")[0]
+    goto = int(follow.get_attribute("data-state"))
+    follow.click()
+    expect_state(goto, "a next state")
+
+    # A history of four states along transitions, played.
+    history = [target]
+    while len(history) < 4:
+        history.append(next((n for n in nexts.get(history[-1], []) if n not in history), None))
+        check(history[-1] is not None, "a history of four states from %d" % target)
+    field = driver.find_element(By.ID, "history-input")
+    speed = driver.find_element(By.ID, "history-speed")
+    speed.clear()
+    speed.send_keys("150")
+
+    def enter(text):
+        field.clear()
+        field.send_keys(text)
+
+    enter(" ".join("#%d" % h for h in history))
+    driver.find_element(By.ID, "history-play").click()
+    seen, deadline = [], time.time() + 20
+    while time.time() < deadline:
+        shown_now = int(drawing.get_attribute("data-state"))
+        if not seen or seen[-1] != shown_now:
+            seen.append(shown_now)
+        if driver.find_element(By.ID, "history-play").text == "Play":
+            break
+        time.sleep(0.02)
+    check(seen[-len(history):] == history, "playing %r showed %r" % (history, seen))
+    check(driver.find_element(By.ID, "history-status").text.startswith("step 4 of 4"), "the history's last step")
+    trail = driver.find_element(By.CSS_SELECTOR, "#state-cspace g.state-point polyline").get_attribute("points").split()
+    check(len(trail) == 4, "the point's trail has %d points" % len(trail))
+    played = driver.find_elements(By.CSS_SELECTOR, "#graph g.state.played")
+    check(sorted(int(g.get_attribute("data-state")) for g in played) == sorted(history), "the graph shows the history's states")
+    # `...`: the shortest path; a step with no transition is refused.
+    enter("#%d ... #%d" % (history[0], history[3]))
+    driver.find_element(By.ID, "history-forward").click()
+    status = driver.find_element(By.ID, "history-status").text
+    check(re.match(r"step 1 of [234]: #%d " % history[0], status) is not None, "'...' loads a shortest path: %r" % status)
+    stranger = next(s for s in states if s not in nexts.get(history[0], []))
+    enter("#%d #%d" % (history[0], stranger))
+    driver.find_element(By.ID, "history-forward").click()
+    check("no transition from #%d to #%d" % (history[0], stranger) in driver.find_element(By.ID, "history-status").text, "a bad step refused")
+    # The described behaviour of `explore --path`, as `envision --path` answers it.
+    want = [int(m) for m in re.findall(r"^  #(\d+) ", described, re.M)]
+    check(len(want) >= 2 and data["paths"][0]["states"] == want, "the page's path %r, envision's %r" % (data["paths"][0]["states"], want))
+    Select(driver.find_element(By.ID, "history-paths")).select_by_value("0")
+    for k in range(2):
+        driver.find_element(By.ID, "history-forward").click()
+        expect_state(want[k], "step %d of the described behaviour" % (k + 1))
 
 
 def main():
@@ -121,7 +232,6 @@ def main():
         from selenium.webdriver.chrome.service import Service
         from selenium.webdriver.common.action_chains import ActionChains
         from selenium.webdriver.common.by import By
-        from selenium.webdriver.support.ui import Select
     except ImportError:
         webdriver = None
     missing = [name for name, found in (("chromium", chromium), ("chromedriver (chromium-driver)", chromedriver),
@@ -134,8 +244,14 @@ def main():
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     scene = os.path.join(source, SCENE)
-    run = subprocess.run([qm_atms, "explore", scene, "-o", os.path.join(work, "page"), "--no-cache"], capture_output=True, text=True)
+    cache = os.path.join(work, "cache")
+    run = subprocess.run([qm_atms, "explore", scene, "-o", os.path.join(work, "page"), "--cache", cache, "--path", DESCRIBED],
+                         capture_output=True, text=True)
     check(run.returncode == 0, "qm-atms explore failed: " + run.stderr)
+    envisioned = subprocess.run([qm_atms, "envision", scene, "--json", "--cache", cache], capture_output=True, text=True)
+    check(envisioned.returncode == 0, "qm-atms envision failed: " + envisioned.stderr)
+    described = subprocess.run([qm_atms, "envision", scene, "--path", DESCRIBED, "--cache", cache], capture_output=True, text=True)
+    check(described.returncode == 0, "qm-atms envision --path failed: " + described.stderr)
     places = subprocess.run([qm_atms, "--places", scene, "--json", "--no-cache"], capture_output=True, text=True)
     check(places.returncode == 0, "qm-atms --places failed: " + places.stderr)
     vocabulary = json.loads(places.stdout)["pairs"][0]["vocabulary"]
@@ -161,7 +277,8 @@ def main():
 
         # The page's data is the --places vocabulary: same ids, kinds and points.
         data = json.loads(driver.execute_script("return document.getElementById('qm-data').textContent"))
-        check(data["schema"] == "qm-explore/1" and data["envisionment"] is None, "the data blob's schema")
+        check(data["schema"] == "qm-explore/1", "the data blob's schema")
+        check(data["envisionment"] == json.loads(envisioned.stdout), "the page's envisionment is not envision --json's")
         page_vocabulary = data["pairs"][0]["vocabulary"]
         check([(p["id"], p["kind"], p["points"]) for p in page_vocabulary["places"]] ==
               [(p["id"], p["kind"], p["points"]) for p in vocabulary["places"]], "the page's places differ from --places")
@@ -209,10 +326,13 @@ def main():
         go[0].click()
         expect_place(goto, "an adjacency")
 
-        # Screenshots at two window sizes: the two pictures are there and drawn.
+        check_envisionment(driver, data, wheel, pallets, described.stdout)
+        Select(driver.find_element(By.ID, "graph-view")).select_by_value("0")  # the first group: more than a path
+
+        # Screenshots at two window sizes: the pictures are there and drawn.
         for width, height in ((1280, 900), (700, 1100)):
             driver.set_window_size(width, height)
-            for area in ("cspace", "drawing"):
+            for area in ("cspace", "drawing", "graph", "state-drawing"):
                 element = driver.find_element(By.ID, area)
                 driver.execute_script("arguments[0].scrollIntoView()", element)
                 share, w, h = inked(element.screenshot_as_png)

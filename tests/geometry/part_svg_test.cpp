@@ -174,3 +174,49 @@ TEST_CASE("geometry/part_svg: a part's transform is its pose") {
             for (const Eigen::Vector2d& x : {Eigen::Vector2d(0, 0), Eigen::Vector2d(1.5, -0.7)}) CHECK((t * x - pose * x).norm() < 1e-8);
         }
 }
+
+TEST_CASE("geometry/part_svg: a moving part's arrow turns its way about the pivot or points its way along the axis") {
+    const Mechanism m = scene();
+    const Part& wheel = m.parts[PartId{0}];
+    const Part& slider = m.parts[PartId{1}];
+    CHECK(drawing({{&wheel, 0.3}, {&slider, 0.2}}, {}).find("class=\"motions\"") == std::string::npos);  // nothing moves
+    auto points = [](const std::string& text) {
+        std::vector<Eigen::Vector2d> out;
+        std::istringstream in(text);
+        for (std::string pair; in >> pair;) {
+            const auto comma = pair.find(',');
+            out.emplace_back(std::stod(pair.substr(0, comma)), std::stod(pair.substr(comma + 1)));
+        }
+        return out;
+    };
+    for (int sign : {1, -1}) {
+        for (auto [qw, qs] : {std::pair{0.0, 0.0}, std::pair{2.0, 1.1}}) {
+            CAPTURE(sign);
+            CAPTURE(qw);
+            const auto svg = parse_svg(drawing({{&wheel, qw, sign}, {&slider, qs, -sign}}, {}));
+            const SvgElement* motions = svg->with_class("motions");
+            REQUIRE(motions != nullptr);
+            CHECK(motions->attr("transform") == svg->with_class("world")->attr("transform"));
+            const auto arrows = motions->all([](const SvgElement& e) { return e.has_class("motion"); });
+            REQUIRE(arrows.size() == 2);
+            for (const SvgElement* a : arrows) {
+                const bool turning = a->attr("data-part") == "wheel";
+                const int s = turning ? sign : -sign;
+                CHECK(a->attr("data-motion") == (s > 0 ? "+" : "-"));
+                // In the world: the head's tip, and the direction from the head's base to it.
+                const Eigen::Affine2d T = parse_transform(a->attr("transform"));
+                const auto head = points(a->named("polygon").front()->attr("points"));
+                REQUIRE(head.size() == 3);
+                const Eigen::Vector2d tip = T * head[0], base = T * (0.5 * (head[1] + head[2])), d = (tip - base).normalized();
+                if (turning) {
+                    const Eigen::Vector2d r = tip - wheel.dof.pivot;
+                    CHECK(r.norm() == doctest::Approx(0.6 * wheel.reach()));
+                    CHECK(std::abs(r.normalized().dot(d)) < 0.35);                  // roughly along the circle
+                    CHECK((r.x() * d.y() - r.y() * d.x()) * s > 0);                  // counter-clockwise for +
+                } else {
+                    CHECK(d.dot(s * slider.dof.axis.normalized()) == doctest::Approx(1.0));
+                }
+            }
+        }
+    }
+}
