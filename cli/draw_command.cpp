@@ -1,5 +1,6 @@
 // cli/draw_command.cpp: `qm-atms draw` (thesis Figures 9.11-9.13: the parts drawn at a place).
 #include "draw_command.hpp"
+#include "geometry_usage.hpp"
 
 #include "pair_places.hpp"
 
@@ -114,11 +115,6 @@ int draw_place(const g::Mechanism& m, const DrawArgs& a, std::ostream& os, std::
 }
 
 }  // namespace
-
-const char* draw_usage() noexcept {
-    return "       qm-atms draw METRIC-SCENE [--config 'PART=VALUE, ...' | --place A--B:ID] --svg FILE [--size WxH]\n"
-           "                    [--cache DIR | --no-cache]    the parts drawn at a configuration or at a place\n";
-}
 
 int draw_command(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
     (void)out;
