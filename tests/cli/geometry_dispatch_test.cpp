@@ -86,8 +86,11 @@ TEST_CASE("cli/geometry_dispatch: is_metric_scene reads past a byte-order mark, 
 TEST_CASE("cli/geometry_dispatch: each geometry command is the same through qm-atms as through qm-atms-geometry") {
     const std::string cam = metric_scene("cam.def");
     const std::string cache = std::string(QM_BINARY_DIR) + "/geometry-dispatch-place-cache";
+    // The place cache is filled first: `--places` says which pairs came from it.
+    REQUIRE(qm::test::run_executable(full, "--places " + cam + " --cache " + cache, "geometry_dispatch_test").status == 0);
     check_same("--emit-def " + cam + " 'cam=30, follower=0.1'");
     check_same("--places " + cam + " --json --cache " + cache);
+    check_same("--places " + cam + " --no-cache");
     check_same("envision " + cam + " --cache " + cache);
     check_same("envision " + cam + " --table --cache " + cache);
     check_same(cam + " --config 'cam=30, follower=0.1' --json");
