@@ -1,5 +1,6 @@
 // cli/draw_command.cpp: `qm-atms draw` (thesis Figures 9.11-9.13: the parts drawn at a place).
 #include "draw_command.hpp"
+#include "geometry_usage.hpp"
 
 #include "pair_places.hpp"
 #include "state_drawing.hpp"
@@ -140,12 +141,6 @@ int draw_history(const g::Mechanism& m, const DrawArgs& a, std::ostream& os, std
 }
 
 }  // namespace
-
-const char* draw_usage() noexcept {
-    return "       qm-atms draw METRIC-SCENE [--config 'PART=VALUE, ...' | --place A--B:ID | --history 'STATE STATE ...' [--columns N]]\n"
-           "                    --svg FILE [--size WxH] [--cache DIR | --no-cache]\n"
-           "                                                  the parts drawn at a configuration, at a place, or along a history\n";
-}
 
 int draw_command(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
     (void)out;

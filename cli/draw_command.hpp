@@ -23,6 +23,5 @@ namespace qm::cli {
 
 // args: the arguments after `draw`.
 [[nodiscard]] int draw_command(std::span<const std::string> args, std::ostream& out, std::ostream& err);
-[[nodiscard]] const char* draw_usage() noexcept;
 
 }  // namespace qm::cli

@@ -1,5 +1,6 @@
 // cli/envision_command.cpp: `qm-atms envision` (docs/ENVISION.md).
 #include "envision_command.hpp"
+#include "geometry_usage.hpp"
 #include "pair_places.hpp"
 #include "rules_location.hpp"
 
@@ -174,14 +175,6 @@ int answer_questions(const Options& o, const g::Mechanism& m, const ev::Envision
 }
 
 }  // namespace
-
-const char* envision_usage() noexcept {
-    return "       qm-atms envision METRIC-SCENE [--table | --json] [--max-states N] [--without 'Force PART [CAUSE]']...\n"
-           "                        [--from STATE] [--next STATE] [--previous STATE] [--path 'DESC; DESC; ...' [--avoid 'DESC']...]\n"
-           "                        [--why-not 'STATE -> STATE'] [--dot FILE] [--svg FILE]\n"
-           "                        [--cache DIR | --no-cache] [--rules DIR] [--stats]\n"
-           "                                                  the envisionment: states, transitions, cycles (docs/ENVISION.md)\n";
-}
 
 int envision_command(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
     if (args.empty()) return usage_error(err, "envision takes a metric scene");

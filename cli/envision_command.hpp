@@ -18,5 +18,4 @@
 namespace qm::cli {
 // args: the arguments after `envision`.
 [[nodiscard]] int envision_command(std::span<const std::string> args, std::ostream& out, std::ostream& err);
-[[nodiscard]] const char* envision_usage() noexcept;
 }  // namespace qm::cli

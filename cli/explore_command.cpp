@@ -1,5 +1,6 @@
 // cli/explore_command.cpp: `qm-atms explore`, the explorer page (docs/EXPLORER.md).
 #include "explore_command.hpp"
+#include "geometry_usage.hpp"
 
 #include "explore_assets.hpp"
 #include "explore_data.hpp"
@@ -25,11 +26,6 @@ int usage_error(std::ostream& err, const std::string& what) {
 }
 
 }  // namespace
-
-const char* explore_usage() noexcept {
-    return "       qm-atms explore METRIC-SCENE -o DIR [--no-envision | --path 'DESC; DESC; ...'... [--avoid 'DESC']...]\n"
-           "                       [--cache DIR | --no-cache]  a page (DIR/index.html) to explore the places and states\n";
-}
 
 int explore_command(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
     if (args.empty()) return usage_error(err, "explore takes a metric scene");

@@ -23,6 +23,5 @@ namespace qm::cli {
 
 // args: the arguments after `explore`.
 [[nodiscard]] int explore_command(std::span<const std::string> args, std::ostream& out, std::ostream& err);
-[[nodiscard]] const char* explore_usage() noexcept;
 
 }  // namespace qm::cli

@@ -3,12 +3,15 @@
 //             terminal through libedit (BSD editline, Debian package libedit-dev; its readline
 //             interface): a prompt, line editing (arrows, Ctrl-A/E, ...) and a history recalled
 //             with Up/Down; from anything else (a pipe, a file, a test's stream) line by line with
-//             no prompt, so a script's output holds only the answers.
+//             no prompt, so a script's output holds only the answers. libedit is loaded when a
+//             terminal is read, not at start-up; if it cannot be, a terminal gets the prompt
+//             without editing, after a note on standard error.
 // Ownership:  a LineInput borrows the stream it reads; one terminal LineInput at a time (libedit's
 //             readline interface keeps global state).
 // Errors:     none: the end of the input (Ctrl-D on a terminal) is an empty optional.
 #pragma once
 #include <istream>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -19,6 +22,9 @@ class LineInput {
 public:
     // A terminal when `in` is std::cin and standard input is a terminal.
     LineInput(std::istream& in, std::ostream& out);
+    ~LineInput();
+    LineInput(const LineInput&) = delete;
+    LineInput& operator=(const LineInput&) = delete;
     [[nodiscard]] bool terminal() const noexcept { return terminal_; }
     // The next line without its newline, after showing `prompt` on a terminal; a non-blank line
     // read from a terminal joins the history. At the end of a terminal's input a newline is
@@ -29,6 +35,8 @@ private:
     std::istream& in_;
     std::ostream& out_;
     bool terminal_ = false;
+    struct Editline;  // libedit's functions, opened for a terminal (line_editor.cpp)
+    std::unique_ptr<Editline> editline_;
 };
 
 }  // namespace qm::cli

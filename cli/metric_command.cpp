@@ -1,6 +1,7 @@
 // cli/metric_command.cpp: metric scenes at the command line: the Alex scene at a configuration
 // (built by bridge/scene_at_config, printed here) and the place vocabularies of the pairs.
 #include "metric_command.hpp"
+#include "geometry_usage.hpp"
 
 #include "pair_places.hpp"
 
@@ -57,12 +58,6 @@ std::string emitted_scene_comment(const std::string& path, const std::string& co
 }
 
 }  // namespace
-
-const char* metric_usage() noexcept {
-    return "       qm-atms --emit-def METRIC-SCENE [CONFIG]   Alex scene of a metric scene at CONFIG ('part=value, ...')\n"
-           "       qm-atms --places METRIC-SCENE [--json] [--svg DIR] [--cache DIR | --no-cache]\n"
-           "                                                  place vocabulary of each kinematic pair\n";
-}
 
 int emit_def_command(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
     if (args.empty() || args.size() > 2) return usage_error(err, "--emit-def takes a metric scene and an optional CONFIG");

@@ -27,6 +27,5 @@ namespace qm::cli {
 // args: the arguments after `--emit-def` / `--places`.
 [[nodiscard]] int emit_def_command(std::span<const std::string> args, std::ostream& out, std::ostream& err);
 [[nodiscard]] int places_command(std::span<const std::string> args, std::ostream& out, std::ostream& err);
-[[nodiscard]] const char* metric_usage() noexcept;
 
 }  // namespace qm::cli

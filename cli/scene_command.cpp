@@ -6,7 +6,7 @@
 #include "analysis/analysis.hpp"
 #include "analysis/result_printer.hpp"
 #include "analysis/why_printer.hpp"
-#include "bridge/scene_at_config.hpp"
+#include "geometry_dispatch.hpp"
 #include "query_text.hpp"
 #include "rules_location.hpp"
 #include "scene/scene_parser.hpp"
@@ -15,7 +15,6 @@
 #include "qm/file_text.hpp"
 #include "qm/source_text.hpp"
 #include "session.hpp"
-#include <cctype>
 #include <charconv>
 #include <optional>
 #include <sstream>
@@ -23,33 +22,23 @@
 namespace qm::cli {
 namespace {
 
-// A metric scene (docs/METRIC_SCENE_FORMAT.md) opens with `(Defmechanism`, after a byte-order
-// mark, blanks and `;` comments; an Alex scene does not.
-bool is_metric_scene(std::string_view text) {
-    std::size_t i = text.starts_with(SourceText::byte_order_mark) ? SourceText::byte_order_mark.size() : 0;
-    for (;;) {
-        while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
-        if (i >= text.size() || text[i] != ';') break;
-        while (i < text.size() && text[i] != '\n') ++i;
-    }
-    if (i >= text.size() || text[i] != '(') return false;
-    for (++i; i < text.size() && std::isspace(static_cast<unsigned char>(text[i]));) ++i;
-    std::string word;
-    for (; i < text.size() && std::isalnum(static_cast<unsigned char>(text[i])) && word.size() < 12; ++i)
-        word += static_cast<char>(std::tolower(static_cast<unsigned char>(text[i])));
-    return word == "defmechanism";
-}
-
 // The scene of options.scene: a metric scene at --config, else an Alex scene. Errors in d.
-std::optional<scene::Scene> load_scene(const SceneOptions& options, Diagnostics& d, std::ostream& err) {
+std::optional<scene::Scene> load_scene(const SceneOptions& options, MetricSceneReader read_metric, Diagnostics& d,
+                                       std::ostream& err) {
     FileText file = read_file_text(options.scene);
     if (!file.text) {
         d.error({options.scene, 1, 1}, "cannot read scene file '" + options.scene + "': " + file.why_not);
         return std::nullopt;
     }
     if (is_metric_scene(*file.text)) {
+        // The light qm-atms sent a metric scene to qm-atms-geometry (cli/geometry_dispatch.hpp);
+        // it meets one here only if the file became one since.
+        if (!read_metric) {
+            d.error({options.scene, 1, 1}, "a metric scene (Defmechanism) is read by qm-atms-geometry, not by this executable");
+            return std::nullopt;
+        }
         // A metric scene is analysed at a configuration, as the Alex scene --emit-def writes it.
-        auto scene = bridge::read_scene_at_config(options.scene, options.config.value_or(""), d);
+        auto scene = read_metric(options.scene, options.config.value_or(""), d);
         if (scene && !d.items().empty()) {
             d.print(err);  // warnings (e.g. a contact an Alex scene cannot state)
             d = Diagnostics{};
@@ -129,7 +118,8 @@ std::string scene_usage() {
            std::string(limits_usage());
 }
 
-int scene_command(std::span<const std::string> args, std::istream& in, std::ostream& out, std::ostream& err) {
+int scene_command(std::span<const std::string> args, std::istream& in, std::ostream& out, std::ostream& err,
+                  MetricSceneReader read_metric) {
     auto options = parse_scene_options(args, err);
     if (!options) {
         err << scene_usage();
@@ -137,7 +127,7 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     }
     apply_memory_limit(options->limits);
     Diagnostics d;
-    std::optional<scene::Scene> scene = load_scene(*options, d, err);
+    std::optional<scene::Scene> scene = load_scene(*options, read_metric, d, err);
     if (!scene || d.has_errors()) {
         d.print(err);
         return 2;

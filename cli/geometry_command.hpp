@@ -1,0 +1,27 @@
+// cli/geometry_command.hpp
+// Provides:   geometry_command(), which runs a command line that needs the geometry stack
+//             (needs_geometry(), cli/geometry_dispatch.hpp). It has two definitions, one linked
+//             into each executable built from cli/ (docs/perf/startup.md):
+//               - cli/geometry_command.cpp, in qm-atms-geometry: the command itself (envision,
+//                 draw, explore, --emit-def, --places, or the analysis of a metric scene);
+//               - cli/geometry_delegate.cpp, in the light qm-atms: replaces the process with the
+//                 qm-atms-geometry found in the same folder as the running executable
+//                 (/proc/self/exe), with the same argv, environment and standard streams, so the
+//                 user sees one command whose output, errors and exit status are the full one's.
+// Errors:     as the commands' (2 for bad input, diagnostics on err); the delegate returns 1 with
+//             a message on err when qm-atms-geometry cannot be started (missing, not executable).
+//             qm::InternalError and resource limits propagate to main, which names `doing`.
+#pragma once
+#include <istream>
+#include <ostream>
+#include <span>
+#include <string>
+
+namespace qm::cli {
+
+// argv: main's, argv[0] the program name; args: argv[1..] as strings; doing: what is being done,
+// for main's internal-error messages.
+[[nodiscard]] int geometry_command(char** argv, std::span<const std::string> args, std::istream& in, std::ostream& out,
+                                   std::ostream& err, std::string& doing);
+
+}  // namespace qm::cli
