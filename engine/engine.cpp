@@ -6,24 +6,25 @@
 
 namespace qm::engine {
 
+namespace {
+std::shared_ptr<const SharedProgram> not_null(std::shared_ptr<const SharedProgram> p) {
+    QM_REQUIRE(p != nullptr, "an engine needs a program");
+    return p;
+}
+}  // namespace
+
 Engine::Engine(CompiledProgram program, ValueTable values, const BuiltinRegistry& builtins)
-    : program_(std::move(program)), values_(std::move(values)), builtins_(builtins) {
+    : Engine(share_program(std::move(program)), std::move(values), builtins) {}
+
+Engine::Engine(std::shared_ptr<const SharedProgram> program, ValueTable values, const BuiltinRegistry& builtins)
+    : shared_(not_null(std::move(program))),
+      program_(shared_->program),
+      values_(std::move(values)),
+      builtins_(builtins) {
     atms_.add_consumer(*this);
     for (std::size_t i = 0; i < program_.rules.size(); ++i) {
-        const RuleId r{static_cast<std::uint32_t>(i)};
         rule_fresh_.push_back({});
         rule_matched_.push_back(0);
-        // The predicates whose new facts can extend a match of the rule (drain() wakes it for those).
-        std::vector<ValueId> triggers;
-        for (const auto& c : program_.rules[r].conditions) {
-            if (c.kind == CompiledCondition::Kind::match) triggers.push_back(c.atom.predicate);
-            if (c.kind == CompiledCondition::Kind::for_all || c.kind == CompiledCondition::Kind::exists)
-                for (const auto& a : c.atoms) triggers.push_back(a.predicate);
-        }
-        std::sort(triggers.begin(), triggers.end());
-        triggers.erase(std::unique(triggers.begin(), triggers.end()), triggers.end());
-        for (ValueId p : triggers) rules_by_trigger_[p.value].push_back(r);
-        rule_plans_.push_back(plan_matching(program_.rules[r]));
     }
     for (const auto& p : program_.premises) {
         FactId f = intern_fact(p.predicate, p.args);

@@ -6,8 +6,9 @@
 //             nogoods; `assume` makes assumptions; `[exactly one ...]` declares choice sets.
 //             The C++ API for drivers: add premises and assumptions, run (generically or relative
 //             to a context environment), look up facts, nodes and labels, enumerate interpretations.
-// Ownership:  an Engine owns its Atms, its facts, its values and its compiled program; ids it hands
-//             out (FactId, NodeId, EnvId, InformantId) are valid for its lifetime.
+// Ownership:  an Engine owns its Atms, its facts and its values, and shares its compiled program
+//             (shared_program.hpp: read only, so engines over one program may run in different
+//             threads); ids it hands out (FactId, NodeId, EnvId, InformantId) are valid for its lifetime.
 // Invariants: a rule never fires twice on the same binding (in the same context, for a rule with a
 //             negation or aggregate); strata run in order; output order is deterministic.
 // Semantics:  of `not`, aggregates and contexts: docs/RULES.md "## Semantics".
@@ -26,9 +27,11 @@
 #include "engine/firing.hpp"
 #include "engine/matcher.hpp"
 #include "engine/run_options.hpp"
+#include "engine/shared_program.hpp"
 #include "engine/value_table.hpp"
 #include "qm/diagnostics.hpp"
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <span>
@@ -49,6 +52,9 @@ struct ContextRun {
 class Engine final : private atms::Consumer {
 public:
     Engine(CompiledProgram program, ValueTable values, const BuiltinRegistry& builtins = default_builtins());
+    // Over a program shared with other engines. Pre: program is not null; values is the table the
+    // program was compiled with (or a copy of it).
+    Engine(std::shared_ptr<const SharedProgram> program, ValueTable values, const BuiltinRegistry& builtins = default_builtins());
     ~Engine() override;
     Engine(const Engine&) = delete;
     Engine& operator=(const Engine&) = delete;
@@ -161,7 +167,8 @@ private:
                             std::span<const atms::NodeId> antecedents, std::vector<atms::AssumptionId> set,
                             Diagnostics& diagnostics);
 
-    CompiledProgram program_;
+    std::shared_ptr<const SharedProgram> shared_;
+    const CompiledProgram& program_;                     // shared_->program
     ValueTable values_;
     const BuiltinRegistry& builtins_;
     atms::Atms atms_;
@@ -176,8 +183,6 @@ private:
     // `match` or a quantifier), in activation order; woken_ lists the rules with some, ascending.
     IdVector<RuleId, std::vector<FactId>> rule_fresh_;
     std::vector<RuleId> woken_;
-    std::unordered_map<std::uint32_t, std::vector<RuleId>> rules_by_trigger_;  // predicate -> rules, ascending
-    IdVector<RuleId, MatchPlan> rule_plans_;                    // plan_matching() of each rule
     std::vector<std::vector<atms::AssumptionId>> choice_sets_;
     std::vector<SourceLocation> choice_set_where_;       // the `exactly one` that declared each set
     std::vector<atms::JustId> choice_set_constraints_;   // each set's at-most-one constraint

@@ -95,8 +95,8 @@ bool Engine::drain(std::uint32_t s, std::optional<std::uint32_t> context, Diagno
 
 // Queues a newly active fact for every rule that matches its predicate.
 void Engine::log_active(FactId f) {
-    auto it = rules_by_trigger_.find(facts_.fact(f).predicate.value);
-    if (it == rules_by_trigger_.end()) return;
+    auto it = shared_->by_trigger.find(facts_.fact(f).predicate.value);
+    if (it == shared_->by_trigger.end()) return;
     for (RuleId r : it->second) {
         auto at = std::lower_bound(woken_.begin(), woken_.end(), r);
         if (at == woken_.end() || *at != r) woken_.insert(at, r);
@@ -145,7 +145,7 @@ void Engine::match_fresh(RuleId r, std::span<const FactId> fresh, std::optional<
             const auto& cond = rule.conditions[c];
             // A repeat of an earlier identical condition matches where that one does: its seed
             // finds the same matches, already found through the earlier one's.
-            if (cond.kind == CompiledCondition::Kind::match && cond.atom.predicate == p && !rule_plans_[r].repeat_of[c])
+            if (cond.kind == CompiledCondition::Kind::match && cond.atom.predicate == p && !shared_->plans[r].repeat_of[c])
                 match_rule(r, Seed{c, f}, context, diagnostics);
         }
     }
@@ -166,7 +166,7 @@ void Engine::match_rule(RuleId r, std::optional<Seed> seed, std::optional<std::u
                               [](const CompiledConsequent& c) { return c.kind == CompiledConsequent::Kind::falsity; });
     try {
         matcher.match(
-            rule, rule_plans_[r], seed,
+            rule, shared_->plans[r], seed,
             [&](const Binding& b, std::span<const FactId> ants) {
                 agenda_.push(RuleInstance{r, b, std::vector<FactId>(ants.begin(), ants.end()), rule_context}, urgent);
             },

@@ -30,7 +30,7 @@ ValueId ValueTable::direction(std::string_view signs) {
 }
 
 ValueId ValueTable::set(std::vector<ValueId> elements) {
-    for (ValueId e : elements) QM_REQUIRE(values_.contains(e), "set element id out of range");
+    for (ValueId e : elements) QM_REQUIRE(e.value < size(), "set element id out of range");
     std::sort(elements.begin(), elements.end(), [this](ValueId a, ValueId b) { return less(a, b); });
     elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
     Value v;
@@ -40,8 +40,8 @@ ValueId ValueTable::set(std::vector<ValueId> elements) {
 }
 
 const Value& ValueTable::value(ValueId id) const {
-    QM_REQUIRE(values_.contains(id), "value id out of range");
-    return values_[id];
+    QM_REQUIRE(id.value < size(), "value id out of range");
+    return id.value < base_size_ ? base_->values[id.value] : values_[id.value - base_size_];
 }
 
 bool ValueTable::less(ValueId a, ValueId b) const {
@@ -88,7 +88,7 @@ std::string ValueTable::render(const Value& v) const {
             std::string out = "{";
             for (std::size_t i = 0; i < v.elements.size(); ++i) {
                 if (i > 0) out += ' ';
-                out += printed_[v.elements[i]];
+                out += print(v.elements[i]);
             }
             return out + "}";
         }
@@ -98,11 +98,29 @@ std::string ValueTable::render(const Value& v) const {
 
 ValueId ValueTable::intern(Value v) {
     std::string text = render(v);
+    if (base_)
+        if (auto it = base_->by_text.find(text); it != base_->by_text.end()) return it->second;
     if (auto it = by_text_.find(text); it != by_text_.end()) return it->second;
-    ValueId id = values_.push_back(std::move(v));
+    const ValueId id{static_cast<std::uint32_t>(size())};
+    values_.push_back(std::move(v));
     printed_.push_back(text);
     by_text_.emplace(std::move(text), id);
     return id;
+}
+
+void ValueTable::share() {
+    if (values_.empty() && applications_.empty()) return;
+    auto merged = base_ ? std::make_shared<Values>(*base_) : std::make_shared<Values>();
+    for (auto& v : values_) merged->values.push_back(std::move(v));
+    for (auto& p : printed_) merged->printed.push_back(std::move(p));
+    merged->by_text.merge(by_text_);
+    for (auto& [key, a] : applications_) merged->applications.insert_or_assign(key, std::move(a));
+    base_ = std::move(merged);
+    base_size_ = static_cast<std::uint32_t>(base_->values.size());
+    values_.clear();
+    printed_.clear();
+    by_text_.clear();
+    applications_.clear();
 }
 
 std::size_t ValueTable::KeyHash::operator()(const ApplicationKey& k) const noexcept {
@@ -122,8 +140,11 @@ ValueTable::ApplicationKey ValueTable::application_key(std::uintptr_t function, 
 
 const ValueTable::Application* ValueTable::remembered(std::uintptr_t function, std::span<const ValueId> args) const {
     if (args.size() > max_remembered_args) return nullptr;
-    auto it = applications_.find(application_key(function, args));
-    return it == applications_.end() ? nullptr : &it->second;
+    const ApplicationKey key = application_key(function, args);
+    if (auto it = applications_.find(key); it != applications_.end()) return &it->second;
+    if (base_)
+        if (auto it = base_->applications.find(key); it != base_->applications.end()) return &it->second;
+    return nullptr;
 }
 
 void ValueTable::remember(std::uintptr_t function, std::span<const ValueId> args, Application result) {

@@ -38,13 +38,18 @@ std::optional<Laws> Laws::load_files(std::span<const std::string> files, const s
     namespace c = bridge::clock;
     auto space = slice(c::state_space_inputs, c::state_space_outputs);
     auto state = slice(c::state_inputs, c::state_outputs);
-    return Laws(std::move(*all), std::move(space), std::move(state), folder);
+    return Laws(Program(std::move(*all)), Program(std::move(space)), Program(std::move(state)), folder);
 }
 
-std::unique_ptr<engine::Engine> Laws::engine() const { return std::make_unique<engine::Engine>(all_.program, all_.values); }
-std::unique_ptr<engine::Engine> Laws::state_space_engine() const {
-    return std::make_unique<engine::Engine>(space_.program, space_.values);
+Laws::Program::Program(engine::LoadedProgram loaded)
+    : program(engine::share_program(std::move(loaded.program))), values(std::move(loaded.values)) {
+    values.share();
 }
-std::unique_ptr<engine::Engine> Laws::state_engine() const { return std::make_unique<engine::Engine>(state_.program, state_.values); }
+
+std::unique_ptr<engine::Engine> Laws::Program::engine() const { return std::make_unique<engine::Engine>(program, values); }
+
+std::unique_ptr<engine::Engine> Laws::engine() const { return all_.engine(); }
+std::unique_ptr<engine::Engine> Laws::state_space_engine() const { return space_.engine(); }
+std::unique_ptr<engine::Engine> Laws::state_engine() const { return state_.engine(); }
 
 }  // namespace qm::envision

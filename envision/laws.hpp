@@ -6,8 +6,10 @@
 //             facts the bridge gives it and the conclusions the driver reads,
 //             bridge/clock_vocabulary.hpp): a state's engine is small, and it is made hundreds
 //             of times.
-// Ownership:  Laws owns the compiled programs and their pristine value tables; each engine made
-//             gets its own copies, so engines are independent.
+// Ownership:  Laws holds the compiled programs (engine/shared_program.hpp) and their pristine value
+//             tables (ValueTable::share), both read only: each engine made shares the program and
+//             gets a copy of the table that owns only the values the engine adds, so engines are
+//             independent (and may run in different threads) and cheap to make.
 // Errors:     a folder with no .rules file, or rule files with errors: located diagnostics, and
 //             load() returns nothing.
 // Knows nothing of any law: which laws there are is the folder's business.
@@ -36,9 +38,15 @@ public:
     [[nodiscard]] const std::filesystem::path& folder() const noexcept { return folder_; }
 
 private:
-    Laws(engine::LoadedProgram all, engine::LoadedProgram space, engine::LoadedProgram state, std::filesystem::path folder)
+    struct Program {
+        std::shared_ptr<const engine::SharedProgram> program;
+        engine::ValueTable values;  // shared (ValueTable::share)
+        explicit Program(engine::LoadedProgram loaded);
+        [[nodiscard]] std::unique_ptr<engine::Engine> engine() const;
+    };
+    Laws(Program all, Program space, Program state, std::filesystem::path folder)
         : all_(std::move(all)), space_(std::move(space)), state_(std::move(state)), folder_(std::move(folder)) {}
-    engine::LoadedProgram all_, space_, state_;
+    Program all_, space_, state_;
     std::filesystem::path folder_;
 };
 
