@@ -56,8 +56,8 @@ public:
     }
 
     // `prefer (c ?x ...) by (r ?x ... ?k)` (docs/RULES.md "Preferences"): c's arguments are distinct
-    // variables; r's are those variables and one more, the rank, each once; some `exactly one`
-    // assumes c, since the preference chooses among the members of c's choice sets.
+    // variables; r's are those variables and one more, the rank, each once; one preference per c.
+    // A warning where no `exactly one` assumes c: the preference chooses among c's choice sets.
     void preference(const PreferenceSpec& p, const std::set<std::string>& chosen) {
         use(p.choice);
         use(p.rank);
@@ -84,9 +84,13 @@ public:
                                       "(the rank), but has " + std::to_string(extra.size()));
         if (auto [it, fresh] = preferred_.try_emplace(p.choice.predicate, &p); !fresh)
             return fail(p.choice.where, "(" + p.choice.predicate + " ...) already has a preference at " + at(it->second->where));
+        // A warning, not an error: such a preference chooses nothing (e.g. a few laws loaded alone,
+        // their motions stated as inputs, as tests/rules/law_harness.hpp does).
         if (!chosen.contains(p.choice.predicate))
-            fail(p.choice.where, "no `exactly one` assumes (" + p.choice.predicate +
-                                     " ...): a preference chooses among the members of choice sets");
+            diagnostics_.add({Severity::warning, p.choice.where,
+                              "`prefer`: no `exactly one` assumes (" + p.choice.predicate +
+                                  " ...): the preference chooses nothing, since it chooses among the members of choice sets",
+                              {}, {}});
     }
 
     [[nodiscard]] bool ok() const { return ok_; }

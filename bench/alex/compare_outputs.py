@@ -97,7 +97,9 @@ def main():
     differ = []
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool, \
             open(os.path.join(out_dir, "differences.txt"), "w") as report:
-        for c, (a, b) in zip(commands, pool.map(both, commands)):
+        for i, (c, (a, b)) in enumerate(zip(commands, pool.map(both, commands))):
+            if (i + 1) % 200 == 0:
+                print(f"{i + 1} of {len(commands)} compared, {len(differ)} differ", flush=True)
             if a != b:
                 differ.append(c)
                 report.write("=== " + " ".join(repr(x) for x in c) + "\n")

@@ -73,6 +73,13 @@ TEST_CASE("engine/preferences: malformed declarations are located errors") {
     CHECK(errors_of(choose + "prefer (go ?o ?d) by (near ?o ?d)\n").find("the rank atom must have exactly one variable that the chosen atom does not have (the rank), but has 0") != std::string::npos);
     CHECK(errors_of(choose + "prefer (go ?o ?d) by (near ?o ?d 3)\n").find("the rank atom's arguments must be distinct variables") != std::string::npos);
     CHECK(errors_of(choose + "prefer (stay ?o ?d) by (near ?o ?d ?k)\n").find("p.rules:4:8: `prefer`: no `exactly one` assumes (stay ...)") == 0);
+    {  // only a warning: the program is fine, the preference chooses nothing
+        qm::Diagnostics d;
+        ProgramSpec spec;
+        read_rule_text(choose + "prefer (stay ?o ?d) by (near ?o ?d ?k)\n", "p.rules", spec, d);
+        CHECK(check_program(spec, d));
+        CHECK(!d.has_errors());
+    }
     CHECK(errors_of(choose + "prefer (go ?o ?d) by (near ?o ?d ?k)\nprefer (go ?o ?d) by (far ?o ?d ?k)\n")
               .find("p.rules:5:8: `prefer`: (go ...) already has a preference at p.rules:4:1") == 0);
     CHECK(errors_of(choose + "prefer (go ?o) by (near ?o ?d ?k)\n").find("p.rules:4:8: predicate 'go' is used here with 1 argument(s)") == 0);
