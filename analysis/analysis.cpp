@@ -5,6 +5,7 @@
 #include "analysis/detail/analysis_state.hpp"
 #include "scene/direction_text.hpp"
 #include "analysis/kinematic_chains.hpp"
+#include "engine/preferences.hpp"
 #include "scene/vocabulary.hpp"
 #include "scene/what_if.hpp"
 #include "qm/assert.hpp"
@@ -100,40 +101,16 @@ bool Analysis::State::holds(std::string_view predicate, std::span<const ValueId>
     return f && engine->atms().holds_in(engine->node(*f), env);
 }
 
-Nearness Analysis::State::nearness(ObjectId o, atms::EnvId env) {
-    Nearness out;
-    // The object's own facts through the engine's argument index: a scan of every object's would
-    // make reading all objects quadratic in their number.
-    auto read = [&](std::string_view pred, std::map<Direction, int>& ranks) {
-        for (engine::FactId f : engine->facts().with_argument(facts->predicate(pred), 0, facts->symbol(o))) {
-            const engine::Fact& fact = engine->facts().fact(f);
-            if (fact.args.size() != 3) continue;
-            const engine::Value& d = engine->values().value(fact.args[1]);
-            const engine::Value& k = engine->values().value(fact.args[2]);
-            if (d.kind != engine::ValueKind::direction || k.kind != engine::ValueKind::integer) continue;
-            if (d.text.find('?') != std::string::npos || !engine->atms().holds_in(engine->node(f), env)) continue;
-            const Direction dir = scene::from_sign_string(d.text);
-            auto [it, fresh] = ranks.try_emplace(dir, static_cast<int>(k.integer));
-            if (!fresh) it->second = std::min(it->second, static_cast<int>(k.integer));
-        }
-    };
-    read(v::trans_nearness, out.trans);
-    read(v::rot_nearness, out.rot);
-    // A rank missing for some motion means the laws did not rank it: treat it as farthest.
-    auto complete = [](std::map<Direction, int>& ranks, const std::vector<Direction>& dirs) {
-        if (ranks.empty()) return;
-        for (const Direction& d : dirs) ranks.try_emplace(d, 6);
-    };
-    complete(out.trans, choices[o].trans_dirs);
-    complete(out.rot, choices[o].rot_dirs);
-    return out;
+MotionRanks Analysis::State::ranks(ObjectId o, atms::EnvId env) const {
+    // The laws' preference (`prefer` in rules/nearness.rules: Def 38 up to 8.3.4's threshold).
+    return {engine::choice_set_ranks(*engine, choices[o].trans, env), engine::choice_set_ranks(*engine, choices[o].rot, env)};
 }
 
-std::vector<atms::NodeId> Analysis::State::nearness_nodes(ObjectId o) {
+std::vector<atms::NodeId> Analysis::State::rank_nodes(ObjectId o) const {
     std::vector<atms::NodeId> out;
-    for (std::string_view pred : {v::trans_nearness, v::rot_nearness})
-        for (engine::FactId f : engine->facts().with_argument(facts->predicate(pred), 0, facts->symbol(o)))
-            out.push_back(engine->node(f));
+    for (const auto* set : {&choices[o].trans, &choices[o].rot})
+        for (atms::AssumptionId a : *set)
+            for (engine::FactId f : engine::rank_facts(*engine, a)) out.push_back(engine->node(f));
     return out;
 }
 
@@ -212,7 +189,7 @@ SituationResult Analysis::State::read(std::size_t s, atms::EnvId env,
     if (!branches.empty())
         for (std::size_t c = 0; c < chains.size(); ++c)
             for (ObjectId o : chains[c]) {
-                auto nodes = nearness_nodes(o);
+                auto nodes = rank_nodes(o);
                 read_nodes[c].insert(read_nodes[c].end(), nodes.begin(), nodes.end());
             }
     for (const ChainGroup& group : group_chains(engine->atms(), branches, env, read_nodes)) {
@@ -225,7 +202,7 @@ SituationResult Analysis::State::read(std::size_t s, atms::EnvId env,
         for (std::uint32_t i : group.sets) sets.push_back(branches.sets[i]);
         ChainOutcome outcome = solve_group(
             engine->atms(), members, sets, env,
-            [&](std::size_t i, atms::EnvId where) { return nearness(members[i].object, where); }, options.combination_limit);
+            [&](std::size_t i, atms::EnvId where) { return ranks(members[i].object, where); }, options.combination_limit);
         if (outcome.truncated) r.complete = false;
         if (outcome.truncated)
             r.notes.push_back("chain of " + scene.objects[members.front().object].name + ": enumeration stopped after " +

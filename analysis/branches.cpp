@@ -95,9 +95,9 @@ std::vector<ChainGroup> group_chains(const atms::Atms& atms, const BranchSets& b
 
 ChainOutcome solve_group(atms::Atms& atms, std::span<const ObjectChoices> members,
                          std::span<const std::vector<atms::AssumptionId>> sets, atms::EnvId env,
-                         const std::function<Nearness(std::size_t, atms::EnvId)>& ranks, std::size_t limit) {
+                         const std::function<MotionRanks(std::size_t, atms::EnvId)>& ranks, std::size_t limit) {
     auto solve_in = [&](atms::EnvId where) {
-        std::vector<Nearness> near;
+        std::vector<MotionRanks> near;
         for (std::size_t i = 0; i < members.size(); ++i) near.push_back(ranks(i, where));
         return solve_chain(atms, members, near, where, limit);
     };

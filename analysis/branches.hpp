@@ -48,11 +48,11 @@ struct ChainGroup {
                                                    std::span<const std::vector<atms::NodeId>> chain_nodes);
 
 // The group's motions: for each interpretation B of `sets` over env, solve_chain(members, ranks(B))
-// in B; the union, without repeats, in canonical order. `ranks(i, B)` is member i's nearness in B.
+// in B; the union, without repeats, in canonical order. `ranks(i, B)` is member i's ranks in B.
 // No sets: exactly solve_chain(members, ranks(env)) in env. The limit counts the union.
 // Pre: as solve_chain; sets' assumptions issued by atms.
 [[nodiscard]] ChainOutcome solve_group(atms::Atms& atms, std::span<const ObjectChoices> members,
                                        std::span<const std::vector<atms::AssumptionId>> sets, atms::EnvId env,
-                                       const std::function<Nearness(std::size_t, atms::EnvId)>& ranks, std::size_t limit);
+                                       const std::function<MotionRanks(std::size_t, atms::EnvId)>& ranks, std::size_t limit);
 
 }  // namespace qm::analysis

@@ -1,10 +1,11 @@
 // analysis/motion_selection.cpp
-// The search: the choice sets of objects with a force on them (ranked) are enumerated first, each
-// assignment kept only if some choice of the other objects' motions completes it consistently;
-// the non-dominated assignments are then completed in every consistent way. So the motions of
-// objects that nothing drives are enumerated only under the assignments that survive, never under
-// dominated ones (a train of gears driven at one end is linear, not exponential).
+// The preferred combinations are the ATMS's preferred interpretations of the chain's Law 1 choice
+// sets (atms/preferred_interpretations.hpp): the ranked sets (objects with a force) are enumerated
+// first and only the assignments that survive the preference are completed, so the motions of
+// objects that nothing drives are never enumerated under dominated ones (a train of gears driven
+// at one end is linear, not exponential).
 #include "analysis/motion_selection.hpp"
+#include "atms/preferred_interpretations.hpp"
 #include "scene/direction_text.hpp"
 #include "qm/assert.hpp"
 #include <algorithm>
@@ -12,38 +13,20 @@
 namespace qm::analysis {
 namespace {
 
-// a dominates b: at least as near everywhere, nearer somewhere.
-bool dominates(const std::vector<int>& a, const std::vector<int>& b) {
-    bool better = false;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        if (a[i] > b[i]) return false;
-        better |= a[i] < b[i];
-    }
-    return better;
-}
-
-struct Set {
-    std::size_t object;   // index in the chain
-    bool translation;
-    const std::vector<atms::AssumptionId>* assumptions;
-    const std::map<Direction, int>* ranks;  // null: unranked
-};
-
 std::uint32_t picked(const atms::Environment& env, const std::vector<atms::AssumptionId>& set) {
     auto it = std::find_if(set.begin(), set.end(), [&](atms::AssumptionId a) { return env.contains(a); });
     QM_ASSERT(it != set.end(), "an interpretation picks one assumption of every choice set");
     return static_cast<std::uint32_t>(it - set.begin());
 }
 
-// Records the combination an interpretation env (joined with base) picks; false, and `truncated`,
+// Records the combination an interpretation (joined with its base) picks; false, and `truncated`,
 // once `limit` combinations are held (both enumerations below stop there).
-bool record_combination(ChainOutcome& out, std::span<const ObjectChoices> chain, const atms::Environment& env,
-                        const atms::Environment& base, std::size_t limit) {
+bool record_combination(ChainOutcome& out, std::span<const ObjectChoices> chain, const atms::Environment& full,
+                        std::size_t limit) {
     if (out.motions.combinations.size() >= limit) {
         out.truncated = true;
         return false;
     }
-    const atms::Environment full = join(env, base);
     std::vector<ObjectMotion> combination;
     combination.reserve(chain.size());
     for (const ObjectChoices& c : chain)
@@ -54,64 +37,23 @@ bool record_combination(ChainOutcome& out, std::span<const ObjectChoices> chain,
 
 }  // namespace
 
-ChainOutcome solve_chain(atms::Atms& atms, std::span<const ObjectChoices> chain, std::span<const Nearness> nearness,
+ChainOutcome solve_chain(atms::Atms& atms, std::span<const ObjectChoices> chain, std::span<const MotionRanks> ranks,
                          atms::EnvId base, std::size_t limit) {
-    QM_REQUIRE(chain.size() == nearness.size(), "one nearness record per object");
-    std::vector<Set> ranked, free;
+    QM_REQUIRE(chain.size() == ranks.size(), "one ranks record per object");
+    std::vector<atms::RankedChoiceSet> ranked;
+    std::vector<std::vector<atms::AssumptionId>> free;
+    auto add = [&](const std::vector<atms::AssumptionId>& set, const std::optional<std::vector<std::int64_t>>& r) {
+        if (r) ranked.push_back({set, *r});
+        else free.push_back(set);
+    };
     for (std::size_t o = 0; o < chain.size(); ++o) {
-        const auto* tr = nearness[o].trans.empty() ? nullptr : &nearness[o].trans;
-        const auto* rr = nearness[o].rot.empty() ? nullptr : &nearness[o].rot;
-        (tr ? ranked : free).push_back({o, true, &chain[o].trans, tr});
-        (rr ? ranked : free).push_back({o, false, &chain[o].rot, rr});
+        add(chain[o].trans, ranks[o].trans);
+        add(chain[o].rot, ranks[o].rot);
     }
-    auto sets_of = [](const std::vector<Set>& s) {
-        std::vector<std::vector<atms::AssumptionId>> out;
-        for (const Set& x : s) out.push_back(*x.assumptions);
-        return out;
-    };
-    const auto ranked_sets = sets_of(ranked), free_sets = sets_of(free);
-
     ChainOutcome out;
-    // 1. Assignments of the ranked sets that some assignment of the others completes.
-    struct Front {
-        std::vector<atms::AssumptionId> picks;
-        std::vector<int> rank;
-    };
-    std::vector<Front> feasible;
-    atms.for_each_interpretation(ranked_sets, base, [&](const atms::Environment& env) {
-        Front f;
-        for (const Set& s : ranked) {
-            const std::uint32_t i = picked(env, *s.assumptions);
-            f.picks.push_back((*s.assumptions)[i]);
-            const auto& dirs = s.translation ? chain[s.object].trans_dirs : chain[s.object].rot_dirs;
-            auto r = s.ranks->find(dirs[i]);
-            f.rank.push_back(r == s.ranks->end() ? 6 : r->second);
-        }
-        feasible.push_back(std::move(f));
-        return true;
-    });
-    std::erase_if(feasible, [&](const Front& f) {
-        std::vector<atms::AssumptionId> members = atms.env(base).assumptions();
-        members.insert(members.end(), f.picks.begin(), f.picks.end());
-        const atms::EnvId with = atms.environment(members);
-        return atms.for_each_interpretation(free_sets, with, [](const atms::Environment&) { return false; }) == 0;
-    });
-    // 2. The non-dominated ones (section 6.2, Def 38).
-    std::vector<const Front*> best;
-    for (const Front& f : feasible)
-        if (std::none_of(feasible.begin(), feasible.end(), [&](const Front& g) { return dominates(g.rank, f.rank); }))
-            best.push_back(&f);
-    // 3. Every consistent completion of each.
     for (const ObjectChoices& c : chain) out.motions.objects.push_back(c.object);
-    for (const Front* f : best) {
-        std::vector<atms::AssumptionId> members = atms.env(base).assumptions();
-        members.insert(members.end(), f->picks.begin(), f->picks.end());
-        const atms::EnvId with = atms.environment(members);
-        atms.for_each_interpretation(free_sets, with, [&](const atms::Environment& env) {
-            return record_combination(out, chain, env, atms.env(with), limit);
-        });
-    }
-    out.consistent = feasible.size();
+    out.consistent = atms::for_each_preferred_interpretation(
+        atms, ranked, free, base, [&](const atms::Environment& full) { return record_combination(out, chain, full, limit); });
     std::sort(out.motions.combinations.begin(), out.motions.combinations.end(), combination_less);
     return out;
 }
@@ -126,7 +68,7 @@ ChainOutcome consistent_combinations(atms::Atms& atms, std::span<const ObjectCho
         out.motions.objects.push_back(c.object);
     }
     atms.for_each_interpretation(sets, base, [&](const atms::Environment& env) {
-        return record_combination(out, chain, env, atms.env(base), limit);
+        return record_combination(out, chain, join(env, atms.env(base)), limit);
     });
     out.consistent = out.motions.combinations.size();
     std::sort(out.motions.combinations.begin(), out.motions.combinations.end(), combination_less);

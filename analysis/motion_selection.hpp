@@ -4,15 +4,17 @@
 //             situation's environment, found by the ATMS with nogood pruning), then, where objects
 //             have a force on them, the combinations no other combination beats in nearness
 //             (section 6.2, Definition 38; docs/ANALYSIS.md "Which motions a force produces").
-//             The nearness ranks come from the laws (rules/nearness.rules); this file only keeps the
-//             combinations that are not dominated, a generic preference, and knows no mechanics.
+//             The preference is the laws' (`prefer` in rules/nearness.rules, read by
+//             engine/preferences.hpp) and the selection the ATMS's generic query
+//             (atms/preferred_interpretations.hpp): this file only maps choice sets to motions.
 // Ownership:  returns values.
 // Invariants: combinations come back in canonical order (object by object, translation then
 //             rotation, + before 0 before -).
 #pragma once
 #include "analysis/analysis.hpp"
 #include "atms/atms.hpp"
-#include <map>
+#include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -25,10 +27,11 @@ struct ObjectChoices {
     std::vector<Direction> trans_dirs, rot_dirs;
 };
 
-// Definition 38 ranks of an object's motions; an empty map: the object has no force, any
-// consistent motion of it is as good as any other.
-struct Nearness {
-    std::map<Direction, int> trans, rot;
+// The laws' ranks of an object's Law 1 choice sets, member by member (engine::choice_set_ranks);
+// none: the set is not ranked (the object has no force), any consistent motion of it is as good as
+// any other.
+struct MotionRanks {
+    std::optional<std::vector<std::int64_t>> trans, rot;
 };
 
 struct ChainOutcome {
@@ -46,8 +49,9 @@ struct ChainOutcome {
 // Canonical order of combinations: object by object, translation then rotation, + before 0 before -.
 [[nodiscard]] bool combination_less(const std::vector<ObjectMotion>& a, const std::vector<ObjectMotion>& b);
 
-// Pre: chain and nearness are aligned; every assumption was issued by atms. Interns environments.
+// Pre: chain and ranks are aligned, each ranks vector as long as its set; every assumption was
+// issued by atms. Interns environments.
 [[nodiscard]] ChainOutcome solve_chain(atms::Atms& atms, std::span<const ObjectChoices> chain,
-                                       std::span<const Nearness> nearness, atms::EnvId base, std::size_t limit);
+                                       std::span<const MotionRanks> ranks, atms::EnvId base, std::size_t limit);
 
 }  // namespace qm::analysis

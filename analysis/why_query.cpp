@@ -3,6 +3,7 @@
 // derivation down to the scene's premises and assumptions, naming the law at every step.
 #include "analysis/analysis.hpp"
 #include "analysis/detail/analysis_state.hpp"
+#include "engine/preferences.hpp"
 #include "engine/why.hpp"
 #include "scene/direction_text.hpp"
 #include "scene/vocabulary.hpp"
@@ -435,17 +436,18 @@ std::string description_alone_note(const Analysis::State& st, const std::vector<
 }
 
 // The derivations of the nearness rank (Definition 38) of object o's motion d within `within`, if
-// the laws rank it (the object has a net force): one, or where comparisons of causes branch
-// (docs/LAWS.md, "Opposing causes") one per branch that `within` admits.
+// the laws rank it (the object has a net force; `prefer` in rules/nearness.rules): one, or where
+// comparisons of causes branch (docs/LAWS.md, "Opposing causes") one per branch that `within` admits.
 std::vector<Exclusion> rank_reasons(Analysis::State& st, ObjectId o, bool translational, const Direction& d,
                                     const atms::Environment& within) {
     const engine::Engine& e = *st.engine;
     const auto& atms = e.atms();
-    const ValueId object = st.facts->symbol(o), direction = st.facts->direction(d);
+    const auto& set = translational ? st.choices[o].trans : st.choices[o].rot;
+    const auto& dirs = translational ? st.choices[o].trans_dirs : st.choices[o].rot_dirs;
+    const auto at = std::find(dirs.begin(), dirs.end(), d);
     std::vector<Exclusion> out;
-    for (engine::FactId f : e.facts_of(st.facts->predicate(translational ? v::trans_nearness : v::rot_nearness))) {
-        const engine::Fact& fact = e.facts().fact(f);
-        if (fact.args.size() != 3 || fact.args[0] != object || fact.args[1] != direction) continue;
+    if (at == dirs.end()) return out;
+    for (engine::FactId f : engine::rank_facts(e, set[static_cast<std::size_t>(at - dirs.begin())])) {
         const atms::NodeId n = e.node(f);
         for (atms::EnvId label_env : atms.label(n)) {
             if (!atms.env(label_env).subset_of(within)) continue;

@@ -6,7 +6,8 @@ namespace qm::atms {
 
 namespace {
 // Does x dominate y: no worse anywhere, better somewhere?
-bool dominates(const std::vector<int>& x, const std::vector<int>& y) {
+template <class Rank>
+bool dominates(const std::vector<Rank>& x, const std::vector<Rank>& y) {
     bool better = false;
     for (std::size_t i = 0; i < x.size(); ++i) {
         if (x[i] > y[i]) return false;
@@ -14,9 +15,9 @@ bool dominates(const std::vector<int>& x, const std::vector<int>& y) {
     }
     return better;
 }
-}  // namespace
 
-std::vector<std::size_t> pareto_front(std::span<const std::vector<int>> ranks) {
+template <class Rank>
+std::vector<std::size_t> front(std::span<const std::vector<Rank>> ranks) {
     for (const auto& r : ranks) QM_REQUIRE(r.size() == ranks.front().size(), "rank vectors of different lengths");
     std::vector<std::size_t> out;
     for (std::size_t i = 0; i < ranks.size(); ++i) {
@@ -26,5 +27,9 @@ std::vector<std::size_t> pareto_front(std::span<const std::vector<int>> ranks) {
     }
     return out;
 }
+}  // namespace
+
+std::vector<std::size_t> pareto_front(std::span<const std::vector<int>> ranks) { return front(ranks); }
+std::vector<std::size_t> pareto_front(std::span<const std::vector<std::int64_t>> ranks) { return front(ranks); }
 
 }  // namespace qm::atms

@@ -11,10 +11,12 @@
 // Knows nothing of what is ranked, nor of rules or mechanics.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
 namespace qm::atms {
 // Pre: every rank vector has the same length. Returns positions in increasing order.
 [[nodiscard]] std::vector<std::size_t> pareto_front(std::span<const std::vector<int>> ranks);
+[[nodiscard]] std::vector<std::size_t> pareto_front(std::span<const std::vector<std::int64_t>> ranks);
 }  // namespace qm::atms

@@ -1,6 +1,6 @@
 // engine/compiled_rule.hpp
 // Provides:   the engine's executable form of a rule (CompiledRule) and of the program's top-level
-//             facts and assumptions (CompiledProgram): variables are numbered slots, constants are
+//             facts, assumptions and preferences (CompiledProgram): variables are numbered slots, constants are
 //             interned values, builtins are resolved to BuiltinIds. rule_compiler.hpp builds it from
 //             E1's AST; the matcher and the engine only ever see this form.
 // Ownership:  plain values owned by CompiledProgram.
@@ -13,6 +13,7 @@
 #include "engine/value.hpp"
 #include "qm/diagnostics.hpp"
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -96,10 +97,21 @@ struct CompiledGroundAtom {
     SourceLocation where;
 };
 
+// `prefer (c ?x ...) by (r ?x ... ?k) [up to N]` (docs/RULES.md "Preferences"): a fact of r ranks
+// the member (c ...) of a choice set whose arguments it has at `key`; its rank is at `rank_at`.
+struct CompiledPreference {
+    ValueId choice{}, rank{};            // the predicates c and r
+    std::vector<std::uint32_t> key;      // key[i]: where c's i-th argument is among r's
+    std::uint32_t rank_at = 0;           // where the rank is among r's arguments
+    std::optional<std::int64_t> up_to;   // a rank above counts as this
+    SourceLocation where;
+};
+
 struct CompiledProgram {
     IdVector<RuleId, CompiledRule> rules;
     std::vector<CompiledGroundAtom> premises;
     std::vector<CompiledGroundAtom> assumptions;
+    std::vector<CompiledPreference> preferences;
     std::uint32_t stratum_count = 1;
 };
 }  // namespace qm::engine

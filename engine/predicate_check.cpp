@@ -1,7 +1,7 @@
 // engine/predicate_check.cpp: where each predicate's facts come from and where they are used
 // (engine/predicate_check.hpp). Two fixed points over predicate names: forward, which rules can fire
 // (a rule fires only if every atom it needs can hold); backward, which rules are used (from what
-// drivers read back and from `false` and choice sets).
+// drivers read back, from `prefer`'s ranks and from `false` and choice sets).
 #include "engine/predicate_check.hpp"
 #include "qm/spelling.hpp"
 #include <map>
@@ -80,6 +80,10 @@ public:
         declarations(spec_.inputs, "input");
         declarations(spec_.outputs, "output");
         for (const AtomSpec& o : spec_.outputs) known(o, "read back by a driver (`output`)");
+        for (const PreferenceSpec& p : spec_.preferences) {
+            known(p.choice, "chosen among by `prefer`");
+            known(p.rank, "ranking a `prefer`");
+        }
         for (const RuleSpec& r : spec_.rules)
             for (const Use& u : uses(r)) known(*u.atom, "used in a condition of rule '" + r.name + "'");
         never_firing();
@@ -159,6 +163,7 @@ private:
     void unused() {
         std::set<std::string> read;
         for (const AtomSpec& o : spec_.outputs) read.insert(o.predicate);
+        for (const PreferenceSpec& p : spec_.preferences) read.insert(p.rank.predicate);  // the query reads the ranks
         std::vector<bool> used(spec_.rules.size(), false);
         for (bool changed = true; changed;) {
             changed = false;

@@ -1,6 +1,7 @@
 // engine/rule_checker.cpp: predicate arity consistency and unique rule names over a ProgramSpec.
 #include "engine/rule_checker.hpp"
 #include <map>
+#include <set>
 
 namespace qm::engine {
 namespace {
@@ -54,6 +55,44 @@ public:
             if (c.kind != ConsequentSpec::Kind::falsity) use(c.atom);
     }
 
+    // `prefer (c ?x ...) by (r ?x ... ?k)` (docs/RULES.md "Preferences"): c's arguments are distinct
+    // variables; r's are those variables and one more, the rank, each once; one preference per c.
+    // A warning where no `exactly one` assumes c: the preference chooses among c's choice sets.
+    void preference(const PreferenceSpec& p, const std::set<std::string>& chosen) {
+        use(p.choice);
+        use(p.rank);
+        auto fail = [&](const SourceLocation& where, const std::string& why) {
+            ok_ = false;
+            diagnostics_.error(where, "`prefer`: " + why);
+        };
+        std::set<std::string> choice_vars, rank_vars;
+        for (const TermSpec& t : p.choice.args)
+            if (t.kind != TermSpec::Kind::variable || !choice_vars.insert(t.text).second)
+                return fail(t.where, "the chosen atom's arguments must be distinct variables, e.g. (" + p.choice.predicate +
+                                         " ?x ?d)");
+        std::vector<std::string> extra;
+        for (const TermSpec& t : p.rank.args) {
+            if (t.kind != TermSpec::Kind::variable || !rank_vars.insert(t.text).second)
+                return fail(t.where, "the rank atom's arguments must be distinct variables");
+            if (!choice_vars.contains(t.text)) extra.push_back(t.text);
+        }
+        for (const std::string& v : choice_vars)
+            if (!rank_vars.contains(v))
+                return fail(p.rank.where, "the rank atom must have every variable of the chosen atom, but has no ?" + v);
+        if (extra.size() != 1)
+            return fail(p.rank.where, "the rank atom must have exactly one variable that the chosen atom does not have "
+                                      "(the rank), but has " + std::to_string(extra.size()));
+        if (auto [it, fresh] = preferred_.try_emplace(p.choice.predicate, &p); !fresh)
+            return fail(p.choice.where, "(" + p.choice.predicate + " ...) already has a preference at " + at(it->second->where));
+        // A warning, not an error: such a preference chooses nothing (e.g. a few laws loaded alone,
+        // their motions stated as inputs, as tests/rules/law_harness.hpp does).
+        if (!chosen.contains(p.choice.predicate))
+            diagnostics_.add({Severity::warning, p.choice.where,
+                              "`prefer`: no `exactly one` assumes (" + p.choice.predicate +
+                                  " ...): the preference chooses nothing, since it chooses among the members of choice sets",
+                              {}, {}});
+    }
+
     [[nodiscard]] bool ok() const { return ok_; }
 
 private:
@@ -61,6 +100,7 @@ private:
     const BuiltinRegistry& builtins_;
     std::map<std::string, const AtomSpec*> first_use_;
     std::map<std::string, const RuleSpec*> first_rule_;
+    std::map<std::string, const PreferenceSpec*> preferred_;
     bool ok_ = true;
 };
 
@@ -73,6 +113,11 @@ bool check_program(const ProgramSpec& spec, Diagnostics& diagnostics, const Buil
     for (const AtomSpec& a : spec.inputs) checker.use(a);
     for (const AtomSpec& a : spec.outputs) checker.use(a);
     for (const RuleSpec& r : spec.rules) checker.rule(r);
+    std::set<std::string> chosen;  // predicates some `exactly one` assumes
+    for (const RuleSpec& r : spec.rules)
+        for (const ConsequentSpec& c : r.consequents)
+            if (c.kind == ConsequentSpec::Kind::exactly_one) chosen.insert(c.atom.predicate);
+    for (const PreferenceSpec& p : spec.preferences) checker.preference(p, chosen);
     return checker.ok();
 }
 

@@ -10,6 +10,10 @@
 //               - an atom whose predicate is a builtin test (`fact (< 1 2)`, `not (< ?x 3)`, a test
 //                 among the atoms of a quantifier): in a condition `(< ...)` is always the test, so
 //                 no fact of such a predicate could ever be matched.
+//               - a `prefer` whose chosen atom is not distinct variables, whose rank atom is not
+//                 those variables and exactly one more (the rank), or a second `prefer` of one
+//                 predicate (docs/RULES.md "Preferences"); a warning where no `exactly one`
+//                 assumes the chosen predicate (the preference chooses nothing);
 //             (Where facts come from, unknown predicates and rules that never fire are
 //             predicate_check.hpp's, which load_programs() runs after these.)
 //             Each finding is a located error in diagnostics; several are reported in one run.

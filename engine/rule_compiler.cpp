@@ -4,6 +4,7 @@
 #include "engine/binding.hpp"
 #include "engine/stratify_rules.hpp"
 #include <set>
+#include <utility>
 #include <unordered_map>
 
 namespace qm::engine {
@@ -269,6 +270,27 @@ std::optional<LoadedProgram> compile_program(const ProgramSpec& spec, Diagnostic
     ground_atoms(spec.facts, out.program.premises);
     ground_atoms(spec.assumptions, out.program.assumptions);
     for (const auto& r : spec.rules) out.program.rules.push_back(compiler.compile(r));
+    // After the rules, so that a program's values are numbered as without its preferences. A
+    // malformed preference is rule_checker.hpp's error: it is left out here.
+    for (const PreferenceSpec& p : spec.preferences) {
+        CompiledPreference c{out.values.symbol(p.choice.predicate), out.values.symbol(p.rank.predicate), {}, 0, p.up_to, p.where};
+        auto position = [&](const std::string& variable) -> std::optional<std::uint32_t> {
+            for (std::uint32_t i = 0; i < p.rank.args.size(); ++i)
+                if (p.rank.args[i].kind == TermSpec::Kind::variable && p.rank.args[i].text == variable) return i;
+            return std::nullopt;
+        };
+        bool ok = p.rank.args.size() == p.choice.args.size() + 1;
+        for (const TermSpec& t : p.choice.args) {
+            auto at = t.kind == TermSpec::Kind::variable ? position(t.text) : std::nullopt;
+            ok = ok && at.has_value();
+            if (at) c.key.push_back(*at);
+        }
+        std::vector<std::uint8_t> keyed(p.rank.args.size(), 0);
+        for (std::uint32_t k : c.key) ok = ok && !std::exchange(keyed[k], std::uint8_t{1});
+        for (std::uint32_t i = 0; i < keyed.size(); ++i)
+            if (!keyed[i]) c.rank_at = i;
+        if (ok) out.program.preferences.push_back(std::move(c));
+    }
     out.program.stratum_count = stratify_rules(out.program, out.values, diagnostics);
     bool failed = false;
     for (std::size_t i = errors_before; i < diagnostics.size(); ++i)

@@ -14,7 +14,7 @@ namespace x3 = boost::spirit::x3;
 
 // Does the line starting at `at` begin with a top-level keyword (a whole word in column 1)?
 bool starts_item(const std::string& t, std::size_t at) {
-    for (const char* k : {"rule", "fact", "assume", "include", "input", "output", "cite"}) {
+    for (const char* k : {"rule", "fact", "assume", "include", "input", "output", "cite", "prefer"}) {
         const std::size_t n = std::strlen(k);
         if (t.compare(at, n, k) == 0 && (at + n == t.size() || !parser::is_word_char(t[at + n]))) return true;
     }

@@ -1,6 +1,6 @@
 // engine/rule_parser_ast.hpp
 // Provides:   the AST of a rule file as the Spirit X3 grammar (rule_parser_def.hpp) produces it:
-//             one Item per top-level `include`, `fact`, `assume`, `rule`, `input`, `output` or `cite`, with every condition,
+//             one Item per top-level `include`, `fact`, `assume`, `rule`, `input`, `output`, `cite` or `prefer`, with every condition,
 //             consequent and term as written. rule_parser_to_spec.hpp turns it into a ProgramSpec.
 // Ownership:  plain values. Every node derives from x3::position_tagged; the parser stores in
 //             id_first the byte offset where the node starts (after blanks and comments), so a
@@ -10,6 +10,7 @@
 //             nor variables; a Direction holds at least one of the signs + 0 - ?.
 // Knows nothing of the ATMS, of ValueIds or of the compiled program.
 #pragma once
+#include <boost/optional.hpp>
 #include <boost/spirit/home/x3/support/ast/position_tagged.hpp>
 #include <boost/spirit/home/x3/support/ast/variant.hpp>
 #include <cstdint>
@@ -102,7 +103,13 @@ struct Rule : x3::position_tagged {
 struct Input : x3::position_tagged { Atom atom; };     // `input (p ?x)`: a driver asserts p
 struct Output : x3::position_tagged { Atom atom; };    // `output (p ?x)`: a driver reads p back
 struct Cite : x3::position_tagged { FileName text; };  // `cite "section 3.1, Table 3.1"`
-struct Item : x3::variant<Include, Fact, Assumption, Rule, Input, Output, Cite> {
+// `prefer (c ?x ?y) by (r ?x ?y ?k) up to 3`: prefer interpretations whose picks of c rank lower by r.
+struct Prefer : x3::position_tagged {
+    Atom choice;
+    Atom rank;
+    boost::optional<Integer> up_to;
+};
+struct Item : x3::variant<Include, Fact, Assumption, Rule, Input, Output, Cite, Prefer> {
     using base_type::base_type;
     using base_type::operator=;
 };

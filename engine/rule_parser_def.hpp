@@ -44,6 +44,7 @@ BOOST_FUSION_ADAPT_STRUCT(qm::engine::ast::Rule, name, conditions, consequents)
 BOOST_FUSION_ADAPT_STRUCT(qm::engine::ast::Input, atom)
 BOOST_FUSION_ADAPT_STRUCT(qm::engine::ast::Output, atom)
 BOOST_FUSION_ADAPT_STRUCT(qm::engine::ast::Cite, text)
+BOOST_FUSION_ADAPT_STRUCT(qm::engine::ast::Prefer, choice, rank, up_to)
 
 namespace qm::engine::parser {
 
@@ -126,7 +127,7 @@ inline const auto integer_ahead = x3::lexeme[-x3::lit('-') >> +digit >> !word_ch
 // A keyword is a whole word: `not` but not `nothing`.
 inline auto kw(const char* word) { return x3::lexeme[x3::lit(word) >> !word_char]; }
 inline const auto top_keyword =
-    bol >> (kw("rule") | kw("fact") | kw("assume") | kw("include") | kw("input") | kw("output") | kw("cite"));
+    bol >> (kw("rule") | kw("fact") | kw("assume") | kw("include") | kw("input") | kw("output") | kw("cite") | kw("prefer"));
 // A rule's consequents end at the end of the text or at a line whose first token (in column 1)
 // cannot continue them: only `(`, `[` and `false` can, so `assume` in column 1 is a top-level item,
 // and a misspelt top-level keyword costs only its own item, not the rule before it.
@@ -146,6 +147,8 @@ inline const auto over_kw = named<struct over_kw_id>("'over'", kw("over"));
 inline const auto with_kw = named<struct with_kw_id>("'with'", kw("with"));
 inline const auto start_kw = named<struct start_kw_id>("'start'", kw("start"));
 inline const auto as_kw = named<struct as_kw_id>("'as'", kw("as"));
+inline const auto by_kw = named<struct by_kw_id>("'by'", kw("by"));
+inline const auto to_kw = named<struct to_kw_id>("'to'", kw("to"));
 inline const auto assume_kw = named<struct assume_kw_id>("'assume'", kw("assume"));
 inline const auto colon = named<struct colon_id>("':'", x3::lit(':'));
 inline const auto close_bracket = named<struct close_bracket_id>("']'", x3::lit(']'));
@@ -195,6 +198,8 @@ struct rule_item_id : annotate {};
 struct input_item_id : annotate {};
 struct output_item_id : annotate {};
 struct cite_item_id : annotate {};
+struct prefer_item_id : annotate {};
+struct threshold_id : annotate {};
 struct top_item_id : annotate {};
 struct item_entry_id : annotate, first_failure {};
 struct atom_entry_id : annotate, first_failure {};
@@ -242,6 +247,8 @@ const x3::rule<rule_item_id, ast::Rule> rule_item = "'rule'";
 const x3::rule<input_item_id, ast::Input> input_item = "'input'";
 const x3::rule<output_item_id, ast::Output> output_item = "'output'";
 const x3::rule<cite_item_id, ast::Cite> cite_item = "'cite'";
+const x3::rule<prefer_item_id, ast::Prefer> prefer_item = "'prefer'";
+const x3::rule<threshold_id, ast::Integer> threshold = "an integer (the threshold)";
 const x3::rule<top_item_id, ast::Item> top_item = top_item_name;
 const x3::rule<item_entry_id, ast::Item> item_entry = "a top-level item";
 const x3::rule<atom_entry_id, ast::Atom> atom_entry = "an atom";
@@ -312,7 +319,12 @@ const auto input_item_def = kw("input") > atom_expected;
 const auto output_item_def = kw("output") > atom_expected;
 const auto citation_text_def = file_name_def;
 const auto cite_item_def = kw("cite") > citation_text;
-const auto top_item_def = bol >> (include_item | fact_item | assume_item | rule_item | input_item | output_item | cite_item);
+// `up to N` is optional; a misspelt word after the rank atom is the next item's error (it must
+// start a line), like a consequent after a rule.
+const auto threshold_def = integer;
+const auto prefer_item_def = kw("prefer") > atom_expected > by_kw > atom_expected > -(kw("up") > to_kw > threshold);
+const auto top_item_def =
+    bol >> (include_item | fact_item | assume_item | rule_item | input_item | output_item | cite_item | prefer_item);
 const auto item_entry_def = x3::eps > top_item;
 const auto atom_entry_def = x3::eps > atom_expected > end_of_input;
 
@@ -321,7 +333,7 @@ BOOST_SPIRIT_DEFINE(name, predicate, function_name, rule_name, symbol, variable,
 BOOST_SPIRIT_DEFINE(atom, atom_expected, atoms, test, test_expected, where_clause, binder)
 BOOST_SPIRIT_DEFINE(negation, for_all_condition, exists_condition, aggregate, condition, conditions)
 BOOST_SPIRIT_DEFINE(falsity, assume_consequent, for_all_consequent, exactly_one, consequent, consequents)
-BOOST_SPIRIT_DEFINE(file_name, citation_text, include_item, fact_item, assume_item, rule_item, input_item, output_item, cite_item,
+BOOST_SPIRIT_DEFINE(file_name, citation_text, include_item, fact_item, assume_item, rule_item, input_item, output_item, cite_item, prefer_item, threshold,
                     top_item, item_entry, atom_entry)
 
 }  // namespace qm::engine::parser

@@ -53,7 +53,7 @@ struct ParseState {
 // Names of expectations that fail inside a token (no blanks may be skipped before "found").
 inline constexpr const char* closing_quote_name = "a closing '\"' on the same line";
 inline constexpr const char* top_item_name =
-    "'rule', 'fact', 'assume', 'include', 'input', 'output' or 'cite' at the start of a line";
+    "'rule', 'fact', 'assume', 'include', 'input', 'output', 'cite' or 'prefer' at the start of a line";
 
 // The diagnostic for a failure at `failure` (an offset in src) where `expected` was expected, in the
 // item that starts at `item_start`: `expected EXPECTED but found TOKEN`, located at the token (at the

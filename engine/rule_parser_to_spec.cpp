@@ -168,6 +168,11 @@ struct ItemVisitor {
     void operator()(const ast::Input& i) const { spec.inputs.push_back(to_atom_spec(i.atom, src)); }
     void operator()(const ast::Output& o) const { spec.outputs.push_back(to_atom_spec(o.atom, src)); }
     void operator()(const ast::Cite& c) const { spec.citations.push_back(CitationSpec{c.text.text, at(c, src)}); }
+    void operator()(const ast::Prefer& p) const {
+        PreferenceSpec out{to_atom_spec(p.choice, src), to_atom_spec(p.rank, src), std::nullopt, at(p, src)};
+        if (p.up_to) out.up_to = p.up_to->value;
+        spec.preferences.push_back(std::move(out));
+    }
 };
 
 }  // namespace

@@ -87,6 +87,9 @@ std::string print_program(const ProgramSpec& spec) {
     for (const AtomSpec& o : spec.outputs) out += "output " + print_atom(o) + "\n";
     for (const AtomSpec& f : spec.facts) out += "fact " + print_atom(f) + "\n";
     for (const AtomSpec& a : spec.assumptions) out += "assume " + print_atom(a) + "\n";
+    for (const PreferenceSpec& p : spec.preferences)
+        out += "prefer " + print_atom(p.choice) + " by " + print_atom(p.rank) +
+               (p.up_to ? " up to " + std::to_string(*p.up_to) : std::string()) + "\n";
     for (const RuleSpec& r : spec.rules) {
         out += "\nrule " + r.name + "\n  when";
         for (const ConditionSpec& c : r.conditions) out += " " + print_condition(c);

@@ -8,6 +8,7 @@
 #pragma once
 #include "qm/diagnostics.hpp"
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,16 @@ struct CitationSpec {
     SourceLocation where;
 };
 
+// `prefer (c ?x ...) by (r ?x ... ?k) [up to N]` (docs/RULES.md "Preferences"): among
+// interpretations, prefer those whose picks of c's choice sets rank lower by r, Pareto over the
+// choice sets; a rank above N counts as N.
+struct PreferenceSpec {
+    AtomSpec choice;
+    AtomSpec rank;
+    std::optional<std::int64_t> up_to;
+    SourceLocation where;
+};
+
 struct ProgramSpec {
     std::vector<RuleSpec> rules;
     std::vector<AtomSpec> facts;
@@ -79,5 +90,6 @@ struct ProgramSpec {
     std::vector<AtomSpec> inputs;
     std::vector<AtomSpec> outputs;
     std::vector<CitationSpec> citations;  // in reading order; a file may cite more than once
+    std::vector<PreferenceSpec> preferences;
 };
 }  // namespace qm::engine

@@ -30,8 +30,6 @@ inline constexpr std::string_view trans_freedom = "trans-freedom";        // Def
 inline constexpr std::string_view rot_freedom = "rot-freedom";
 inline constexpr std::string_view trans_constraint = "trans-constraint";  // Def 23 (for why)
 inline constexpr std::string_view rot_constraint = "rot-constraint";
-inline constexpr std::string_view trans_nearness = "trans-nearness";      // (trans-nearness O T K), Def 38
-inline constexpr std::string_view rot_nearness = "rot-nearness";
 inline constexpr std::string_view touch = "touch";                        // (touch P Q NORMALS), Def 19: a contact the laws use
 
 // The driver's declaration to the laws: rules/scene_facts.rules states these as `input` and
@@ -40,6 +38,8 @@ inline constexpr std::string_view touch = "touch";                        // (to
 inline constexpr std::array asserted = {dimensions,   rigid_body, surface, surface_normal, origin_dir, corner,
                                         frame_trans_constraint, frame_rot_constraint, linkage, contact,
                                         external_force, given_motion};
-inline constexpr std::array read_back = {trans_motion,     rot_motion,     trans_freedom, rot_freedom, trans_constraint,
-                                         rot_constraint, trans_nearness, rot_nearness,  touch};
+// Which motions a force produces is not read back by name: the laws declare it as a `prefer`
+// (rules/nearness.rules), which the driver applies through engine/preferences.hpp.
+inline constexpr std::array read_back = {trans_motion, rot_motion, trans_freedom, rot_freedom, trans_constraint,
+                                         rot_constraint, touch};
 }  // namespace qm::scene::vocabulary

@@ -51,11 +51,11 @@ struct Analysis::State {
     [[nodiscard]] std::optional<SituationResult> solve(std::size_t s, std::span<const QueryFact> without,
                                                        Diagnostics& diagnostics);
     [[nodiscard]] bool holds(std::string_view predicate, std::span<const engine::ValueId> args, atms::EnvId env);
-    [[nodiscard]] Nearness nearness(ObjectId o, atms::EnvId env);
+    [[nodiscard]] MotionRanks ranks(ObjectId o, atms::EnvId env) const;
     // branches from the engine's choice sets (after a run, which may declare new ones).
     void refresh_branches();
-    // The nodes of o's nearness facts (whatever environment they hold in).
-    [[nodiscard]] std::vector<atms::NodeId> nearness_nodes(ObjectId o);
+    // The nodes of the facts ranking o's motions (whatever environment they hold in).
+    [[nodiscard]] std::vector<atms::NodeId> rank_nodes(ObjectId o) const;
     // The objects in contact in env (through the situation's contact items) and the linkages.
     [[nodiscard]] std::vector<std::pair<ObjectId, ObjectId>> pairs(std::size_t s, atms::EnvId env) const;
     // A new State for situation s alone, with `without` taken away and `given` motions added.

@@ -119,7 +119,7 @@ TEST_CASE("engine/rule_parser: a top-level `assume` starts in column 1, a conseq
     CHECK(after.facts[0].predicate == "q");
     // Indented, it is not an item; the word `rule` inside an atom on the same line is a symbol.
     CHECK(first_error("  fact (p)") ==
-          "1:3: expected 'rule', 'fact', 'assume', 'include', 'input', 'output' or 'cite' at the start of a line but found 'fact' in column 3");
+          "1:3: expected 'rule', 'fact', 'assume', 'include', 'input', 'output', 'cite' or 'prefer' at the start of a line but found 'fact' in column 3");
     CHECK(normal_form("fact (p rule)") == "fact (p rule)\n");
 }
 
@@ -165,7 +165,7 @@ TEST_CASE("engine/rule_parser: syntax errors say what was expected and what was 
          "1:9: expected an integer from -9223372036854775808 to 9223372036854775807 but found '99999999999999999999'"},
         {"include x", "1:9: expected a file name in double quotes but found 'x'"},
         {"include \"a\nfact (p)", "1:11: expected a closing '\"' on the same line but found the end of the line"},
-        {"junk", "1:1: expected 'rule', 'fact', 'assume', 'include', 'input', 'output' or 'cite' at the start of a line but found 'junk'"},
+        {"junk", "1:1: expected 'rule', 'fact', 'assume', 'include', 'input', 'output', 'cite' or 'prefer' at the start of a line but found 'junk'"},
         {"rule r when [for all x in {a}: (p x)] then false", "1:22: expected a variable like ?x but found 'x'"},
         {"rule r when [for all ?x of {a}: (p ?x)] then false", "1:25: expected 'in' but found 'of'"},
         {"rule r when [for all ?x in {a} (p ?x)] then false", "1:32: expected ':' but found '(p'"},
@@ -252,7 +252,7 @@ TEST_CASE("engine/rule_parser: a corrupted item affects no other item") {
 TEST_CASE("engine/rule_parser: a misspelt keyword in column 1 ends the rule before it") {
     qm::Diagnostics d;
     ProgramSpec spec = read("rule r\n  when (p ?x)\n  then (q ?x)\nrul s\n  when (q ?x)\n  then (s ?x)\nfact (p a)\n", d);
-    CHECK(messages(d) == "t.rules:4:1: error: expected 'rule', 'fact', 'assume', 'include', 'input', 'output' or 'cite' at the start of a line but "
+    CHECK(messages(d) == "t.rules:4:1: error: expected 'rule', 'fact', 'assume', 'include', 'input', 'output', 'cite' or 'prefer' at the start of a line but "
                          "found 'rul'\n  rul s\n  ^\n");
     CHECK(spec.rules.size() == 1);
     CHECK(spec.facts.size() == 1);

@@ -1,0 +1,186 @@
+// tests/engine/preferences_test.cpp: the `prefer` declaration (docs/RULES.md "Preferences") from
+// rule text: it reads, prints and is checked (malformed declarations are located errors), and
+// engine/preferences.hpp ranks a choice set's members by the rank facts holding in an environment
+// (the least rank, capped by `up to`; an unranked member after every ranked one; a set with no rank
+// holding is unranked).
+#include "engine/preferences.hpp"
+#include "atms/preferred_interpretations.hpp"
+#include "engine/rule_checker.hpp"
+#include "engine/rule_compiler.hpp"
+#include "engine/rule_printer.hpp"
+#include "engine/rule_spec_reader.hpp"
+#include <algorithm>
+#include <doctest/doctest.h>
+#include <map>
+#include <memory>
+
+using namespace qm::engine;
+
+namespace {
+const char* program = R"(fact (ranked a)
+fact (ranked b)
+fact (object a)
+fact (object b)
+fact (object c)
+assume (windy)
+rule choose
+  when (object ?o)
+  then [exactly one ?d in {n s e}: assume (go ?o ?d)]
+rule north-is-near
+  when (ranked ?o)
+  then (near ?o n 0)
+rule south-when-windy
+  when (ranked ?o) (windy)
+  then (near ?o s 1)
+rule south-is-far
+  when (ranked ?o)
+  then (near ?o s 7)
+prefer (go ?o ?d) by (near ?o ?d ?k) up to 5
+)";
+
+std::string errors_of(const std::string& text) {
+    qm::Diagnostics d;
+    ProgramSpec spec;
+    read_rule_text(text, "p.rules", spec, d);
+    (void)check_program(spec, d);
+    std::string out;
+    for (const auto& x : d.items()) out += x.where.file + ":" + std::to_string(x.where.line) + ":" + std::to_string(x.where.column) + ": " + x.message + "\n";
+    return out;
+}
+}  // namespace
+
+TEST_CASE("engine/preferences: `prefer` reads, prints and passes the checker") {
+    qm::Diagnostics d;
+    ProgramSpec spec;
+    read_rule_text(program, "p.rules", spec, d);
+    CHECK(!d.has_errors());
+    REQUIRE(spec.preferences.size() == 1);
+    CHECK(spec.preferences[0].up_to == 5);
+    CHECK(spec.preferences[0].where.line == 19);
+    CHECK(check_program(spec, d));
+    CHECK(print_program(spec).find("prefer (go ?o ?d) by (near ?o ?d ?k) up to 5\n") != std::string::npos);
+    ProgramSpec again;
+    read_rule_text("prefer (go ?o ?d) by (near ?k ?o ?d)\n", "q.rules", again, d);
+    REQUIRE(again.preferences.size() == 1);
+    CHECK(!again.preferences[0].up_to);
+    CHECK(print_program(again) == "prefer (go ?o ?d) by (near ?k ?o ?d)\n");
+}
+
+TEST_CASE("engine/preferences: malformed declarations are located errors") {
+    const std::string choose = "rule c\n  when (o ?o)\n  then [exactly one ?d in {n s}: assume (go ?o ?d)]\n";
+    CHECK(errors_of(choose + "prefer (go ?o n) by (near ?o ?d ?k)\n").find("p.rules:4:15: `prefer`: the chosen atom's arguments must be distinct variables") == 0);
+    CHECK(errors_of(choose + "prefer (go ?o ?d) by (near ?o ?k)\n").find("p.rules:4:22: `prefer`: the rank atom must have every variable of the chosen atom, but has no ?d") == 0);
+    CHECK(errors_of(choose + "prefer (go ?o ?d) by (near ?o ?d)\n").find("the rank atom must have exactly one variable that the chosen atom does not have (the rank), but has 0") != std::string::npos);
+    CHECK(errors_of(choose + "prefer (go ?o ?d) by (near ?o ?d 3)\n").find("the rank atom's arguments must be distinct variables") != std::string::npos);
+    CHECK(errors_of(choose + "prefer (stay ?o ?d) by (near ?o ?d ?k)\n").find("p.rules:4:8: `prefer`: no `exactly one` assumes (stay ...)") == 0);
+    {  // only a warning: the program is fine, the preference chooses nothing
+        qm::Diagnostics d;
+        ProgramSpec spec;
+        read_rule_text(choose + "prefer (stay ?o ?d) by (near ?o ?d ?k)\n", "p.rules", spec, d);
+        CHECK(check_program(spec, d));
+        CHECK(!d.has_errors());
+    }
+    CHECK(errors_of(choose + "prefer (go ?o ?d) by (near ?o ?d ?k)\nprefer (go ?o ?d) by (far ?o ?d ?k)\n")
+              .find("p.rules:5:8: `prefer`: (go ...) already has a preference at p.rules:4:1") == 0);
+    CHECK(errors_of(choose + "prefer (go ?o) by (near ?o ?d ?k)\n").find("p.rules:4:8: predicate 'go' is used here with 1 argument(s)") == 0);
+}
+
+TEST_CASE("engine/preferences: a syntax error in `prefer` is located") {
+    qm::Diagnostics d;
+    ProgramSpec spec;
+    read_rule_text("prefer (go ?o ?d) (near ?o ?d ?k)\n", "p.rules", spec, d);
+    REQUIRE(d.has_errors());
+    CHECK(d.items()[0].message.find("expected 'by'") == 0);
+    CHECK(d.items()[0].where.column == 19);
+    qm::Diagnostics e;
+    read_rule_text("prefer (go ?o ?d) by (near ?o ?d ?k) up 3\n", "p.rules", spec, e);
+    REQUIRE(e.has_errors());
+    CHECK(e.items()[0].message.find("expected 'to'") == 0);
+}
+
+TEST_CASE("engine/preferences: ranks by the rank facts holding in an environment") {
+    qm::Diagnostics d;
+    ProgramSpec spec;
+    read_rule_text(program, "p.rules", spec, d);
+    auto p = compile_program(spec, d);
+    REQUIRE(p.has_value());
+    Engine e(std::move(p->program), std::move(p->values));
+    e.run(d);
+    REQUIRE(!d.has_errors());
+    REQUIRE(e.choice_sets().size() == 3);
+    // Which set is whose, and which member stands for which direction.
+    std::map<std::string, std::vector<qm::atms::AssumptionId>> set_of;
+    for (const auto& set : e.choice_sets()) set_of[e.print(set.front()).substr(4, 1)] = set;
+    auto ranks_by_text = [&](const std::string& object, qm::atms::EnvId env) {
+        std::map<std::string, std::int64_t> out;
+        const auto& set = set_of.at(object);
+        auto r = choice_set_ranks(e, set, env);
+        if (!r) return out;
+        REQUIRE(r->size() == set.size());
+        for (std::size_t i = 0; i < set.size(); ++i) out[e.print(set[i])] = (*r)[i];
+        return out;
+    };
+    const qm::atms::EnvId none = e.atms().environment(std::vector<qm::atms::AssumptionId>{});
+    auto windy_fact = e.find(e.values().symbol("windy"), {});
+    REQUIRE(windy_fact);
+    const qm::atms::EnvId windy = e.atms().environment({*e.assumption(*windy_fact)});
+    // North 0; south 7 capped at 5; east unranked, after the farthest ranked (5).
+    CHECK(ranks_by_text("a", none) == std::map<std::string, std::int64_t>{{"(go a n)", 0}, {"(go a s)", 5}, {"(go a e)", 6}});
+    // Windy: south's least rank is 1.
+    CHECK(ranks_by_text("b", windy) == std::map<std::string, std::int64_t>{{"(go b n)", 0}, {"(go b s)", 1}, {"(go b e)", 2}});
+    CHECK(ranks_by_text("c", windy).empty());  // no rank fact: not ranked
+    // The rank facts of a member, in any environment.
+    std::vector<qm::atms::AssumptionId> south;
+    for (auto a : set_of.at("a"))
+        if (e.print(a) == "(go a s)") south.push_back(a);
+    REQUIRE(south.size() == 1);
+    std::vector<std::string> texts;
+    for (FactId f : rank_facts(e, south[0])) texts.push_back(e.print(f));
+    std::sort(texts.begin(), texts.end());
+    CHECK(texts == std::vector<std::string>{"(near a s 1)", "(near a s 7)"});
+    CHECK(rank_facts(e, *e.assumption(*windy_fact)).empty());  // not a chosen fact
+}
+
+TEST_CASE("engine/preferences: docs/RULES.md's vane, with the generic query over interpretations") {
+    const char* vane = R"(fact (vane v)
+assume (blocked-north)
+rule points
+  when (vane ?x)
+  then [exactly one ?d in {n e s w}: assume (points ?x ?d)]
+rule nearest-to-the-wind
+  when (vane ?x)
+  then (near ?x n 0) (near ?x e 1) (near ?x w 1) (near ?x s 5)
+rule blocked
+  when (points ?x n) (blocked-north)
+  then false
+prefer (points ?x ?d) by (near ?x ?d ?k) up to 2
+)";
+    qm::Diagnostics d;
+    ProgramSpec spec;
+    read_rule_text(vane, "vane.rules", spec, d);
+    auto p = compile_program(spec, d);
+    REQUIRE(p.has_value());
+    Engine e(std::move(p->program), std::move(p->values));
+    e.run(d);
+    REQUIRE(!d.has_errors());
+    REQUIRE(e.choice_sets().size() == 1);
+    const auto& set = e.choice_sets()[0];
+    auto preferred = [&](qm::atms::EnvId base) {
+        auto ranks = choice_set_ranks(e, set, base);
+        REQUIRE(ranks.has_value());
+        const std::vector<qm::atms::RankedChoiceSet> ranked{{set, *ranks}};
+        std::vector<std::string> out;
+        qm::atms::for_each_preferred_interpretation(e.atms(), ranked, {}, base, [&](const qm::atms::Environment& env) {
+            for (auto a : set)
+                if (env.contains(a)) out.push_back(e.print(a));
+            return true;
+        });
+        std::sort(out.begin(), out.end());
+        return out;
+    };
+    auto blocked = e.find(e.values().symbol("blocked-north"), {});
+    REQUIRE(blocked);
+    CHECK(preferred(e.atms().environment(std::vector<qm::atms::AssumptionId>{})) == std::vector<std::string>{"(points v n)"});
+    CHECK(preferred(e.atms().environment({*e.assumption(*blocked)})) ==
+          std::vector<std::string>{"(points v e)", "(points v w)"});
+}
