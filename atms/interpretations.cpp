@@ -19,7 +19,6 @@
 namespace qm::atms {
 namespace {
 constexpr std::uint32_t word_bits = 64;
-constexpr std::uint32_t none = UINT32_MAX;
 
 // The candidates ("locals") of every set, in search order: set d holds [start[d], start[d + 1]).
 struct Plan {
