@@ -19,6 +19,7 @@
 #include <boost/spirit/home/x3/support/ast/variant.hpp>
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -31,7 +32,10 @@ namespace ast {
 namespace x3 = boost::spirit::x3;
 
 struct Name : x3::position_tagged { std::string text; };
-struct SignToken : x3::position_tagged { std::string text; };  // "+", "0", "-", "?x" or a bad token
+// "+", "0", "-", "?x" or a bad token: where it starts (its position tag) and its length; its text
+// is the source's (text_of). Signs are most of a scene's tokens: as a std::string each, the
+// directions were an eighth of the peak memory of reading a large scene (issue 19 item 4).
+struct SignToken : x3::position_tagged { std::uint32_t length = 0; };
 struct Direction : x3::position_tagged { std::vector<SignToken> parts; };
 
 struct Description : x3::position_tagged { Name kind; Name object; };          // (rigid-ob block)
@@ -46,7 +50,9 @@ struct ForceEntry : x3::position_tagged { Name object; Direction direction; Dire
 struct ContactEntry : x3::position_tagged { Name first; Name second; };
 struct MotionEntry : x3::position_tagged { Name object; Direction translation; Direction rotation; };
 
-struct Descriptor : x3::variant<ContactEntry, ForceEntry, MotionEntry> {
+// Forces and motions are boxed: a large situation is mostly contacts, and the variant is as
+// large as its largest alternative (168 bytes inline, 96 boxed).
+struct Descriptor : x3::variant<ContactEntry, x3::forward_ast<ForceEntry>, x3::forward_ast<MotionEntry>> {
     using base_type::base_type;
     using base_type::operator=;
 };

@@ -18,6 +18,7 @@ std::optional<Scene> SceneChecker::run(const ast::Scenario& s) {
     dimensions(s.dimensions);
     collect_sections(s);
     contact_list(s);
+    reserve_tables();
     if (!individuals_) {
         cx_.error(s.name, "scene '" + s.name.text + "' has no Individuals section");
     } else {
@@ -38,6 +39,25 @@ std::optional<Scene> SceneChecker::run(const ast::Scenario& s) {
     for (const auto* sit : situations_) situation(*sit);
     if (cx_.errors() > 0) return std::nullopt;
     return std::move(scene_);
+}
+
+// The tables are sized from the AST before they are filled: grown by doubling, the objects' and
+// surfaces' tables and their name indexes held up to twice what they used, a sixth of the peak
+// memory of reading a large scene (issue 19 item 4), which is reached while the AST is alive.
+void SceneChecker::reserve_tables() {
+    std::size_t surfaces = 0;
+    for (const auto* d : surfaces_)
+        for (const auto& g : d->entries) surfaces += g.surfaces.size();
+    for (const auto* c : corners_)
+        for (const auto& g : c->entries) surfaces += g.corners.size();
+    if (individuals_) {
+        scene_.objects.reserve(individuals_->names.size());
+        object_ids_.reserve(individuals_->names.size());
+    }
+    scene_.surfaces.reserve(surfaces);
+    surface_ids_.reserve(surfaces);
+    surface_names_.reserve(surfaces);
+    scene_.situations.reserve(situations_.size());
 }
 
 void SceneChecker::adopt(const Scene& scene) {

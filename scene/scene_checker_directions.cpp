@@ -35,8 +35,14 @@ void CheckContext::warning(const ast::x3::position_tagged& node, std::string mes
     diags_.add(Severity::warning, src_.locate(off), std::move(message), src_.line_at(off));
 }
 
+std::string CheckContext::text_of(const ast::SignToken& t) const {
+    const std::string& text = src_.text();
+    const std::size_t off = pos_.offset_of(t);
+    return off < text.size() ? text.substr(off, t.length) : std::string();
+}
+
 std::optional<PatternSlot> CheckContext::slot(const ast::SignToken& t, bool allow_variable) {
-    const std::string& s = t.text;
+    const std::string s = text_of(t);
     if (s == "+") return PatternSlot{Sign::plus, {}};
     if (s == "0") return PatternSlot{Sign::zero, {}};
     if (s == "-") return PatternSlot{Sign::minus, {}};

@@ -90,6 +90,8 @@ struct SceneChecker::DescriptorVisitor {
 void SceneChecker::situation(const ast::Situation& s) {
     Situation out;
     out.where = cx_.where(s);
+    // Most descriptors of a large situation are contacts; sized once rather than by doubling.
+    out.contacts.reserve(s.descriptors.size());
     for (const auto& d : s.descriptors) boost::apply_visitor(DescriptorVisitor{*this, out}, d.get());
     scene_.situations.push_back(std::move(out));
 }

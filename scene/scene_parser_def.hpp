@@ -18,6 +18,8 @@
 #include "qm/diagnostics.hpp"
 #include <boost/fusion/include/adapt_struct.hpp>
 #include <boost/spirit/home/x3.hpp>
+#include <algorithm>
+#include <cstdint>
 #include <string>
 #include <type_traits>
 
@@ -82,6 +84,15 @@ inline auto store_text(std::string Node::*member) {
     return [member](auto& ctx) {
         const auto& r = x3::_attr(ctx);
         (x3::_val(ctx).*member).assign(r.begin(), r.end());
+    };
+}
+// Semantic action storing the length of the matched text (x3::raw) into a member: the text itself
+// stays in the source (a sign token, scene/scene_ast.hpp).
+template <class Node>
+inline auto store_length(std::uint32_t Node::*member) {
+    return [member](auto& ctx) {
+        const auto& r = x3::_attr(ctx);
+        x3::_val(ctx).*member = static_cast<std::uint32_t>(std::min<std::size_t>(r.size(), UINT32_MAX));
     };
 }
 // Semantic action moving the parsed attribute into a member of the rule's attribute.
@@ -313,7 +324,7 @@ const auto name_inner_def = (x3::raw[x3::lexeme[letter >> *name_char]] >> !x3::l
 // Any token up to a blank, parenthesis, comma, colon or comment: the checker judges it, so that
 // `--` or `++` get a helpful message instead of a bare syntax error.
 const auto sign_def = sign_inner;
-const auto sign_inner_def = x3::raw[x3::lexeme[+(x3::char_ - blank - x3::char_("(),:;"))]][store_text(&ast::SignToken::text)];
+const auto sign_inner_def = x3::raw[x3::lexeme[+(x3::char_ - blank - x3::char_("(),:;"))]][store_length(&ast::SignToken::length)];
 const auto direction_def = direction_inner;
 const auto direction_inner_def = ((x3::lit('(') >> *sign) > ')')[store(&ast::Direction::parts)];
 const auto dimensions_def = dimensions_inner;

@@ -25,10 +25,15 @@ int main(int argc, char** argv) {
     const double mb = argc >= 2 ? std::atof(argv[1]) : 0;
     const std::string kind = argc >= 3 && argv[2][0] != '-' ? argv[2] : "train";
     std::string write_to;
-    for (int i = 2; i + 1 < argc; ++i)
+    // The name the scene is read as: every located entry of the checked scene keeps a copy of it,
+    // so a realistic path (longer than a short string's 15 characters) is the default.
+    std::string name = "scenarios/generated/" + kind + "-scene.def";
+    for (int i = 2; i + 1 < argc; ++i) {
         if (std::string(argv[i]) == "--write") write_to = argv[i + 1];
+        if (std::string(argv[i]) == "--name") name = argv[i + 1];
+    }
     if (mb <= 0 || (kind != "train" && kind != "stack")) {
-        std::fprintf(stderr, "usage: scene_read_bench MEGABYTES [train|stack] [--write FILE]\n");
+        std::fprintf(stderr, "usage: scene_read_bench MEGABYTES [train|stack] [--write FILE] [--name NAME]\n");
         return 2;
     }
     // Objects for the size asked, from the bytes per object of a sample.
@@ -39,7 +44,7 @@ int main(int argc, char** argv) {
     const std::size_t bytes = text.size();
     const auto t0 = std::chrono::steady_clock::now();
     qm::Diagnostics d;
-    auto scene = qm::scene::read_scene("generated.def", std::move(text), d);
+    auto scene = qm::scene::read_scene(name, std::move(text), d);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     rusage u{};
     getrusage(RUSAGE_SELF, &u);

@@ -41,6 +41,8 @@ public:
     [[nodiscard]] std::size_t errors() const noexcept { return errors_; }
     void warning(const ast::x3::position_tagged& node, std::string message);
 
+    // A sign token's text, from the source it was parsed from (the AST keeps only its length).
+    [[nodiscard]] std::string text_of(const ast::SignToken& t) const;
     // One sign token; variables (`?x`) only when allowed (constraint entries).
     std::optional<PatternSlot> slot(const ast::SignToken& t, bool allow_variable);
     // A direction of `arity` signs; `role` names it in messages ("a surface normal").
@@ -93,6 +95,7 @@ private:
               const ast::RotConstraints*& r1);
     // The closing CONTACT list of the keyword notation: the only situation, when there is no other.
     void contact_list(const ast::Scenario& s);
+    void reserve_tables();
     void individuals(const ast::Individuals& ind);
     void descriptions(const ast::Descriptions& d);
 
