@@ -22,6 +22,8 @@ Engine::Engine(std::shared_ptr<const SharedProgram> program, ValueTable values, 
       values_(std::move(values)),
       builtins_(builtins) {
     atms_.add_consumer(*this);
+    rule_fresh_.reserve(program_.rules.size());
+    rule_matched_.reserve(program_.rules.size());
     for (std::size_t i = 0; i < program_.rules.size(); ++i) {
         rule_fresh_.push_back({});
         rule_matched_.push_back(0);

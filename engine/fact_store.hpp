@@ -8,13 +8,15 @@
 //             for matching, in activation order (so matching order is deterministic). Every list of an
 //             argument index is the subsequence of its predicate's list (all or active) holding that
 //             value at that position, in the same order.
+// Cost:       a state's engine interns and indexes thousands of facts and is then dropped
+//             (docs/perf/envision.md), so the tables are open-addressed arrays: a lookup allocates
+//             nothing, and a new fact allocates only its arguments and the growth of its lists.
 // Knows nothing of the ATMS or of rules.
 #pragma once
 #include "engine/fact.hpp"
 #include <cstdint>
 #include <optional>
 #include <span>
-#include <unordered_map>
 #include <vector>
 
 namespace qm::engine {
@@ -39,18 +41,31 @@ public:
                                                                ValueId value) const;
 
 private:
-    struct KeyHash {
-        std::size_t operator()(const std::vector<std::uint32_t>& k) const noexcept;
+    // Lists of facts by a 64-bit key (a predicate, or a predicate, position and value: list_key),
+    // open-addressed with linear probing; a key's list never moves to another key.
+    class Lists {
+    public:
+        [[nodiscard]] std::span<const FactId> find(std::uint64_t key) const;
+        void append(std::uint64_t key, FactId f);
+
+    private:
+        void grow();
+        std::vector<std::uint64_t> keys_;    // per slot
+        std::vector<std::uint32_t> slots_;   // per slot: index into lists_ plus one; 0 = empty
+        std::vector<std::vector<FactId>> lists_;
     };
-    static std::vector<std::uint32_t> key(ValueId predicate, std::span<const ValueId> args);
-    static std::uint64_t arg_key(ValueId predicate, std::uint32_t position, ValueId value);
+    static std::uint64_t list_key(ValueId predicate, std::uint32_t position, ValueId value);
+    static std::uint64_t predicate_key(ValueId predicate);
+    static std::uint32_t hash(ValueId predicate, std::span<const ValueId> args);
+    // The slot of (predicate, args) in by_key_: its fact's slot, or the empty slot where it goes.
+    [[nodiscard]] std::size_t slot_of(ValueId predicate, std::span<const ValueId> args, std::uint32_t h) const;
+    void grow_keys();
+    void index(Lists& lists, FactId f);
 
     IdVector<FactId, Fact> facts_;
     IdVector<FactId, std::uint8_t> active_;  // 1 = active (not bool: IdVector returns references)
-    std::unordered_map<std::vector<std::uint32_t>, FactId, KeyHash> by_key_;
-    std::unordered_map<std::uint32_t, std::vector<FactId>> all_by_predicate_;
-    std::unordered_map<std::uint64_t, std::vector<FactId>> all_by_argument_;
-    std::unordered_map<std::uint32_t, std::vector<FactId>> active_by_predicate_;
-    std::unordered_map<std::uint64_t, std::vector<FactId>> active_by_argument_;
+    IdVector<FactId, std::uint32_t> hash_;   // hash(predicate, args) of each fact
+    std::vector<std::uint32_t> by_key_;      // open-addressed: FactId plus one; 0 = empty
+    Lists all_, active_lists_;
 };
 }  // namespace qm::engine
