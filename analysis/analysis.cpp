@@ -192,9 +192,9 @@ SituationResult Analysis::State::read(std::size_t s, atms::EnvId env,
                 auto nodes = rank_nodes(o);
                 read_nodes[c].insert(read_nodes[c].end(), nodes.begin(), nodes.end());
             }
-    for (const ChainGroup& group : group_chains(engine->atms(), branches, env, read_nodes)) {
+    for (const atms::ChoiceSetGroup& group : atms::group_by_shared_nogoods(engine->atms(), branches, env, read_nodes)) {
         std::vector<ObjectChoices> members;
-        for (std::size_t c : group.chains)
+        for (std::size_t c : group.members)
             for (ObjectId o : chains[c]) members.push_back(choices[o]);
         std::sort(members.begin(), members.end(),
                   [](const ObjectChoices& a, const ObjectChoices& b) { return a.object < b.object; });

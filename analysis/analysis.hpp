@@ -6,7 +6,7 @@
 //             combination of motions (interpretations of the uniqueness-of-motion choice sets, solved
 //             per kinematic chain, Def 22) and the stability verdict. The same Analysis answers "why"
 //             and "what if" queries from the labels it already holds (docs/ANALYSIS.md says what is
-//             reused and what is recomputed).
+//             reused and what is recomputed); the searches behind "why" are bounded by WhyLimits.
 // Ownership:  an Analysis owns its engine(s) and a copy of the Scene; results are plain values.
 // Invariants: situation indices count from 1 in file order; every direction list is in canonical
 //             order (lexicographic over + 0 -, as Definition 1 enumerates them) and includes the
@@ -34,6 +34,20 @@
 
 namespace qm::analysis {
 
+// Bounds on the searches behind --why (analysis/why_*.cpp); an answer that reaches one says so.
+struct WhyLimits {
+    // Minimal responsible sets are found by re-analysing the subsets of a situation's contacts,
+    // forces and given motions (2^N contexts) up to this many of them (below 32); above, a sufficient
+    // set is given.
+    std::size_t exact_items = 8;
+    // Case splits of a refutation by case analysis (atms/case_refutation.hpp) before giving up.
+    std::size_t case_analysis_steps = 200000;
+    // For a consistent motion no force drives: nearness reasons gathered at most, and consistent
+    // combinations with it visited at most to find them.
+    std::size_t rank_reasons = 8;
+    std::size_t rank_combinations = 32;
+};
+
 struct AnalysisOptions {
     std::filesystem::path rules_directory;  // every *.rules file directly in it, loaded in name order
     std::vector<Motion> given;              // `--given`: current motions added to every situation
@@ -50,6 +64,7 @@ struct AnalysisOptions {
     // Bounds on the engine's facts and environments (engine/run_options.hpp); reaching one throws
     // qm::LimitReached out of analyse() or a query (the Analysis must then be dropped).
     engine::EngineLimits limits;
+    WhyLimits why;  // Analysis::why's searches
 };
 
 // Free directions of one object (zero included), canonical order.

@@ -28,6 +28,7 @@ using scene::Surface;
 using scene::SurfaceId;
 
 enum class Granularity : std::uint8_t;
+struct WhyLimits;
 struct AnalysisOptions;
 struct Freedom;
 struct ObjectMotion;

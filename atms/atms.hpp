@@ -2,7 +2,10 @@
 // Provides:   Atms, an assumption-based truth maintenance system (de Kleer 1986, "An assumption-based
 //             TMS"; the design of BPS atms.lisp, typed). Nodes carry an opaque DatumId; Horn clause
 //             justifications carry an opaque InformantId. Queries: labels, consistency, minimal
-//             nogoods, interpretations over choice sets, explanations.
+//             nogoods, interpretations over choice sets, explanations. Queries built on these have
+//             headers of their own: preferred_interpretations.hpp, case_refutation.hpp (refutation
+//             by case analysis over choice sets), choice_set_groups.hpp (choice sets that share
+//             nogoods).
 // Ownership:  an Atms owns its nodes, assumptions, environments and justifications; all are referred
 //             to by dense ids valid for the lifetime of the Atms. Nothing is ever removed. There is no
 //             global state: any number of Atms objects can coexist. Not thread safe. References

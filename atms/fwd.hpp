@@ -12,6 +12,10 @@ struct Justification;
 struct Explanation;
 class Consumer;
 class Atms;
+struct RefutationOptions;
+struct Refutation;
+struct ChoiceSetIndex;
+struct ChoiceSetGroup;
 namespace detail {
 struct WeaveScratch;
 }

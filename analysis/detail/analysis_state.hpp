@@ -1,6 +1,6 @@
 // analysis/detail/analysis_state.hpp (internal to analysis/)
-// Provides:   Analysis::State, shared by analysis.cpp (building and solving) and why_query.cpp
-//             (explanations): the engine that holds the laws' labels, the scene's facts, each
+// Provides:   Analysis::State, shared by analysis.cpp (building and solving) and the why_*.cpp
+//             files (explanations): the engine that holds the laws' labels, the scene's facts, each
 //             situation's context run and results, and each object's Law 1 choice sets.
 // Ownership:  owned by Analysis through a unique_ptr; the SceneFacts refer into scene and engine,
 //             which therefore never move while the State lives.
