@@ -191,15 +191,18 @@ def check_envisionment(driver, data, wheel, pallets, described):
         field.send_keys(text)
 
     enter(" ".join("#%d" % h for h in history))
+    # Every state the drawing shows is recorded by the page itself (a MutationObserver), not by
+    # polling from here: on a loaded machine a WebDriver round trip outlasts a 150 ms step.
+    driver.execute_script(
+        "const d = arguments[0]; window.qmShown = [+d.getAttribute('data-state')];"
+        "new MutationObserver(() => { const s = +d.getAttribute('data-state');"
+        " if (window.qmShown[window.qmShown.length - 1] !== s) window.qmShown.push(s); })"
+        ".observe(d, {attributes: true, attributeFilter: ['data-state']});", drawing)
     driver.find_element(By.ID, "history-play").click()
-    seen, deadline = [], time.time() + 20
-    while time.time() < deadline:
-        shown_now = int(drawing.get_attribute("data-state"))
-        if not seen or seen[-1] != shown_now:
-            seen.append(shown_now)
-        if driver.find_element(By.ID, "history-play").text == "Play":
-            break
-        time.sleep(0.02)
+    deadline = time.time() + 30
+    while time.time() < deadline and driver.find_element(By.ID, "history-play").text != "Play":
+        time.sleep(0.05)
+    seen = driver.execute_script("return window.qmShown;")
     check(seen[-len(history):] == history, "playing %r showed %r" % (history, seen))
     check(driver.find_element(By.ID, "history-status").text.startswith("step 4 of 4"), "the history's last step")
     trail = driver.find_element(By.CSS_SELECTOR, "#state-cspace g.state-point polyline").get_attribute("points").split()
