@@ -22,11 +22,18 @@
 //                                                       qualitative outward normal (Def 16); origin =
 //                                                       the direction from the contact point to the
 //                                                       part's pivot (Def 17), (0 0) if it does not
-//                                                       turn; `-2`, `-3` ... when one feature needs
+//                                                       turn, resolved against the contact's normal
+//                                                       where the qualitative turn across it is
+//                                                       ambiguous and the exact one is not
+//                                                       (geometry::origin_direction_at_contact; 7.3,
+//                                                       docs/LAWS.md "The metric and the symbolic
+//                                                       routes"); `-2`, `-3` ... when one feature needs
 //                                                       several qualitatively different surfaces
 //   a convex corner (Def 18)                          a corner `<part>-c<k>` between its two sides
 //                                                       (Surfaces with their normals), with its own
-//                                                       origin direction; how it constrains (3.1.1,
+//                                                       origin direction (resolved likewise against
+//                                                       the face it touches; not against another
+//                                                       corner, Def 26); how it constrains (3.1.1,
 //                                                       Defs 25-26) is rules/corners.rules' business
 //   an external force acting at the configuration     a Force of the situation, with its cause (a
 //     (external_force.hpp, 8.2.1)                       cause named twice is one cause): a torque s

@@ -140,6 +140,23 @@ QualDirection origin_direction(const Part& part, double q, const Eigen::Vector2d
     return QualDirection{{tolerant_sign(d.x(), zero_length), tolerant_sign(d.y(), zero_length)}};
 }
 
+QualDirection origin_direction_at_contact(const Part& part, double q, const Eigen::Vector2d& point, const Eigen::Vector2d& normal,
+                                          double zero_length, double zero_tolerance) {
+    QualDirection o = origin_direction(part, q, point, zero_length);
+    if (!part.rotates()) return o;
+    const Eigen::Vector2d d = part.pose(q) * part.dof.pivot - point;
+    const QualDirection n = qualitative(normal, zero_tolerance);
+    // cross(o, n) = o.x n.y - o.y n.x, qualitatively: ambiguous when both terms are non-zero with
+    // opposite signs.
+    const int t1 = o.s[0] * n.s[1], t2 = -o.s[1] * n.s[0];
+    if (t1 == 0 || t2 == 0 || t1 == t2) return o;
+    const double x_term = d.x() * normal.y(), y_term = d.y() * normal.x();
+    if (std::abs(x_term - y_term) <= zero_tolerance * d.norm()) return o;  // too close to decide
+    if (std::abs(x_term) > std::abs(y_term)) o.s[1] = 0;
+    else o.s[0] = 0;
+    return o;
+}
+
 bool can_contact(const ContactFeature& corner, const Eigen::Vector2d& n, double zero_tolerance) {
     QM_REQUIRE(corner.kind == FeatureKind::corner, "can_contact needs a corner");
     return (-corner.sides[0]).dot(n) >= -zero_tolerance && (-corner.sides[1]).dot(n) >= -zero_tolerance;

@@ -67,6 +67,20 @@ struct ContactResult {
 // component 0 within `zero_length`; all zero when the part does not rotate.
 [[nodiscard]] QualDirection origin_direction(const Part& part, double q, const Eigen::Vector2d& point, double zero_length);
 
+// Def 17's origin direction as the laws read it at a contact whose normal lies along `normal`
+// (a unit vector, either way along the normal line): Tables 3.1-3.3 use a surface's origin only
+// to ask which way a rotation of its object turns the point of contact across that normal
+// (Rotate-90 of the normal against the origin), the sign of the cross product of the origin and
+// the normal. Where the qualitative directions leave that sign ambiguous (the two products of
+// components have opposite signs) but the exact geometry decides it (|cross| above
+// zero_tolerance times the origin's length), the origin's component whose product is the smaller
+// is taken as 0, so the qualitative test gives the exact answer: section 7.3, "we must either know
+// the center of rotation or postulate a few locations for this point at the time of
+// representation" (here it is known); the liberal bias is for an ambiguity that remains.
+// Otherwise (and for a part that does not turn) exactly origin_direction().
+[[nodiscard]] QualDirection origin_direction_at_contact(const Part& part, double q, const Eigen::Vector2d& point,
+                                                        const Eigen::Vector2d& normal, double zero_length, double zero_tolerance);
+
 // Def 25 (as its prose reads, section 3.1.1): a corner can touch a surface whose outward normal
 // lies in the intersection of the closed half planes of its sides' reverse normals.
 [[nodiscard]] bool can_contact(const ContactFeature& corner, const Eigen::Vector2d& surface_normal, double zero_tolerance);

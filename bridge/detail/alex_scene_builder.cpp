@@ -98,8 +98,8 @@ a::CauseId AlexSceneBuilder::cause(const std::string& name) {
 void AlexSceneBuilder::add_contacts(const g::PairSpec& pair, const g::ContactResult& r) {
     for (const auto& c : r.contacts) {
         a::Contact k;
-        k.first = feature(pair.a, c.first, r.tolerance, pair.where);
-        k.second = feature(pair.b, c.second, r.tolerance, pair.where);
+        k.first = feature(pair.a, c.first, c.second, r.tolerance, pair.where);
+        k.second = feature(pair.b, c.second, c.first, r.tolerance, pair.where);
         k.where = pair.where;
         auto& list = scene_.situations.front().contacts;
         if (std::find(list.begin(), list.end(), k) == list.end()) list.push_back(k);
@@ -128,8 +128,14 @@ void AlexSceneBuilder::add_forces() {
     }
 }
 
-a::SurfaceId AlexSceneBuilder::feature(g::PartId p, const g::ContactFeature& f, double tol, const SourceLocation& where) {
-    return f.kind == g::FeatureKind::corner ? corner(p, f, tol, where) : surface(p, f, tol, where);
+a::SurfaceId AlexSceneBuilder::feature(g::PartId p, const g::ContactFeature& f, const g::ContactFeature& other, double tol,
+                                       const SourceLocation& where) {
+    // The contact's normal: a face's own, or, for a corner, the face it touches (3.1.1: the corner
+    // takes the reverse of that face's normal). Two corners have no one normal (Def 26).
+    std::optional<Eigen::Vector2d> normal;
+    if (f.kind == g::FeatureKind::surface) normal = f.normal;
+    else if (other.kind == g::FeatureKind::surface) normal = other.normal;
+    return f.kind == g::FeatureKind::corner ? corner(p, f, normal, tol, where) : surface(p, f, normal, tol, where);
 }
 
 a::SurfaceId AlexSceneBuilder::named(a::Surface s, const std::string& base) {
@@ -144,21 +150,31 @@ a::SurfaceId AlexSceneBuilder::named(a::Surface s, const std::string& base) {
     return id;
 }
 
+g::QualDirection AlexSceneBuilder::origin(g::PartId p, const Eigen::Vector2d& point, const std::optional<Eigen::Vector2d>& contact_normal,
+                                          double tol) const {
+    const g::Part& part = m_.parts[p];
+    const double zero = std::max(tol, zero_length(part));
+    if (!contact_normal) return g::origin_direction(part, q_.at(p), point, zero);
+    return g::origin_direction_at_contact(part, q_.at(p), point, *contact_normal, zero, m_.settings.normal_zero_tolerance);
+}
+
 // A point of a segment: an Alex surface with the segment's normal there (an Alex surface is a set
 // of qualitatively equivalent points, so one segment may need several).
-a::SurfaceId AlexSceneBuilder::surface(g::PartId p, const g::ContactFeature& f, double tol, const SourceLocation& where) {
+a::SurfaceId AlexSceneBuilder::surface(g::PartId p, const g::ContactFeature& f, const std::optional<Eigen::Vector2d>& contact_normal,
+                                       double tol, const SourceLocation& where) {
     const g::Part& part = m_.parts[p];
     a::Surface s;
     s.object = object_.at(p.value);
     s.normal = direction_of(g::qualitative(f.normal, m_.settings.normal_zero_tolerance));
-    s.origin = direction_of(g::origin_direction(part, q_.at(p), f.point, std::max(tol, zero_length(part))));
+    s.origin = direction_of(origin(p, f.point, contact_normal, tol));
     s.where = where;
     return named(std::move(s), part.name + "-s" + std::to_string(g::global_segment(part, f.profile, f.segment) + 1));
 }
 
 // A convex corner: its two sides as faces, and the corner between them, with its own origin
 // direction (Def 18).
-a::SurfaceId AlexSceneBuilder::corner(g::PartId p, const g::ContactFeature& f, double tol, const SourceLocation& where) {
+a::SurfaceId AlexSceneBuilder::corner(g::PartId p, const g::ContactFeature& f, const std::optional<Eigen::Vector2d>& contact_normal,
+                                      double tol, const SourceLocation& where) {
     const g::Part& part = m_.parts[p];
     g::ContactFeature before = f, after = f;
     before.kind = after.kind = g::FeatureKind::surface;
@@ -167,8 +183,8 @@ a::SurfaceId AlexSceneBuilder::corner(g::PartId p, const g::ContactFeature& f, d
     after.normal = f.sides[1];
     a::Surface s;
     s.object = object_.at(p.value);
-    s.corner = a::CornerSides{surface(p, before, tol, where), surface(p, after, tol, where)};
-    s.origin = direction_of(g::origin_direction(part, q_.at(p), f.point, std::max(tol, zero_length(part))));
+    s.corner = a::CornerSides{surface(p, before, std::nullopt, tol, where), surface(p, after, std::nullopt, tol, where)};
+    s.origin = direction_of(origin(p, f.point, contact_normal, tol));
     s.where = where;
     return named(std::move(s), part.name + "-c" + std::to_string(g::global_segment(part, f.profile, f.segment) + 1));
 }

@@ -12,6 +12,7 @@
 #include "geometry/mechanism.hpp"
 #include "scene/scene.hpp"
 #include <map>
+#include <optional>
 #include <string>
 
 namespace qm::bridge::detail {
@@ -31,9 +32,19 @@ private:
     [[nodiscard]] double zero_length(const geometry::Part& p) const;
     [[nodiscard]] scene::Object object_for(geometry::PartId p) const;
     scene::CauseId cause(const std::string& name);
-    scene::SurfaceId feature(geometry::PartId p, const geometry::ContactFeature& f, double tol, const SourceLocation& where);
-    scene::SurfaceId surface(geometry::PartId p, const geometry::ContactFeature& f, double tol, const SourceLocation& where);
-    scene::SurfaceId corner(geometry::PartId p, const geometry::ContactFeature& f, double tol, const SourceLocation& where);
+    // A feature touching `other`: its origin direction is resolved against the contact's normal
+    // (geometry::origin_direction_at_contact) when the contact has one normal (a face, or a corner
+    // against a face); against another corner (Def 26) it is the plain origin direction.
+    scene::SurfaceId feature(geometry::PartId p, const geometry::ContactFeature& f, const geometry::ContactFeature& other, double tol,
+                             const SourceLocation& where);
+    // `contact_normal`: the normal the origin is resolved against; none for a corner's sides.
+    scene::SurfaceId surface(geometry::PartId p, const geometry::ContactFeature& f, const std::optional<Eigen::Vector2d>& contact_normal,
+                             double tol, const SourceLocation& where);
+    scene::SurfaceId corner(geometry::PartId p, const geometry::ContactFeature& f, const std::optional<Eigen::Vector2d>& contact_normal,
+                            double tol, const SourceLocation& where);
+    // Def 17's origin direction of part p at `point`, resolved against the contact's normal if any.
+    [[nodiscard]] geometry::QualDirection origin(geometry::PartId p, const Eigen::Vector2d& point,
+                                                 const std::optional<Eigen::Vector2d>& contact_normal, double tol) const;
     // The surface s under the first free name of base, base-2, ...; or the existing one of those
     // names that equals s in everything but its name.
     scene::SurfaceId named(scene::Surface s, const std::string& base);

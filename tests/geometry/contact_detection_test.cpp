@@ -223,3 +223,23 @@ TEST_CASE("geometry/contact_detection: overlap beyond the tolerance is refused; 
     CHECK(far.contacts.empty());
     CHECK(far.fcl_distance == doctest::Approx(0.5));
 }
+
+TEST_CASE("geometry/contact_detection: the origin direction resolved against a contact's normal (7.3, Def 17)") {
+    // A part turning about (0 0), touched at (-0.8 0.5): its origin direction is (+ -). Against a
+    // normal (0.6 -0.8), also (+ -), the turn across the normal is qualitatively ambiguous
+    // ((+)(-) - (-)(+)), exactly -0.64 + 0.30: the x term wins, so the origin is taken as (+ 0).
+    const Part turning = make({rect(-1, -1, 1, 1)}, PolygonDof::Kind::rotation, V(0, 0));
+    const V point(-0.8, 0.5);
+    CHECK(origin_direction(turning, 0.0, point, 1e-9) == QualDirection{{1, -1}});
+    CHECK(origin_direction_at_contact(turning, 0.0, point, V(0.6, -0.8), 1e-9, 1e-6) == QualDirection{{1, 0}});
+    // The y term wins against (0.9 -0.43589): -0.3487 against -0.45.
+    CHECK(origin_direction_at_contact(turning, 0.0, point, V(0.9, -std::sqrt(1 - 0.81)), 1e-9, 1e-6) == QualDirection{{0, -1}});
+    // Not ambiguous (normal (+ +)): unchanged.
+    CHECK(origin_direction_at_contact(turning, 0.0, point, V(std::sqrt(0.5), std::sqrt(0.5)), 1e-9, 1e-6) == QualDirection{{1, -1}});
+    // The normal along the origin's line: the exact turn is zero, so nothing is decided: unchanged.
+    const V along = V(0.8, -0.5).normalized();
+    CHECK(origin_direction_at_contact(turning, 0.0, point, along, 1e-9, 1e-6) == QualDirection{{1, -1}});
+    // A part that does not turn has no origin direction.
+    const Part table = make({rect(-2, -1, 2, 0)}, PolygonDof::Kind::fixed);
+    CHECK(origin_direction_at_contact(table, 0.0, point, V(0.6, -0.8), 1e-9, 1e-6) == QualDirection{});
+}
