@@ -7,8 +7,9 @@
 //             delimited situations, a closing CONTACT list), which are resolved by the checker.
 //             Also SourceText (a file's text with line lookup) and PositionTable (qm/position_table.hpp), which maps each
 //             node's position tag to its byte offset so that the checker can point at the source.
-// Ownership:  plain values. Every node derives from x3::position_tagged; id_first indexes the
-//             PositionTable filled by the same parse.
+// Ownership:  plain values. Every node derives from x3::position_tagged; id_first is read through
+//             the PositionTable filled by the same parse (the byte offset itself below 1 GiB). A sign
+//             token's text is read from the SourceText it was parsed from.
 // Knows nothing of the checked model (scene/scene.hpp) or of mechanics.
 #pragma once
 #include "qm/diagnostics.hpp"
