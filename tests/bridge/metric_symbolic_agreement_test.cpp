@@ -44,14 +44,8 @@ std::string text(Motion2 m) {
 // Under AddressSanitizer (a Debug build, where the geometry runs 30x slower than in Release) the
 // check covers the scenes of scenarios/metric/ at 4 places a pair, which exercise every code path
 // of the bridge; the Release suite runs it on every bundled scene at 16 places a pair.
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(QM_SANITIZED_BUILD)
 constexpr bool sanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool sanitized = true;
-#else
-constexpr bool sanitized = false;
-#endif
 #else
 constexpr bool sanitized = false;
 #endif

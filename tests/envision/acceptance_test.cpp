@@ -30,14 +30,8 @@ namespace {
 // states take most of a quarter of an hour from a cold cache; there the small mechanisms (gears,
 // ratchet, yoke, cams) exercise the same code, and the escapement's and the clock's questions run
 // in the Release suite only.
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(QM_SANITIZED_BUILD)
 constexpr bool sanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool sanitized = true;
-#else
-constexpr bool sanitized = false;
-#endif
 #else
 constexpr bool sanitized = false;
 #endif
