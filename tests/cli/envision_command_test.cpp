@@ -2,6 +2,7 @@
 // (cli/envision_command.hpp, docs/ENVISION.md): the text summary, the Appendix-style table, the
 // qm-envisionment/1 JSON checked against its schema, --next/--previous, --without, and bad input:
 // each a located or clear error with exit status 2 and nothing on standard output.
+#include "qm_atms_run.hpp"
 #include "../support/json_value.hpp"
 #include <cstdio>
 #include <cstdlib>
@@ -16,31 +17,11 @@ using qm::test::Json;
 
 namespace {
 
-struct Result {
-    int status = -1;
-    std::string out, err;
-};
-
-std::string slurp(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using Result = qm::test::Run;
+using qm::test::slurp;
 
 Result envision(const std::string& args) {
-    static int counter = 0;
-    const std::string base = std::string(QM_BINARY_DIR) + "/envision_test_" + std::to_string(++counter);
-    const std::string cmd = std::string(QM_BINARY_DIR) + "/cli/qm-atms envision " + args + " --cache " + QM_BINARY_DIR +
-                            "/envision-test-place-cache >" + base + ".out 2>" + base + ".err";
-    const int raw = std::system(cmd.c_str());
-    Result r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = slurp(base + ".out");
-    r.err = slurp(base + ".err");
-    std::remove((base + ".out").c_str());
-    std::remove((base + ".err").c_str());
-    return r;
+    return qm::test::qm_atms("envision " + args + " --cache " + QM_BINARY_DIR + "/envision-test-place-cache", "envision_test");
 }
 
 std::string scene(const std::string& name) { return std::string(QM_SOURCE_DIR) + "/scenarios/metric/" + name; }

@@ -3,6 +3,7 @@
 // (contacts with their surfaces' normals and origin directions, corners, linkages as one body,
 // constraints of sliding parts, the forces acting there), located errors with exit status 2,
 // and place vocabularies as text, JSON and SVG, reused from the on-disk cache.
+#include "qm_atms_run.hpp"
 #include <cstdio>
 #include <cstdlib>
 #include "../support/json_value.hpp"
@@ -16,31 +17,10 @@
 
 namespace {
 
-struct Result {
-    int status = -1;
-    std::string out, err;
-};
+using Result = qm::test::Run;
+using qm::test::slurp;
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-Result qm_atms(const std::string& args) {
-    static int counter = 0;
-    const std::string base = std::string(QM_BINARY_DIR) + "/metric_test_" + std::to_string(++counter);
-    const std::string cmd = std::string(QM_BINARY_DIR) + "/cli/qm-atms " + args + " >" + base + ".out 2>" + base + ".err";
-    const int raw = std::system(cmd.c_str());
-    Result r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = slurp(base + ".out");
-    r.err = slurp(base + ".err");
-    std::remove((base + ".out").c_str());
-    std::remove((base + ".err").c_str());
-    return r;
-}
+Result qm_atms(const std::string& args) { return qm::test::qm_atms(args, "metric_test"); }
 
 std::string write_temp(const std::string& name, const std::string& text) {
     const std::string path = std::string(QM_BINARY_DIR) + "/" + name;

@@ -1,9 +1,12 @@
 // tests/cli/qm_atms_run.hpp: runs the built qm-atms (or another executable) with arguments (through
-// the shell) and returns its exit status, standard output and standard error; and reads a whole file.
+// the shell), optionally in another folder and with text on standard input, and returns its exit
+// status, standard output and standard error; and reads a whole file. Every CLI test runs the
+// executable through here, so the temporary files are named and removed one way.
 #pragma once
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -22,23 +25,36 @@ inline std::string slurp(const std::string& path) {
     return s.str();
 }
 
+// How to run: `input`, when set, is written to a file and given as standard input (an interactive
+// session's lines); `folder`, when set, is the working folder (so that relative paths in messages
+// stay the same wherever the tree is).
+struct RunIn {
+    std::optional<std::string> input;
+    std::string folder;
+};
+
 // Runs the executable at `path` (e.g. QM_BINARY_DIR/cli/qm-atms-geometry) with `args`; `tag` keeps
 // the temporary files of different test programs apart.
-inline Run run_executable(const std::string& path, const std::string& args, const std::string& tag) {
+inline Run run_executable(const std::string& path, const std::string& args, const std::string& tag, const RunIn& how = {}) {
     static int counter = 0;
     const std::string base = std::string(QM_BINARY_DIR) + "/" + tag + "_" + std::to_string(++counter);
-    const std::string cmd = path + " " + args + " >" + base + ".out 2>" + base + ".err";
+    std::string cmd = how.folder.empty() ? "" : "cd " + how.folder + " && ";
+    cmd += path + " " + args;
+    if (how.input) {
+        std::ofstream(base + ".in") << *how.input;
+        cmd += " <" + base + ".in";
+    }
+    cmd += " >" + base + ".out 2>" + base + ".err";
     const int raw = std::system(cmd.c_str());
     Run r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(base + ".out"), slurp(base + ".err")};
-    std::remove((base + ".out").c_str());
-    std::remove((base + ".err").c_str());
+    for (const char* x : {".in", ".out", ".err"}) std::remove((base + x).c_str());
     return r;
 }
 
 // The qm-atms command as users run it: the light executable, which hands geometry commands to
 // qm-atms-geometry beside it (cli/geometry_dispatch.hpp).
-inline Run qm_atms(const std::string& args, const std::string& tag) {
-    return run_executable(std::string(QM_BINARY_DIR) + "/cli/qm-atms", args, tag);
+inline Run qm_atms(const std::string& args, const std::string& tag, const RunIn& how = {}) {
+    return run_executable(std::string(QM_BINARY_DIR) + "/cli/qm-atms", args, tag, how);
 }
 
 inline std::string metric_scene(const std::string& name) { return std::string(QM_SOURCE_DIR) + "/scenarios/metric/" + name; }

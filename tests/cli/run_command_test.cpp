@@ -3,6 +3,7 @@
 // a brute-force enumeration (facts and labels, minimal nogoods, interpretations = the solutions:
 // 2, 10, 4, 40, 92); --why on a fact that holds and on a ruled-out one (exact text); exit statuses
 // (0 ok, 2 bad input) and the located, caret-marked diagnostics of bad input.
+#include "qm_atms_run.hpp"
 #include <cstdio>
 #include <cstdlib>
 #include <doctest/doctest.h>
@@ -17,32 +18,10 @@
 
 namespace {
 
-struct Result {
-    int status = -1;
-    std::string out, err;
-};
+using Result = qm::test::Run;
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-Result qm_atms(const std::string& args) {
-    static int counter = 0;
-    std::string base = std::string(QM_BINARY_DIR) + "/cli_test_" + std::to_string(++counter);
-    std::string cmd = "cd " + std::string(QM_BINARY_DIR) + " && ./cli/qm-atms " + args + " >" + base + ".out 2>" +
-                      base + ".err";
-    int raw = std::system(cmd.c_str());
-    Result r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = slurp(base + ".out");
-    r.err = slurp(base + ".err");
-    std::remove((base + ".out").c_str());
-    std::remove((base + ".err").c_str());
-    return r;
-}
+// Runs in the binary folder, so that the relative paths in messages are the same in every tree.
+Result qm_atms(const std::string& args) { return qm::test::run_executable("./cli/qm-atms", args, "cli_test", {std::nullopt, QM_BINARY_DIR}); }
 
 // Written in the binary directory, named relative to it (qm_atms runs there), so messages are stable.
 std::string write_temp(const std::string& name, const std::string& text) {

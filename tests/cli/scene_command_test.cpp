@@ -1,6 +1,7 @@
 // tests/cli/scene_command_test.cpp: `qm-atms SCENE.def` end to end through the built executable: the
 // thesis notation, the JSON schema of docs/OUTPUT.md, --situation, --why (both spellings),
 // --without, --given, the interactive mode, and exit statuses for bad input.
+#include "qm_atms_run.hpp"
 #include "../support/json_value.hpp"
 #include <algorithm>
 #include <cstdio>
@@ -18,29 +19,10 @@ using qm::test::Json;
 
 namespace {
 
-struct Result {
-    int status = -1;
-    std::string out, err;
-};
+using Result = qm::test::Run;
+using qm::test::slurp;
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-Result qm_atms(const std::string& args, const std::string& input = "") {
-    static int counter = 0;
-    const std::string base = std::string(QM_BINARY_DIR) + "/scene_cli_" + std::to_string(++counter);
-    std::ofstream(base + ".in") << input;
-    const std::string cmd = std::string(QM_BINARY_DIR) + "/cli/qm-atms " + args + " <" + base + ".in >" + base +
-                            ".out 2>" + base + ".err";
-    const int raw = std::system(cmd.c_str());
-    Result r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(base + ".out"), slurp(base + ".err")};
-    for (const char* x : {".in", ".out", ".err"}) std::remove((base + x).c_str());
-    return r;
-}
+Result qm_atms(const std::string& args, const std::string& input = "") { return qm::test::qm_atms(args, "scene_cli", {input, ""}); }
 
 std::string scene(const std::string& name) { return std::string(QM_SOURCE_DIR) + "/scenarios/alex/" + name; }
 
