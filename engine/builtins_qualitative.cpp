@@ -1,7 +1,6 @@
-// engine/builtins_qualitative.cpp: thesis section 2.3 (Tables 2.2-2.3, Defs 1, 4, 12-14, 38), and
+// engine/builtins_qualitative.cpp: thesis section 2.3 (Tables 2.2-2.3, Defs 1, 4, 12-14), and
 // Table 2.2 with a known comparison of magnitudes (qsum-compared).
 #include "engine/builtins_qualitative.hpp"
-#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -37,18 +36,6 @@ char dot_sign(const std::string& a, const std::string& b) {
 }
 bool is_zero(const std::string& v) { return v.find_first_not_of('0') == std::string::npos; }
 
-// Def 38, the rank of x relative to a definite v, given x == v, x == -v and the sign of v.x: 0 x = v;
-// 1 Open-Half-Plane(v, x); 2 x zero; 3 x = Rotate-90(v, +/-) (and, our reading, any other direction
-// with no definite dot product); 4 Open-Half-Plane(-v, x), i.e. v.x is -; 5 x = -v.
-int nearness_rank(bool equal, bool opposite, bool x_zero, char dot) {
-    if (equal) return 0;
-    if (opposite) return 5;
-    if (x_zero) return 2;
-    if (dot == '+') return 1;
-    if (dot == '-') return 4;
-    return 3;
-}
-
 // Table 2.2 when the magnitudes are compared: a + b where w is the sign of |a| - |b|. Where a and
 // b have opposite signs the larger one's sign is the sum's ((0): they cancel; (?): not known, as
 // Table 2.2); elsewhere the comparison does not matter and the sum is Table 2.2's.
@@ -62,33 +49,13 @@ using Args = std::span<const ValueId>;
 
 bool single(const std::vector<std::string>& d) { return d[0].size() == 1 && d[1].size() == 1; }
 
-// Def 38 for an ambiguous v: the nearest rank over v's resolutions (section 2.3: "we resolve this
-// ambiguity by branching"; each `?` becomes +, 0 or -). There are 3^k resolutions of k `?`s, so
-// rather than listing them we follow, component by component, the set of states a resolution r can
-// be in: the sign of the dot product r.x so far, and whether r still equals x and -x. The rank of
-// r depends on nothing else, and every `?` is resolved independently, so the states reachable after
-// the last component are exactly those of the resolutions: at most 4 x 2 x 2 = 16, whatever k.
-int nearness_resolved(const std::string& v, const std::string& x) {
-    struct State {
-        char dot;
-        bool equal, opposite;  // r == x, r == -x so far
-        bool operator==(const State&) const = default;
-    };
-    std::vector<State> states{{'0', true, true}};
-    for (std::size_t i = 0; i < v.size(); ++i) {
-        std::vector<State> next;
-        for (char r : {'+', '0', '-'}) {
-            if (v[i] != '?' && v[i] != r) continue;
-            for (const State& s : states) {
-                State t{sign_sum(s.dot, sign_product(r, x[i])), s.equal && r == x[i], s.opposite && r == sign_neg(x[i])};
-                if (std::find(next.begin(), next.end(), t) == next.end()) next.push_back(t);
-            }
-        }
-        states = std::move(next);
-    }
-    int best = 5;
-    for (const State& s : states) best = std::min(best, nearness_rank(s.equal, s.opposite, is_zero(x), s.dot));
-    return best;
+// Section 2.3 ("we resolve this ambiguity by branching"): the one resolution of v that agrees with
+// x wherever v is ambiguous (each `?` of v becomes x's sign there); a definite v is itself.
+std::string resolve_as(const std::string& v, const std::string& x) {
+    std::string out = v;
+    for (std::size_t i = 0; i < out.size(); ++i)
+        if (out[i] == '?') out[i] = x[i];
+    return out;
 }
 
 // Def 14 generalised per axis (Table 2.1): the quarter turn of v about each axis with a non-zero
@@ -292,8 +259,8 @@ void register_qualitative_builtins(BuiltinRegistry& r) {
         const std::string r = rot.text;
         return map_vectors(v, a[0], "rotate-90", [&r](const std::string& x) { return rotate_90(x, r); });
     });
-    r.add("nearness", K::function, 2, 2, on_directions("nearness", [](ValueTable& v, const std::vector<std::string>& d) {
-              return BuiltinResult::of(v.integer(nearness_resolved(d[0], d[1])));
+    r.add("resolve-as", K::function, 2, 2, on_directions("resolve-as", [](ValueTable& v, const std::vector<std::string>& d) {
+              return BuiltinResult::of(v.direction(resolve_as(d[0], d[1])));
           }));
     r.add("translations", K::function, 1, 1, direction_set("translations", false));
     r.add("rotations", K::function, 1, 1, direction_set("rotations", true));

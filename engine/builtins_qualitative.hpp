@@ -11,8 +11,8 @@
 //              rotations n (Defs 1 and 4: every direction of the dimension, the zero one included;
 //              translations for n = 1..8, 3^n of them; rotations only for n = 2 (1 component) and
 //              n = 3 (3 components), the only ones the thesis defines, Table 2.1), zero-translation n
-//              (n = 1..8), zero-rotation n (n = 2, 3), nearness v x (Def 38 rank 0..5; an ambiguous v
-//              takes the nearest of its resolutions, computed per component without listing them),
+//              (n = 1..8), zero-rotation n (n = 2, 3), resolve-as v x (v with each `?` replaced by x's
+//              sign there: the resolution of v, section 2.3, that agrees with x where v is ambiguous),
 //              qsum-of s (the qualitative sum of a set's directions; a direction is its own sum),
 //              set-add s x (s with x added; to collect values in an aggregate), qsum-compared a b w
 //              (qsum when the magnitudes are known to compare as w, the sign of |a| - |b|: where a and b

@@ -55,9 +55,13 @@ ProgramSpec slice_program(const ProgramSpec& program, const std::set<std::string
                 if (c.kind != ConsequentSpec::Kind::falsity) producible.insert(c.atom.predicate);
         }
     }
-    // Backward: which of those matter for the outputs (or may make environments nogood).
+    // Backward: which of those matter for the outputs (or may make environments nogood). A `prefer`
+    // matters where a kept rule still concludes or assumes its chosen predicate: the preference
+    // query then reads its ranks, so they are wanted too.
     std::set<std::string> wanted = outputs;
+    std::set<std::string> concluded;
     std::vector<bool> keep(program.rules.size(), false);
+    std::vector<bool> keep_preference(program.preferences.size(), false);
     for (bool grew = true; grew;) {
         grew = false;
         for (std::size_t i = 0; i < program.rules.size(); ++i) {
@@ -68,11 +72,21 @@ ProgramSpec slice_program(const ProgramSpec& program, const std::set<std::string
             if (!matters) continue;
             keep[i] = grew = true;
             for (const auto& p : read(program.rules[i])) wanted.insert(p);
+            for (const auto& c : program.rules[i].consequents)
+                if (c.kind != ConsequentSpec::Kind::falsity) concluded.insert(c.atom.predicate);
+        }
+        for (std::size_t j = 0; j < program.preferences.size(); ++j) {
+            const PreferenceSpec& p = program.preferences[j];
+            if (keep_preference[j] || !concluded.count(p.choice.predicate)) continue;
+            keep_preference[j] = grew = true;
+            wanted.insert(p.rank.predicate);
         }
     }
     ProgramSpec out;
     for (std::size_t i = 0; i < program.rules.size(); ++i)
         if (keep[i]) out.rules.push_back(program.rules[i]);
+    for (std::size_t j = 0; j < program.preferences.size(); ++j)
+        if (keep_preference[j]) out.preferences.push_back(program.preferences[j]);
     for (const auto& f : program.facts)
         if (wanted.count(f.predicate)) out.facts.push_back(f);
     for (const auto& a : program.assumptions)

@@ -4,15 +4,19 @@
 //             its positive atoms and `exists` atoms can have facts: asserted, a fact or assumption of
 //             the program, or concluded by a rule that can fire; `not`, `for all` and aggregates do
 //             not need facts to hold) and it concludes an output, a predicate a kept rule reads
-//             (under `not` and aggregates too), or `false`. The program's facts and assumptions of
-//             the predicates kept rules read are kept. Rules keep their order and names; a driver
-//             that makes many small engines over one program (one per state) pays only for the rules
-//             that can matter there.
+//             (under `not` and aggregates too), or `false`. A `prefer` declaration is kept when a
+//             kept rule concludes or assumes its chosen predicate; its rank predicate is then read
+//             (the preference query reads it), so the rules concluding the ranks are kept too. The
+//             program's facts and assumptions of the predicates kept rules and preferences read are
+//             kept. Rules and preferences keep their order, rules their names; a driver that makes
+//             many small engines over one program (one per state) pays only for the rules that can
+//             matter there.
 // Ownership:  values in, a value out.
 // Invariants: for every output predicate, an engine over the slice derives the same facts with the
 //             same labels as one over the whole program from any facts of the input predicates
-//             (a rule left out can never fire, or nothing it concludes is read); tested in
-//             tests/engine/program_slice_test.cpp.
+//             (a rule left out can never fire, or nothing it concludes is read), and where an
+//             output is a preference's chosen predicate, the same rank facts, so the same preferred
+//             interpretations; tested in tests/engine/program_slice_test.cpp.
 // Knows nothing of the ATMS or of any particular program.
 #pragma once
 #include "engine/rule_spec.hpp"

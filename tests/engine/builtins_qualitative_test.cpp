@@ -159,17 +159,11 @@ TEST_CASE("engine/builtins_qualitative: vector sums, negation, direction sets, n
     CHECK(apply("nonzero?", {dir("?")}).holds);
     CHECK(apply("nonzero?", {dir("?0")}).holds);
     CHECK(!apply("zero?", {dir("?")}).holds);
-    // Def 38 ranks relative to v = (+ 0).
-    CHECK(text(apply("nearness", {dir("+0"), dir("+0")})) == "0");
-    CHECK(text(apply("nearness", {dir("+0"), dir("++")})) == "1");
-    CHECK(text(apply("nearness", {dir("+0"), dir("00")})) == "2");
-    CHECK(text(apply("nearness", {dir("+0"), dir("0+")})) == "3");
-    CHECK(text(apply("nearness", {dir("+0"), dir("--")})) == "4");
-    CHECK(text(apply("nearness", {dir("+0"), dir("-0")})) == "5");
-    // An ambiguous v branches: the nearest rank over its resolutions (+ 0), (0 0), (- 0).
-    CHECK(text(apply("nearness", {dir("?0"), dir("-0")})) == "0");
-    CHECK(text(apply("nearness", {dir("?0"), dir("00")})) == "0");
-    CHECK(text(apply("nearness", {dir("?0"), dir("0+")})) == "3");
+    // resolve-as: each `?` of v takes x's sign there; definite components stay.
+    CHECK(text(apply("resolve-as", {dir("?0"), dir("-+")})) == "(- 0)");
+    CHECK(text(apply("resolve-as", {dir("+?-"), dir("0-+")})) == "(+ - -)");
+    CHECK(text(apply("resolve-as", {dir("+0"), dir("--")})) == "(+ 0)");
+    CHECK(!apply("resolve-as", {dir("?0"), dir("+")}).error.empty());
     CHECK(!apply("qsum", {dir("+"), dir("++")}).error.empty());
     CHECK(!apply("neg", {values.symbol("up")}).error.empty());
 }
@@ -255,83 +249,36 @@ TEST_CASE("engine/builtins_qualitative: resolutions are exactly the definite dir
     CHECK(!apply("resolutions", {values.symbol("x")}).error.empty());
 }
 
-namespace {
-// The former implementation of nearness, kept as the oracle: Def 38 for a definite v, and for an
-// ambiguous v the minimum over the explicit list of its 3^k resolutions.
-std::string oracle_neg(std::string v) {
-    for (char& c : v) c = c == '+' ? '-' : c == '-' ? '+' : c;
-    return v;
-}
-char oracle_dot(const std::string& a, const std::string& b) {
-    auto sum = [](char x, char y) { return x == '0' ? y : y == '0' ? x : (x == '?' || y == '?') ? '?' : x == y ? x : '?'; };
-    auto product = [](char x, char y) { return (x == '0' || y == '0') ? '0' : (x == '?' || y == '?') ? '?' : x == y ? '+' : '-'; };
-    char s = '0';
-    for (std::size_t i = 0; i < a.size(); ++i) s = sum(s, product(a[i], b[i]));
-    return s;
-}
-int oracle_nearness(const std::string& v, const std::string& x) {
-    if (x == v) return 0;
-    if (x == oracle_neg(v)) return 5;
-    if (x.find_first_not_of('0') == std::string::npos) return 2;
-    if (oracle_dot(v, x) == '+') return 1;
-    if (oracle_dot(oracle_neg(v), x) == '+') return 4;
-    return 3;
-}
-int oracle_nearness_resolved(const std::string& v, const std::string& x) {
-    std::vector<std::string> resolutions{""};
-    for (char c : v) {
-        std::vector<std::string> next;
-        for (const auto& p : resolutions)
-            for (char s : {'+', '0', '-'})
-                if (c == '?' || c == s) next.push_back(p + s);
-        resolutions = std::move(next);
-    }
-    int best = 5;
-    for (const auto& r : resolutions) best = std::min(best, oracle_nearness(r, x));
-    return best;
-}
-std::vector<std::string> all_sign_strings(std::size_t n) {  // over + 0 - ?, both arguments may be ambiguous
-    std::vector<std::string> out{""};
-    for (std::size_t i = 0; i < n; ++i) {
-        std::vector<std::string> next;
-        for (const auto& p : out)
-            for (char c : {'+', '0', '-', '?'}) next.push_back(p + c);
-        out = std::move(next);
-    }
-    return out;
-}
-}  // namespace
-
-TEST_CASE("engine/builtins_qualitative: nearness equals the minimum over the listed resolutions, dimension <= 4") {
+TEST_CASE("engine/builtins_qualitative: resolve-as is the resolution of v that agrees with x where v is ambiguous") {
+    // Every v over + 0 - ? and definite x of 1 to 4 signs: the one element of (resolutions v) equal
+    // to x at every `?` of v.
     std::size_t pairs = 0;
     for (std::size_t n = 1; n <= 4; ++n) {
-        const auto all = all_sign_strings(n);
+        std::vector<std::string> all{""};
+        for (std::size_t i = 0; i < n; ++i) {
+            std::vector<std::string> next;
+            for (const auto& p : all)
+                for (char c : {'+', '0', '-', '?'}) next.push_back(p + c);
+            all = std::move(next);
+        }
         for (const auto& v : all)
             for (const auto& x : all) {
-                auto r = apply("nearness", {dir(v), dir(x)});
-                REQUIRE(r.value.has_value());
-                if (values.value(*r.value).integer != oracle_nearness_resolved(v, x)) {
-                    CAPTURE(v);
-                    CAPTURE(x);
-                    CHECK(values.value(*r.value).integer == oracle_nearness_resolved(v, x));
+                if (x.find('?') != std::string::npos) continue;
+                std::vector<std::string> agreeing;
+                for (ValueId r : values.value(*apply("resolutions", {dir(v)}).value).elements) {
+                    const std::string& t = values.value(r).text;
+                    bool agrees = true;
+                    for (std::size_t i = 0; i < n; ++i) agrees = agrees && (v[i] != '?' || t[i] == x[i]);
+                    if (agrees) agreeing.push_back(t);
                 }
+                REQUIRE(agreeing.size() == 1);
+                const auto r = apply("resolve-as", {dir(v), dir(x)});
+                REQUIRE(r.value.has_value());
+                CHECK(values.value(*r.value).text == agreeing.front());
                 ++pairs;
             }
     }
-    CHECK(pairs == 16 + 256 + 4096 + 65536);
-}
-
-TEST_CASE("engine/builtins_qualitative: nearness of a direction with many `?` needs no enumeration") {
-    // 3^22 resolutions used to be listed (bad_alloc); every resolution of (? ... ?) includes x itself.
-    const std::string many(22, '?'), plus(22, '+'), minus(22, '-');
-    CHECK(text(apply("nearness", {dir(many), dir(plus)})) == "0");
-    CHECK(text(apply("nearness", {dir(many), dir(std::string(22, '0'))})) == "0");
-    // The first component makes the dot product - or ?: the nearest resolution is 3 (a ? dot product).
-    CHECK(text(apply("nearness", {dir("+" + std::string(40, '?')), dir("-" + std::string(40, '+'))})) == "3");
-    // An ambiguous x is never equal to a resolution; zeros elsewhere leave a + dot product: 1.
-    CHECK(text(apply("nearness", {dir("+" + std::string(40, '?')), dir("+" + std::string(40, '?'))})) == "1");
-    CHECK(text(apply("nearness", {dir(std::string(60, '?')), dir(std::string(59, '?') + "+")})) == "1");
-    CHECK(text(apply("nearness", {dir(minus), dir(plus)})) == "5");
+    CHECK(pairs == 4 * 3 + 16 * 9 + 64 * 27 + 256 * 81);
 }
 
 TEST_CASE("engine/builtins_qualitative: translations of any dimension 1..8 (Defs 1, 3); rotations in 2-D and 3-D only") {

@@ -99,12 +99,37 @@ TEST_CASE("engine/program_slice: what is kept") {
     CHECK(slice_program(spec, {}, {"out"}).rules.empty());
 }
 
+TEST_CASE("engine/program_slice: a slice keeps the preferences on what it concludes, and their ranks") {
+    const auto spec = spec_of(
+        "rule points when (vane ?x) then [exactly one ?d in {n e}: assume (points ?x ?d)]\n"
+        "rule nearest when (vane ?x) then (near ?x n 0) (near ?x e 1)\n"
+        "rule gusts when (vane ?x) then (gust ?x)\n"
+        "prefer (points ?x ?d) by (near ?x ?d ?k) up to 2\n"
+        "prefer (gust ?x) by (gustiness ?x ?k)\n"
+        "fact (gustiness v 1)\n");
+    const auto s = slice_program(spec, {"vane"}, {"points"});
+    // The ranks are read by no rule, only by the preference; `gust` is not concluded in the slice.
+    CHECK(rule_names(s) == std::set<std::string>{"points", "nearest"});
+    REQUIRE(s.preferences.size() == 1);
+    CHECK(s.preferences[0].choice.predicate == "points");
+    CHECK(s.preferences[0].up_to == 2);
+    CHECK(s.facts.empty());
+    // Asked for gusts, the other preference and the fact of its ranks come along.
+    const auto g = slice_program(spec, {"vane"}, {"gust"});
+    CHECK(rule_names(g) == std::set<std::string>{"gusts"});
+    REQUIRE(g.preferences.size() == 1);
+    CHECK(g.preferences[0].choice.predicate == "gust");
+    REQUIRE(g.facts.size() == 1);
+    CHECK(g.facts[0].predicate == "gustiness");
+    CHECK(slice_program(spec, {}, {"points"}).preferences.empty());  // nothing concludes points
+}
+
 TEST_CASE("engine/program_slice: the slice derives the outputs of the whole program, labels and nogoods included") {
     std::mt19937 rng(13);
     const std::vector<std::string> inputs{"i0", "i1"}, derived{"d0", "d1", "d2", "d3", "d4"};
     auto pick = [&](const std::vector<std::string>& v) { return v[std::uniform_int_distribution<std::size_t>(0, v.size() - 1)(rng)]; };
     auto coin = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng) == 0; };
-    std::size_t compared = 0, dropped = 0;
+    std::size_t compared = 0, dropped = 0, ranked = 0;
     for (int round = 0; round < 150; ++round) {
         std::ostringstream text;
         if (coin(2)) text << "fact (d4 a)\n";
@@ -127,20 +152,43 @@ TEST_CASE("engine/program_slice: the slice derives the outputs of the whole prog
             if (nogood) text << " then false\n";
             else text << " then (" << derived[k] << " ?x)\n";
         }
+        // Half the programs prefer among the facts of a derived predicate by ranks that only the
+        // preference reads (no rule does).
+        std::string chosen;
+        if (coin(2)) {
+            chosen = pick(derived);
+            std::vector<std::string> all = inputs;
+            all.insert(all.end(), derived.begin(), derived.end());
+            for (int r = 0; r < 2; ++r) text << "rule rank" << r << " when (" << pick(all) << " ?x) then (rank ?x " << r << ")\n";
+            text << "prefer (" << chosen << " ?x) by (rank ?x ?k)\n";
+        }
         const auto spec = spec_of(text.str());
         std::set<std::string> outputs;
         for (const auto& d : derived)
             if (coin(2)) outputs.insert(d);
         const auto slice = slice_program(spec, {inputs.begin(), inputs.end()}, outputs);
         dropped += spec.rules.size() - slice.rules.size();
+        // Where the slice concludes the chosen predicate (an output here), the preference and the
+        // ranks it reads are kept.
+        bool concludes_chosen = false;
+        for (const auto& r : slice.rules)
+            for (const auto& c : r.consequents) concludes_chosen |= c.kind != ConsequentSpec::Kind::falsity && c.atom.predicate == chosen;
+        std::set<std::string> compared_predicates = outputs;
+        if (outputs.count(chosen) && concludes_chosen) {
+            CHECK(slice.preferences.size() == 1);
+            compared_predicates.insert("rank");
+            ++ranked;
+        }
         std::vector<std::pair<std::string, bool>> facts;
         for (const auto& p : inputs)
             for (const char* c : {"a", "b"})
                 if (!coin(3)) facts.push_back({"(" + p + " " + c + ")", coin(2)});
         CAPTURE(text.str());
-        CHECK(outcome(slice, facts, outputs) == outcome(spec, facts, outputs));
+        CHECK(outcome(slice, facts, compared_predicates) == outcome(spec, facts, compared_predicates));
         ++compared;
     }
-    MESSAGE(compared << " random programs compared; " << dropped << " rules left out of their slices");
+    MESSAGE(compared << " random programs compared (" << ranked << " with a preference on an output); " << dropped
+                     << " rules left out of their slices");
     CHECK(dropped > 0);
+    CHECK(ranked > 0);
 }
