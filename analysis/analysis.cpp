@@ -218,13 +218,18 @@ SituationResult Analysis::State::read(std::size_t s, atms::EnvId env,
     return r;
 }
 
+std::shared_ptr<const Laws> share_laws(engine::LoadedProgram loaded) {
+    return std::make_shared<const Laws>(Laws{engine::share_program(std::move(loaded.program)), std::move(loaded.values),
+                                             std::move(loaded.citations)});
+}
+
 std::unique_ptr<Analysis::State> build_state(const Scene& scene, const AnalysisOptions& options,
-                                             const engine::LoadedProgram& program, Diagnostics& diagnostics) {
+                                             std::shared_ptr<const Laws> laws, Diagnostics& diagnostics) {
     auto state = std::make_unique<Analysis::State>();
     state->scene = scene;
     state->options = options;
-    state->program = program;
-    state->engine = std::make_unique<engine::Engine>(program.program, program.values);
+    state->engine = std::make_unique<engine::Engine>(laws->program, laws->values);
+    state->laws = std::move(laws);
     state->engine->set_limits(options.limits);
     Granularity granularity = Granularity::item;
     if (options.granularity) granularity = *options.granularity;
@@ -255,14 +260,15 @@ std::unique_ptr<Analysis::State> build_state(const Scene& scene, const AnalysisO
 }
 
 std::optional<Analysis> analyse(const Scene& scene, const AnalysisOptions& options, Diagnostics& diagnostics) {
-    auto program = load_rules(options.rules_directory, scene, diagnostics);
-    if (!program) return std::nullopt;
+    auto loaded = load_rules(options.rules_directory, scene, diagnostics);
+    if (!loaded) return std::nullopt;
+    const std::shared_ptr<const Laws> laws = share_laws(std::move(*loaded));
     if (scene.situations.empty()) {
         // Nothing to analyse, but the laws are still read and checked against the scene (Law 1's
         // choice sets must exist for every object): one empty situation is that check.
         Scene probe = scene;
         probe.situations.push_back(Situation{{}, {}, {}, scene.where});
-        auto state = build_state(probe, options, *program, diagnostics);
+        auto state = build_state(probe, options, laws, diagnostics);
         if (!state) return std::nullopt;
         state->scene.situations.clear();
         state->runs.clear();
@@ -270,7 +276,7 @@ std::optional<Analysis> analyse(const Scene& scene, const AnalysisOptions& optio
         state->chain_branches.clear();
         return Analysis(std::move(state));
     }
-    auto state = build_state(scene, options, *program, diagnostics);
+    auto state = build_state(scene, options, laws, diagnostics);
     if (!state) return std::nullopt;
     return Analysis(std::move(state));
 }
@@ -340,7 +346,7 @@ std::unique_ptr<Analysis::State> Analysis::State::restricted(std::size_t s, std:
     std::erase_if(o.given, [&](const Motion& m) { return scene::replaced_by(m, given); });
     o.without.clear();
     o.granularity = granularity;
-    return build_state(changed, o, program, diagnostics);
+    return build_state(changed, o, laws, diagnostics);
 }
 
 namespace {

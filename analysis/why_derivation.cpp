@@ -77,7 +77,7 @@ public:
             const engine::CompiledRule& rule = e.program().rules[*firing.rule];
             d.law = rule.name;
             d.source = law_location(firing.where);
-            if (auto c = st_.program.citations.find(firing.where.file); c != st_.program.citations.end()) d.citation = c->second;
+            if (auto c = st_.laws->citations.find(firing.where.file); c != st_.laws->citations.end()) d.citation = c->second;
             for (std::size_t i = 0; i < firing.binding.size(); ++i)
                 if (firing.binding[i]) d.bindings.push_back(rule.slot_names[i] + " = " + e.values().print(*firing.binding[i]));
             d.absent = engine::absent_conditions(*st_.engine, firing);

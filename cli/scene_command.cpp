@@ -6,6 +6,7 @@
 #include "analysis/analysis.hpp"
 #include "analysis/result_printer.hpp"
 #include "analysis/why_printer.hpp"
+#include "exit_owned.hpp"
 #include "geometry_dispatch.hpp"
 #include "query_text.hpp"
 #include "rules_location.hpp"
@@ -164,9 +165,11 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     d.print(err);  // errors, or notes (a --given replacing a scene's Motion)
     if (d.has_errors()) return 2;
     d = Diagnostics{};
-    auto analysis = analysis::analyse(*scene, ao, d);
+    auto analysed = analysis::analyse(*scene, ao, d);
     d.print(err);  // errors, or warnings about the laws (engine/law_check.hpp, engine/predicate_check.hpp)
-    if (!analysis) return 2;
+    if (!analysed) return 2;
+    // Lives until the process ends: not freed piece by piece at return (cli/exit_owned.hpp).
+    const ExitOwned<analysis::Analysis> analysis(std::move(*analysed));
     d = Diagnostics{};
     // Contacts the laws cannot use (a corner against a surface it cannot touch, Def 25): warned, located.
     Diagnostics inert;

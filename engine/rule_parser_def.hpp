@@ -256,12 +256,13 @@ const x3::rule<atom_entry_id, ast::Atom> atom_entry = "an atom";
 // --- words and terms ---------------------------------------------------------------------------
 // A name is a word that is neither an integer nor a variable: `contact`, `trans-motion`, `<=`, `+`;
 // a top-level keyword in column 1 is never a name (it starts the next item).
-const auto name_def = !top_keyword >> x3::lexeme[!integer_ahead >> !x3::lit('?') >> +word_char];
+// raw[]: the word is copied into the attribute once, not appended a character at a time.
+const auto name_def = !top_keyword >> x3::lexeme[!integer_ahead >> !x3::lit('?') >> x3::raw[+word_char]];
 const auto predicate_def = name;
 const auto function_name_def = name;
 const auto rule_name_def = name;
 const auto symbol_def = x3::lexeme[x3::raw[letter >> *word_char]];
-const auto variable_def = x3::lexeme[x3::lit('?') >> +word_char];
+const auto variable_def = x3::lexeme[x3::lit('?') >> x3::raw[+word_char]];
 const auto variable_expected_def = variable;
 // A word of digits with an optional '-'; `-` alone, `+5` and `12a` are not integers. One that does
 // not fit in 64 bits is an error (long_long fails on overflow).

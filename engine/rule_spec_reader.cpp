@@ -35,13 +35,13 @@ public:
         if (read_.count(key)) return;
         read_.insert(key);
         open_.insert(key);
-        const SourceText src(key, std::move(text));
+        SourceText src(key, std::move(text));
         for (const ast::Item& item : parse_rule_items(src, builtins_, diagnostics_)) {
             if (const auto* inc = boost::get<ast::Include>(&item)) include(*inc, src);
             else add_item_to_spec(item, src, spec_);
         }
         open_.erase(key);
-        if (sources_) sources_->add(src);
+        if (sources_) sources_->add(std::move(src));  // the text is moved, not copied: read once
     }
 
 private:

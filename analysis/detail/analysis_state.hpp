@@ -3,7 +3,9 @@
 //             files (explanations): the engine that holds the laws' labels, the scene's facts, each
 //             situation's context run and results, and each object's Law 1 choice sets.
 // Ownership:  owned by Analysis through a unique_ptr; the SceneFacts refer into scene and engine,
-//             which therefore never move while the State lives.
+//             which therefore never move while the State lives. The Laws are shared (shared_ptr to
+//             const) by every State made from one load: a what-if State copies neither the program
+//             nor its match plans.
 #pragma once
 #include "analysis/analysis.hpp"
 #include "analysis/branches.hpp"
@@ -11,17 +13,29 @@
 #include "analysis/scene_facts.hpp"
 #include "engine/engine.hpp"
 #include "engine/rule_compiler.hpp"
+#include "engine/shared_program.hpp"
 #include "scene/what_if.hpp"
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
 
 namespace qm::analysis {
 
+// The laws as loaded, made once per analysis and only read after: the compiled program with its
+// match plans (every engine of every State runs over it, none copies it) and the value table it was
+// compiled with (each engine starts from its own copy, to which the scene's facts add values).
+struct Laws {
+    std::shared_ptr<const engine::SharedProgram> program;
+    engine::ValueTable values;
+    std::map<std::string, std::string> citations;  // engine::LoadedProgram::citations
+};
+[[nodiscard]] std::shared_ptr<const Laws> share_laws(engine::LoadedProgram loaded);
+
 struct Analysis::State {
     Scene scene;
     AnalysisOptions options;
-    engine::LoadedProgram program;            // pristine, to rebuild an engine (with_given)
+    std::shared_ptr<const Laws> laws;         // pristine, shared by every State made from them (with_given)
     std::unique_ptr<engine::Engine> engine;
     std::unique_ptr<SceneFacts> facts;
     IdVector<ObjectId, ObjectChoices> choices;
@@ -68,6 +82,6 @@ struct Analysis::State {
 // Builds a State: loads nothing (program is given), asserts the scene, runs every situation.
 // nullptr (with diagnostics) if the laws cannot be evaluated for this scene.
 [[nodiscard]] std::unique_ptr<Analysis::State> build_state(const Scene& scene, const AnalysisOptions& options,
-                                                           const engine::LoadedProgram& program,
+                                                           std::shared_ptr<const Laws> laws,
                                                            Diagnostics& diagnostics);
 }  // namespace qm::analysis

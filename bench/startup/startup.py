@@ -9,7 +9,7 @@
 # /bin/true is timed alongside as the floor of a process start on this machine.
 # Prints numbers; passes or fails nothing (STYLE.md section 8).
 #
-# Usage: bench/startup/startup.py [--reps N] [--callgrind] [--rules DIR] QM_ATMS...
+# Usage: bench/startup/startup.py [--reps N] [--callgrind] [--rules DIR] [--all-alex] [--only NAME] QM_ATMS...
 #   e.g. bench/startup/startup.py --reps 101 /tmp/old/qm-atms build/cli/qm-atms
 #   Each QM_ATMS is an executable (the light qm-atms finds qm-atms-geometry beside it). The laws
 #   are given with --rules (default: this tree's rules/) so that every build reads the same.
@@ -31,6 +31,7 @@ parser.add_argument("--reps", type=int, default=51)
 parser.add_argument("--callgrind", action="store_true")
 parser.add_argument("--rules", default=os.path.join(root, "rules"))
 parser.add_argument("--only", help="run only the command lines whose name contains this")
+parser.add_argument("--all-alex", action="store_true", help="every scene of scenarios/alex, not only the three below")
 parser.add_argument("builds", nargs="+")
 a = parser.parse_args()
 
@@ -46,6 +47,9 @@ commands = [
     ("run queens6.rules", ["run", os.path.join(root, "scenarios", "rules", "queens6.rules")]),
     ("--emit-def cam.def", ["--emit-def", os.path.join(metric, "cam.def"), "cam=30, follower=0.1"]),
 ]
+if a.all_alex:
+    scenes = [(os.path.basename(f), [f, "--rules", a.rules]) for f in sorted(glob.glob(os.path.join(alex, "*.def")))]
+    commands = commands[:1] + scenes + [c for c in commands[1:] if not c[0].endswith(".def") or c[0].startswith("--")]
 if a.only:
     commands = [c for c in commands if a.only in c[0]]
 
