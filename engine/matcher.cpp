@@ -319,6 +319,10 @@ Matcher::Matcher(const FactStore& facts, ValueTable& values, const BuiltinRegist
     : facts_(facts), values_(values), builtins_(builtins), closed_world_(closed_world),
       equals_(builtins.find("=")) {}
 
+Matcher::Matcher(const FactStore& facts, ValueTable& values, const BuiltinRegistry& builtins,
+                 const ClosedWorld& closed_world, std::optional<BuiltinId> equals)
+    : facts_(facts), values_(values), builtins_(builtins), closed_world_(closed_world), equals_(equals) {}
+
 void Matcher::match(const CompiledRule& rule, const MatchPlan& plan, std::optional<Seed> seed, const OnMatch& on_match,
                     const OnError& on_error, const Binding* initial) {
     QM_REQUIRE(plan.repeat_of.size() == rule.conditions.size() && plan.seed_first_safe.size() == rule.conditions.size(),

@@ -50,6 +50,10 @@ public:
 
     Matcher(const FactStore& facts, ValueTable& values, const BuiltinRegistry& builtins,
             const ClosedWorld& closed_world);
+    // The same with the id of builtins' `=` looked up by the caller (an engine makes a matcher for
+    // every seed fact: the lookup by name showed in the profile). Pre: equals == builtins.find("=").
+    Matcher(const FactStore& facts, ValueTable& values, const BuiltinRegistry& builtins,
+            const ClosedWorld& closed_world, std::optional<BuiltinId> equals);
     // Pre: plan is plan_matching(rule); a seed names a `match` condition of rule and an active
     // fact; `initial`, if given, has rule.slot_count() slots. Matching starts from `initial` (some
     // variables already bound).
