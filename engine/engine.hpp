@@ -181,6 +181,7 @@ private:
     std::vector<std::unique_ptr<const SourceLocation>> locations_;  // of the facts drivers added (Firing::where)
     const SourceLocation context_where_{"<context>", 1, 1};  // of the closed-world firings
     Agenda agenda_;
+    MatchBuffers match_buffers_;                         // every match_rule()'s matcher's
     std::vector<atms::NodeId> scratch_ants_;             // execute()'s antecedent nodes
     std::vector<ValueId> scratch_args_;                  // instantiate()'s arguments
     std::vector<FactId> pending_activation_;             // label became non-empty, not yet logged

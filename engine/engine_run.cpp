@@ -159,7 +159,7 @@ void Engine::match_rule(RuleId r, std::optional<Seed> seed, std::optional<std::u
     if (rule.non_monotonic) closed_world_used_ = true;
     ClosedWorld world{[this, rule_context](FactId f) { return status(f, rule_context); },
                       [this, rule_context](FactId f) { return why_undecidable(f, rule_context); }};
-    Matcher matcher(facts_, values_, builtins_, world, equals_);
+    Matcher matcher(facts_, values_, builtins_, world, equals_, match_buffers_);
     if (options_.max_steps) matcher.limit_steps(*options_.max_steps - steps_);
     std::set<std::pair<std::string, std::string>> reported;
     bool urgent = std::any_of(rule.consequents.begin(), rule.consequents.end(),
