@@ -76,8 +76,8 @@ public:
         if (firing.kind == engine::Firing::Kind::rule) {
             const engine::CompiledRule& rule = e.program().rules[*firing.rule];
             d.law = rule.name;
-            d.source = law_location(firing.where);
-            if (auto c = st_.laws->citations.find(firing.where.file); c != st_.laws->citations.end()) d.citation = c->second;
+            d.source = law_location(*firing.where);
+            if (auto c = st_.laws->citations.find(firing.where->file); c != st_.laws->citations.end()) d.citation = c->second;
             for (std::size_t i = 0; i < firing.binding.size(); ++i)
                 if (firing.binding[i]) d.bindings.push_back(rule.slot_names[i] + " = " + e.values().print(*firing.binding[i]));
             d.absent = engine::absent_conditions(*st_.engine, firing);
@@ -85,7 +85,7 @@ public:
             d.law = "closed world";
             d.source = "the situation";
         } else {
-            d.source = located(firing.where);
+            d.source = located(*firing.where);
         }
         for (atms::NodeId a : just.antecedents) {
             // The assumption node behind a scene item reads as the item itself: skip the step
@@ -124,7 +124,7 @@ private:
             return;
         }
         const auto& justs = atms.justifications(n);
-        if (!justs.empty()) d.source = located(e.firing(atms.justification(justs.front()).informant).where);
+        if (!justs.empty()) d.source = located(*e.firing(atms.justification(justs.front()).informant).where);
     }
     // A fact justified only by its own assumption node is a leaf: drop the indirection.
     static void collapse_assumption_step(Derivation& d) {

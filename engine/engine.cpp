@@ -20,7 +20,8 @@ Engine::Engine(std::shared_ptr<const SharedProgram> program, ValueTable values, 
     : shared_(not_null(std::move(program))),
       program_(shared_->program),
       values_(std::move(values)),
-      builtins_(builtins) {
+      builtins_(builtins),
+      equals_(builtins.find("=")) {
     atms_.add_consumer(*this);
     rule_fresh_.reserve(program_.rules.size());
     rule_matched_.reserve(program_.rules.size());
@@ -30,13 +31,13 @@ Engine::Engine(std::shared_ptr<const SharedProgram> program, ValueTable values, 
     }
     for (const auto& p : program_.premises) {
         FactId f = intern_fact(p.predicate, p.args);
-        Firing why{Firing::Kind::premise, std::nullopt, {}, std::nullopt, p.where};
+        Firing why{Firing::Kind::premise, std::nullopt, {}, std::nullopt, &p.where};
         atms_.justify(new_firing(std::move(why)), std::span<const atms::NodeId>{}, fact_nodes_[f].node);
         note_if_in(f);
     }
     for (const auto& a : program_.assumptions) {
         FactId f = intern_fact(a.predicate, a.args);
-        Firing why{Firing::Kind::assumption, std::nullopt, {}, std::nullopt, a.where};
+        Firing why{Firing::Kind::assumption, std::nullopt, {}, std::nullopt, &a.where};
         assume_fact(f, new_firing(std::move(why)), {});
         note_if_in(f);
     }
@@ -50,6 +51,13 @@ void Engine::set_limits(const EngineLimits& limits) {
 }
 
 atms::DatumId Engine::new_datum(Datum d) { return datums_.push_back(d); }
+
+// Drivers add many facts from one place (a bridge, a scene line): consecutive equal locations are
+// kept once.
+const SourceLocation* Engine::location(SourceLocation where) {
+    if (locations_.empty() || !(*locations_.back() == where)) locations_.push_back(std::make_unique<const SourceLocation>(std::move(where)));
+    return locations_.back().get();
+}
 
 atms::InformantId Engine::new_firing(Firing f) {
     firings_.push_back(std::move(f));
@@ -95,7 +103,7 @@ void Engine::assume_fact(FactId f, atms::InformantId why, std::span<const atms::
 FactId Engine::add_premise(ValueId predicate, std::span<const ValueId> args, SourceLocation where) {
     QM_REQUIRE(!closed_world_used_, "premises cannot be added after `not` or an aggregate was evaluated");
     FactId f = intern_fact(predicate, args);
-    Firing why{Firing::Kind::premise, std::nullopt, {}, std::nullopt, std::move(where)};
+    Firing why{Firing::Kind::premise, std::nullopt, {}, std::nullopt, location(std::move(where))};
     atms_.justify(new_firing(std::move(why)), std::span<const atms::NodeId>{}, fact_nodes_[f].node);
     note_if_in(f);
     return f;
@@ -104,7 +112,7 @@ FactId Engine::add_premise(ValueId predicate, std::span<const ValueId> args, Sou
 FactId Engine::add_assumption(ValueId predicate, std::span<const ValueId> args, SourceLocation where) {
     QM_REQUIRE(!closed_world_used_, "assumptions cannot be added after `not` or an aggregate was evaluated");
     FactId f = intern_fact(predicate, args);
-    Firing why{Firing::Kind::assumption, std::nullopt, {}, std::nullopt, std::move(where)};
+    Firing why{Firing::Kind::assumption, std::nullopt, {}, std::nullopt, location(std::move(where))};
     assume_fact(f, new_firing(std::move(why)), {});
     note_if_in(f);
     return f;
@@ -117,7 +125,7 @@ FactId Engine::add_fact(ValueId predicate, std::span<const ValueId> args, std::s
     FactId f = intern_fact(predicate, args);
     std::vector<atms::NodeId> antecedents;
     for (FactId a : from) antecedents.push_back(fact_nodes_[a].node);
-    Firing why{Firing::Kind::premise, std::nullopt, {}, std::nullopt, std::move(where)};
+    Firing why{Firing::Kind::premise, std::nullopt, {}, std::nullopt, location(std::move(where))};
     atms_.justify(new_firing(std::move(why)), antecedents, fact_nodes_[f].node);
     note_if_in(f);
     return f;

@@ -138,6 +138,7 @@ private:
 
     // engine.cpp
     atms::DatumId new_datum(Datum d);
+    const SourceLocation* location(SourceLocation where);  // kept in locations_
     FactId intern_fact(ValueId predicate, std::span<const ValueId> args);
     atms::NodeId ensure_assumption(FactId f);
     atms::InformantId new_firing(Firing f);
@@ -160,7 +161,7 @@ private:
     [[nodiscard]] ClosedWorldStatus status(FactId f, std::optional<std::uint32_t> context);  // may intern envs
     [[nodiscard]] std::string why_undecidable(FactId f, std::optional<std::uint32_t> context) const;
     // engine_consequents.cpp
-    void execute(const RuleInstance& instance, Diagnostics& diagnostics);
+    void execute(RuleInstance& instance, Diagnostics& diagnostics);  // may change instance.binding
     std::optional<FactId> instantiate(const CompiledAtom& atom, const Binding& b, Diagnostics& diagnostics);
     void assume_fact(FactId f, atms::InformantId why, std::span<const atms::NodeId> antecedents);
     void declare_choice_set(const CompiledConsequent& c, const CompiledRule& rule, atms::InformantId why,
@@ -171,12 +172,18 @@ private:
     const CompiledProgram& program_;                     // shared_->program
     ValueTable values_;
     const BuiltinRegistry& builtins_;
+    std::optional<BuiltinId> equals_;                    // builtins_.find("="), for every Matcher
     atms::Atms atms_;
     FactStore facts_;
     IdVector<FactId, FactNodes> fact_nodes_;
     IdVector<atms::DatumId, Datum> datums_;
     std::vector<Firing> firings_;                        // indexed by InformantId
+    std::vector<std::unique_ptr<const SourceLocation>> locations_;  // of the facts drivers added (Firing::where)
+    const SourceLocation context_where_{"<context>", 1, 1};  // of the closed-world firings
     Agenda agenda_;
+    MatchBuffers match_buffers_;                         // every match_rule()'s matcher's
+    std::vector<atms::NodeId> scratch_ants_;             // execute()'s antecedent nodes
+    std::vector<ValueId> scratch_args_;                  // instantiate()'s arguments
     std::vector<FactId> pending_activation_;             // label became non-empty, not yet logged
     IdVector<RuleId, std::uint8_t> rule_matched_;               // a full match has been done
     // Facts that became active since each rule was last matched, of predicates it matches (in a

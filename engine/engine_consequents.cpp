@@ -9,8 +9,8 @@
 namespace qm::engine {
 
 std::optional<FactId> Engine::instantiate(const CompiledAtom& atom, const Binding& b, Diagnostics& diagnostics) {
-    std::vector<ValueId> args;
-    args.reserve(atom.args.size());
+    std::vector<ValueId>& args = scratch_args_;  // interning copies them
+    args.clear();
     for (const auto& t : atom.args) {
         Evaluation e = evaluate(t, b, values_, builtins_);
         if (!e.value) {
@@ -22,21 +22,24 @@ std::optional<FactId> Engine::instantiate(const CompiledAtom& atom, const Bindin
     return intern_fact(atom.predicate, args);
 }
 
-void Engine::execute(const RuleInstance& instance, Diagnostics& diagnostics) {
+void Engine::execute(RuleInstance& instance, Diagnostics& diagnostics) {
     const CompiledRule& rule = program_.rules[instance.rule];
     if (!spend(1, rule, rule.where, diagnostics)) return;
     ++rule_firings_;
-    atms::InformantId why = new_firing(Firing{Firing::Kind::rule, instance.rule, instance.binding, instance.context, rule.where});
-    std::vector<atms::NodeId> ants;
-    ants.reserve(instance.antecedents.size() + 1);
+    atms::InformantId why = new_firing(Firing{Firing::Kind::rule, instance.rule, instance.binding, instance.context, &rule.where});
+    // The engine's scratch vector (nothing below executes another instance): no heap block a firing.
+    std::vector<atms::NodeId>& ants = scratch_ants_;
+    ants.clear();
     for (FactId f : instance.antecedents) ants.push_back(fact_nodes_[f].node);
     if (instance.context) ants.push_back(contexts_[*instance.context].node);
 
-    Binding b = instance.binding;
+    // The instance's own binding (the firing has its copy): quantifiers bind their slot in it and
+    // reset it after.
+    Binding& b = instance.binding;
     // A quantified consequent's element gets its own informant, whose binding includes the element,
     // so explanations show which element a justification is for.
     auto element_informant = [&] {
-        return new_firing(Firing{Firing::Kind::rule, instance.rule, b, instance.context, rule.where});
+        return new_firing(Firing{Firing::Kind::rule, instance.rule, b, instance.context, &rule.where});
     };
     // The elements of a consequent quantifier's set that pass its tests.
     auto elements = [&](const CompiledConsequent& c) -> std::vector<ValueId> {

@@ -78,7 +78,7 @@ bool Engine::drain(std::uint32_t s, std::optional<std::uint32_t> context, Diagno
         woken_.resize(kept);
         if (agenda_.empty() && pending_activation_.empty()) return changed;
         if (!agenda_.empty()) {
-            const RuleInstance instance = agenda_.pop();
+            RuleInstance instance = agenda_.pop();
             try {
                 execute(instance, diagnostics);
             } catch (LimitReached& limit) {
@@ -116,7 +116,7 @@ void Engine::match_fresh(RuleId r, std::span<const FactId> fresh, std::optional<
     // call over the quantified variable), match the whole rule.
     bool full = false;
     std::vector<Binding> prebound;
-    Matcher probe(facts_, values_, builtins_, ClosedWorld{});
+    Matcher probe(facts_, values_, builtins_, ClosedWorld{}, equals_);
     for (std::size_t k = 0; k < fresh.size() && !full; ++k) {
         FactId f = fresh[k];
         ValueId p = facts_.fact(f).predicate;
@@ -159,7 +159,7 @@ void Engine::match_rule(RuleId r, std::optional<Seed> seed, std::optional<std::u
     if (rule.non_monotonic) closed_world_used_ = true;
     ClosedWorld world{[this, rule_context](FactId f) { return status(f, rule_context); },
                       [this, rule_context](FactId f) { return why_undecidable(f, rule_context); }};
-    Matcher matcher(facts_, values_, builtins_, world);
+    Matcher matcher(facts_, values_, builtins_, world, equals_, match_buffers_);
     if (options_.max_steps) matcher.limit_steps(*options_.max_steps - steps_);
     std::set<std::pair<std::string, std::string>> reported;
     bool urgent = std::any_of(rule.consequents.begin(), rule.consequents.end(),
@@ -179,8 +179,7 @@ void Engine::match_rule(RuleId r, std::optional<Seed> seed, std::optional<std::u
         matcher.match(
             rule, shared_->plans[r], seed,
             [s = &sink](const Binding& b, std::span<const FactId> ants) {
-                s->engine.agenda_.push(RuleInstance{s->r, b, std::vector<FactId>(ants.begin(), ants.end()), s->rule_context},
-                                       s->urgent);
+                s->engine.agenda_.push(s->r, b, ants, s->rule_context, s->urgent);
             },
             [s = &sink](const MatchError& e) {
                 std::string where = e.where.file + ":" + std::to_string(e.where.line) + ":" + std::to_string(e.where.column);
@@ -225,7 +224,7 @@ void Engine::close_contexts() {
         std::uint32_t count = static_cast<std::uint32_t>(atms_.assumption_count());
         if (c.assumptions_closed == count) continue;
         const atms::Environment base = atms_.env(c.base);  // a copy: add_nogood may grow the env table
-        Firing why{Firing::Kind::closed_world, std::nullopt, {}, static_cast<std::uint32_t>(i), SourceLocation{"<context>", 1, 1}};
+        Firing why{Firing::Kind::closed_world, std::nullopt, {}, static_cast<std::uint32_t>(i), &context_where_};
         std::optional<atms::InformantId> informant;
         for (std::uint32_t k = c.assumptions_closed; k < count; ++k) {
             atms::AssumptionId a{k};

@@ -3,7 +3,11 @@
 //             closed-world bookkeeping step): what the ATMS knows only as an InformantId. The engine
 //             keeps one Firing per InformantId, so explanations can name the rule, its file:line and
 //             the binding of the firing.
-// Ownership:  stored by the Engine, indexed by InformantId; never removed.
+// Ownership:  stored by the Engine, indexed by InformantId; never removed. `where` points into the
+//             engine's program (a rule's or a program item's location) or into the engine's own
+//             list of the locations given with facts: valid for the engine's lifetime (a firing is
+//             made for every rule firing, and copying the rule file's name into each was a heap
+//             block apiece).
 // Knows nothing of the ATMS's internals: the informant id is the index.
 #pragma once
 #include "engine/binding.hpp"
@@ -22,6 +26,6 @@ struct Firing {
     std::optional<RuleId> rule;
     Binding binding;
     std::optional<std::uint32_t> context;  // the context of a non-monotonic rule's firing
-    SourceLocation where;                  // the rule's (or the item's) location
+    const SourceLocation* where = nullptr;  // the rule's (or the item's) location; never null once recorded
 };
 }  // namespace qm::engine

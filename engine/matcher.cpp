@@ -15,12 +15,13 @@ struct Matcher::Run {
     std::optional<Seed> seed;
     const OnMatch& on_match;
     const OnError& on_error;
-    Binding binding;
-    std::vector<Slot> trail;
-    std::vector<FactId> antecedents;
-    std::vector<ValueId> scratch;  // arguments of a `for all` atom being looked up
-    std::vector<FactId> matched_at;  // per condition: the fact its `match` matched on the current path
-                                     // (kept only when the plan has repeats, which read it)
+    // In a MatchBuffers (the caller's, or one of match()'s own):
+    Binding& binding;
+    std::vector<Slot>& trail;
+    std::vector<FactId>& antecedents;
+    std::vector<ValueId>& scratch;  // arguments of a `for all` atom being looked up
+    std::vector<FactId>& matched_at;  // per condition: the fact its `match` matched on the current path
+                                      // (kept only when the plan has repeats, which read it)
 
     void bind(Slot s, ValueId v) {
         binding[s] = v;
@@ -319,6 +320,14 @@ Matcher::Matcher(const FactStore& facts, ValueTable& values, const BuiltinRegist
     : facts_(facts), values_(values), builtins_(builtins), closed_world_(closed_world),
       equals_(builtins.find("=")) {}
 
+Matcher::Matcher(const FactStore& facts, ValueTable& values, const BuiltinRegistry& builtins,
+                 const ClosedWorld& closed_world, std::optional<BuiltinId> equals)
+    : facts_(facts), values_(values), builtins_(builtins), closed_world_(closed_world), equals_(equals) {}
+
+Matcher::Matcher(const FactStore& facts, ValueTable& values, const BuiltinRegistry& builtins,
+                 const ClosedWorld& closed_world, std::optional<BuiltinId> equals, MatchBuffers& buffers)
+    : facts_(facts), values_(values), builtins_(builtins), closed_world_(closed_world), equals_(equals), buffers_(&buffers) {}
+
 void Matcher::match(const CompiledRule& rule, const MatchPlan& plan, std::optional<Seed> seed, const OnMatch& on_match,
                     const OnError& on_error, const Binding* initial) {
     QM_REQUIRE(plan.repeat_of.size() == rule.conditions.size() && plan.seed_first_safe.size() == rule.conditions.size(),
@@ -329,7 +338,15 @@ void Matcher::match(const CompiledRule& rule, const MatchPlan& plan, std::option
                    "a seed names a match condition");
     }
     QM_REQUIRE(!initial || initial->size() == rule.slot_count(), "an initial binding has one entry per slot");
-    Run run{*this, rule, &plan, seed, on_match, on_error, initial ? *initial : Binding(rule.slot_count()), {}, {}, {}, {}};
+    MatchBuffers own;
+    MatchBuffers& b = buffers_ ? *buffers_ : own;
+    if (initial) b.binding.assign(initial->begin(), initial->end());
+    else b.binding.assign(rule.slot_count(), std::nullopt);
+    b.trail.clear();
+    b.antecedents.clear();
+    b.scratch.clear();
+    b.matched_at.clear();
+    Run run{*this, rule, &plan, seed, on_match, on_error, b.binding, b.trail, b.antecedents, b.scratch, b.matched_at};
     if (plan.has_repeat) run.matched_at.resize(rule.conditions.size());
     // Semi-naive matching: bind the seed fact's variables first, so that the conditions written
     // before it are looked up through the argument index instead of scanned. This gives the same
@@ -346,7 +363,9 @@ std::optional<Binding> Matcher::prebind(const CompiledRule& rule, const Compiled
     const OnMatch none = [](const Binding&, std::span<const FactId>) {};
     bool failed = false;
     const OnError note = [&](const MatchError&) { failed = true; };
-    Run run{*this, rule, nullptr, std::nullopt, none, note, Binding(rule.slot_count()), {}, {}, {}, {}};
+    MatchBuffers own;
+    own.binding.assign(rule.slot_count(), std::nullopt);
+    Run run{*this, rule, nullptr, std::nullopt, none, note, own.binding, own.trail, own.antecedents, own.scratch, own.matched_at};
     // Only plain variables and constants can be unified before the quantified variable is known.
     for (const CompiledTerm& t : atom.args)
         if (t.kind == CompiledTerm::Kind::call) return std::nullopt;

@@ -38,6 +38,17 @@ struct Seed {
     FactId fact;
 };
 
+// The working vectors of one match() call. A caller that matches again and again (an engine, once
+// per seed fact) keeps one and hands it to its matchers, so that the vectors keep their capacity
+// from one call to the next instead of growing from nothing each time. Contents are the matcher's.
+struct MatchBuffers {
+    Binding binding;
+    std::vector<Slot> trail;
+    std::vector<FactId> antecedents;
+    std::vector<ValueId> scratch;
+    std::vector<FactId> matched_at;
+};
+
 struct MatchError {
     SourceLocation where;
     std::string message;
@@ -50,6 +61,13 @@ public:
 
     Matcher(const FactStore& facts, ValueTable& values, const BuiltinRegistry& builtins,
             const ClosedWorld& closed_world);
+    // The same with the id of builtins' `=` looked up by the caller (an engine makes a matcher for
+    // every seed fact: the lookup by name showed in the profile). Pre: equals == builtins.find("=").
+    Matcher(const FactStore& facts, ValueTable& values, const BuiltinRegistry& builtins,
+            const ClosedWorld& closed_world, std::optional<BuiltinId> equals);
+    // The same, match() working in buffers (borrowed; not used by another match at the same time).
+    Matcher(const FactStore& facts, ValueTable& values, const BuiltinRegistry& builtins,
+            const ClosedWorld& closed_world, std::optional<BuiltinId> equals, MatchBuffers& buffers);
     // Pre: plan is plan_matching(rule); a seed names a `match` condition of rule and an active
     // fact; `initial`, if given, has rule.slot_count() slots. Matching starts from `initial` (some
     // variables already bound).
@@ -75,6 +93,7 @@ private:
     const BuiltinRegistry& builtins_;
     const ClosedWorld& closed_world_;
     std::optional<BuiltinId> equals_;
+    MatchBuffers* buffers_ = nullptr;
     std::optional<std::size_t> step_limit_;
     std::size_t steps_ = 0;
     bool stopped_ = false;
