@@ -10,7 +10,7 @@ namespace qm::engine {
 namespace {
 constexpr std::uint32_t unbound = std::numeric_limits<std::uint32_t>::max();
 // A state's engine queues a few hundred instances: start near that size rather than grow five times.
-constexpr std::size_t initial_slots = 256;
+constexpr std::size_t initial_agenda_slots = 256;
 
 std::uint32_t key_hash(std::span<const std::uint32_t> key) noexcept {
     std::uint64_t h = 0xcbf29ce484222325ULL;
@@ -51,7 +51,7 @@ bool Agenda::insert(RuleId rule, const Binding& binding, std::optional<std::uint
 }
 
 void Agenda::grow() {
-    const std::size_t size = std::max(initial_slots, slots_.size() * 2);
+    const std::size_t size = std::max(initial_agenda_slots, slots_.size() * 2);
     std::vector<std::uint32_t> slots(size, 0);
     for (std::size_t k = 0; k < keys_.size(); ++k) {
         std::size_t i = keys_[k].hash & (size - 1);
