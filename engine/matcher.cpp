@@ -317,8 +317,7 @@ struct Matcher::Run {
 
 Matcher::Matcher(const FactStore& facts, ValueTable& values, const BuiltinRegistry& builtins,
                  const ClosedWorld& closed_world)
-    : facts_(facts), values_(values), builtins_(builtins), closed_world_(closed_world),
-      equals_(builtins.find("=")) {}
+    : Matcher(facts, values, builtins, closed_world, builtins.find("=")) {}
 
 Matcher::Matcher(const FactStore& facts, ValueTable& values, const BuiltinRegistry& builtins,
                  const ClosedWorld& closed_world, std::optional<BuiltinId> equals)
@@ -326,7 +325,9 @@ Matcher::Matcher(const FactStore& facts, ValueTable& values, const BuiltinRegist
 
 Matcher::Matcher(const FactStore& facts, ValueTable& values, const BuiltinRegistry& builtins,
                  const ClosedWorld& closed_world, std::optional<BuiltinId> equals, MatchBuffers& buffers)
-    : facts_(facts), values_(values), builtins_(builtins), closed_world_(closed_world), equals_(equals), buffers_(&buffers) {}
+    : Matcher(facts, values, builtins, closed_world, equals) {
+    buffers_ = &buffers;
+}
 
 void Matcher::match(const CompiledRule& rule, const MatchPlan& plan, std::optional<Seed> seed, const OnMatch& on_match,
                     const OnError& on_error, const Binding* initial) {
