@@ -1,5 +1,6 @@
 // engine/preferences.cpp
 #include "engine/preferences.hpp"
+#include "qm/assert.hpp"
 #include <algorithm>
 #include <limits>
 
@@ -33,6 +34,27 @@ std::span<const FactId> candidates(const Engine& e, const CompiledPreference& p,
 }
 
 }  // namespace
+
+const CompiledPreference* choosing_preference(const Engine& e, std::span<const atms::AssumptionId> set) {
+    const Fact* first = set.empty() ? nullptr : fact_of(e, set.front());
+    return first ? preference_of(e, *first) : nullptr;
+}
+
+std::vector<std::vector<std::int64_t>> choice_set_rank_table(Engine& e, std::span<const atms::AssumptionId> set,
+                                                             std::span<const atms::AssumptionId> references) {
+    QM_REQUIRE(references.size() < 16, "a rank table over at most 15 reference assumptions");
+    const std::size_t masks = std::size_t{1} << references.size();
+    std::vector<std::vector<std::int64_t>> table(masks);
+    std::vector<atms::AssumptionId> members;
+    for (std::size_t mask = 0; mask < masks; ++mask) {
+        members.clear();
+        for (std::size_t j = 0; j < references.size(); ++j)
+            if (mask >> j & 1U) members.push_back(references[j]);
+        auto ranks = choice_set_ranks(e, set, e.atms().environment(members));
+        table[mask] = ranks ? std::move(*ranks) : std::vector<std::int64_t>(set.size(), 0);
+    }
+    return table;
+}
 
 std::vector<FactId> rank_facts(const Engine& e, atms::AssumptionId a) {
     std::vector<FactId> out;

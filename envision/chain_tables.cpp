@@ -36,11 +36,9 @@ const std::vector<geometry::QualDirection>& ChainTables::arrival(std::size_t pai
     return it == arrival_.end() ? none : it->second;
 }
 
-bool ChainTables::ranks_complete() const {
-    for (const auto& row : rank_)
-        for (int r : row)
-            if (r < 0) return false;
-    return true;
+void ChainTables::set_preference_rank(std::size_t object, std::uint8_t allowed, std::int8_t m, std::int64_t rank) {
+    if (preference_.size() <= object) preference_.resize(object + 1, {});
+    preference_[object][allowed & 7U][idx(m)] = rank;
 }
 
 }  // namespace qm::envision

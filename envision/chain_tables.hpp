@@ -1,8 +1,10 @@
 // envision/chain_tables.hpp
 // Provides:   ChainTables, what the laws conclude for a chain independently of any state, read
 //             once from the chain's state-space engine: how a pair's motion goes on when it arrives
-//             at a place (rules/clock/arrival.rules, collision.rules: `arrival`) and the
-//             nearness ranks of motions (rules/clock/nearness.rules: `nearness-rank`).
+//             at a place (rules/clock/arrival.rules, collision.rules: `arrival`) and how the laws'
+//             preference between hypothesised states ranks each object's motion given the motions
+//             a step allows it (rules/clock/nearness.rules: the `prefer` on `motion`, read through
+//             engine/preferences.hpp's rank table).
 // Ownership:  a value type.
 // Invariants: arrival(pair, place, how, v) lists the motions after, without repeats, in a fixed
 //             order; an empty list means the laws give no way on (the hypothesis is dropped).
@@ -12,6 +14,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <tuple>
 #include <vector>
@@ -29,15 +32,24 @@ public:
     void add_arrival(std::size_t pair, geometry::PlaceId place, How how, geometry::QualDirection v, geometry::QualDirection after);
     [[nodiscard]] const std::vector<geometry::QualDirection>& arrival(std::size_t pair, geometry::PlaceId place, How how,
                                                                       geometry::QualDirection v) const;
-    // Pre: h and m are -1, 0, +1; rank in 0..3 (3: beyond the zero threshold).
-    void set_rank(std::int8_t h, std::int8_t m, int rank) { rank_[idx(h)][idx(m)] = rank; }
-    [[nodiscard]] int rank(std::int8_t h, std::int8_t m) const { return rank_[idx(h)][idx(m)]; }
-    [[nodiscard]] bool ranks_complete() const;
+    // The rank of motion m of the chain's object o when a step allows it the motions in `allowed`
+    // (allowed_mask): smaller is preferred; all 0 where the laws prefer nothing. Pre: m is -1, 0, +1.
+    void set_preference_rank(std::size_t object, std::uint8_t allowed, std::int8_t m, std::int64_t rank);
+    [[nodiscard]] std::int64_t preference_rank(std::size_t object, std::uint8_t allowed, std::int8_t m) const {
+        return object < preference_.size() ? preference_[object][allowed & 7U][idx(m)] : 0;
+    }
+    [[nodiscard]] static std::uint8_t allowed_mask(const std::vector<std::int8_t>& motions) {
+        std::uint8_t mask = 0;
+        for (const auto m : motions) mask = static_cast<std::uint8_t>(mask | 1U << idx(m));
+        return mask;
+    }
+    // Where the preference is declared ("FILE:LINE"; empty if none), for explanations.
+    std::string preference_where;
 
 private:
     static std::size_t idx(std::int8_t s) { return static_cast<std::size_t>(s + 1); }
     std::map<std::tuple<std::size_t, std::uint32_t, How, geometry::QualDirection>, std::vector<geometry::QualDirection>> arrival_;
-    std::array<std::array<int, 3>, 3> rank_{{{-1, -1, -1}, {-1, -1, -1}, {-1, -1, -1}}};
+    std::vector<std::array<std::array<std::int64_t, 3>, 8>> preference_;  // [object][allowed mask][motion]
 };
 
 }  // namespace qm::envision

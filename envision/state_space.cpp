@@ -1,10 +1,12 @@
 // envision/state_space.cpp: states as ATMS interpretations (thesis Def 35, Figure 8.4, 8.2.3).
 #include "envision/state_space.hpp"
 #include "bridge/clock_vocabulary.hpp"
+#include "engine/preferences.hpp"
 #include "envision/fact_reader.hpp"
 #include "qm/assert.hpp"
 
 #include <algorithm>
+#include <array>
 #include <map>
 
 namespace qm::envision {
@@ -100,9 +102,44 @@ void read_tables(engine::Engine& e, std::span<const bridge::PairPlaces> pairs, c
         tables.add_arrival(it->second, g::PlaceId{static_cast<std::uint32_t>(read.integer(a[1]))}, *how, read.direction(a[3]),
                            read.direction(a[4]));
     });
-    read.each(v::nearness_rank, 3, [&](std::span<const engine::ValueId> a) {
-        tables.set_rank(read.sign(a[0]), read.sign(a[1]), static_cast<int>(read.integer(a[2])));
-    });
+}
+
+// The laws' preference between hypothesised next states (rules/clock/nearness.rules: a `prefer` on
+// the motion choice sets, ranked in the environment of the motions a step allows, each an assumption
+// (step-allows O H)): read once per chain as a table by object, allowed motions and motion, so that
+// the successor step (successors.hpp) applies it by lookup.
+void read_preference(engine::Engine& e, const g::Mechanism& m, const Chain& chain, const OrderedSets& ordered, ChainTables& tables) {
+    const FactReader read(e, std::nullopt);
+    std::map<std::string, std::size_t> object_index;
+    for (std::size_t k = 0; k < chain.objects.size(); ++k) object_index[m.parts[chain.objects[k]].name] = k;
+    // references[o][idx(h)]: the assumption (step-allows o h).
+    std::vector<std::array<std::optional<atms::AssumptionId>, 3>> references(chain.objects.size());
+    const engine::ValueId allows = e.values().symbol(v::step_allows);
+    for (const engine::FactId f : e.facts_of(allows)) {
+        const engine::Fact& fact = e.facts().fact(f);
+        const auto a = e.assumption(f);
+        if (fact.args.size() != 2 || !a) throw InternalError("the laws conclude " + e.print(f) + ", expected the assumption (step-allows O H)");
+        const auto it = object_index.find(read.symbol(fact.args[0]));
+        if (it != object_index.end()) references[it->second][static_cast<std::size_t>(read.sign(fact.args[1]) + 1)] = *a;
+    }
+    for (std::size_t k = 0; k < ordered.sets.size(); ++k) {
+        const auto& meaning = ordered.meaning[k];
+        if (meaning.empty() || meaning.front().is_place) continue;
+        const engine::CompiledPreference* p = engine::choosing_preference(e, ordered.sets[k]);
+        if (!p) continue;
+        tables.preference_where = p->where.file + ":" + std::to_string(p->where.line);
+        const std::size_t o = meaning.front().index;
+        std::vector<atms::AssumptionId> refs;
+        for (const auto& r : references[o]) {
+            if (!r) throw InternalError("the laws prefer among the motions of " + m.parts[chain.objects[o]].name + " (" +
+                                        tables.preference_where + ") but assume no (step-allows O H) for each of its motions");
+            refs.push_back(*r);
+        }
+        const auto table = engine::choice_set_rank_table(e, ordered.sets[k], refs);
+        for (std::size_t mask = 0; mask < table.size(); ++mask)
+            for (std::size_t i = 0; i < meaning.size(); ++i)
+                tables.set_preference_rank(o, static_cast<std::uint8_t>(mask), meaning[i].motion, table[mask][i]);
+    }
 }
 
 bool state_less(const State& x, const State& y) {
@@ -189,8 +226,7 @@ std::optional<StateSpace> enumerate_states(const Laws& laws, const g::Mechanism&
     }
     std::sort(out.states.begin(), out.states.end(), state_less);
     read_tables(*e, pairs, chain, out.tables);
-    if (!out.tables.ranks_complete())
-        throw InternalError("the laws rank nearness (nearness-rank H M K) for only some pairs of motions (rules/clock/nearness.rules)");
+    read_preference(*e, m, chain, *ordered, out.tables);
     out.nogoods = e->atms().minimal_nogoods().size();
     return out;
 }

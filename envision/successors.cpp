@@ -39,6 +39,8 @@ public:
     [[nodiscard]] std::vector<std::string> reasons() { return std::exchange(reasons_, {}); }
 
     void step(const StepOptions& s) {
+        allowed_.clear();
+        for (const auto& options : s.motions) allowed_.push_back(ChainTables::allowed_mask(options));
         // A pair that may wrap may also stay: both reach the same state, so keep the wrap.
         std::vector<std::vector<PlaceOption>> places = s.places;
         if (target_) {
@@ -121,8 +123,9 @@ private:
 
     // The chain made consistent (8.3.4): among the states with these places, those whose colliding
     // pairs move as the branch says and whose objects that must change (the current motion is not
-    // among the step's options) take one of their options; of those, the ones no other beats in
-    // nearness to the step's options for every other object at once.
+    // among the step's options) take one of their options; of those, the ones the laws' preference
+    // keeps (rules/clock/nearness.rules: a `prefer` on every object's motion, ranked given the
+    // motions the step allows it, read once as a table: chain_tables.hpp), a Pareto front.
     void settle(const StepOptions& s, const std::vector<PlaceOption>& places, const std::vector<Arrival>& arrivals,
                 const std::vector<g::QualDirection>& branch) {
         const std::size_t n = current_.motions.size();
@@ -158,16 +161,19 @@ private:
             target.push_back(places[k].place);
         }
         std::vector<StateId> candidates;
-        std::vector<std::vector<int>> ranks;
+        std::vector<std::vector<std::int64_t>> ranks;
         for (const StateId id : states_.with_places(target)) {
             const State& t = states_[id];
             bool ok = true;
-            std::vector<int> r;
+            std::vector<std::int64_t> r;
+            r.reserve(n);
             for (std::size_t o = 0; o < n && ok; ++o) {
                 const auto& options = s.motions[o];
                 if (fixed[o]) ok = t.motions[o] == *fixed[o];
                 else if (must[o]) ok = std::find(options.begin(), options.end(), t.motions[o]) != options.end();
-                else r.push_back(nearness(options, t.motions[o]));
+                // The declared preference ranks every object's motion: where the constraints above
+                // leave one motion (fixed) or only the step's options (must), the candidates tie there.
+                r.push_back(tables_.preference_rank(o, allowed_[o], t.motions[o]));
             }
             if (!ok) continue;
             candidates.push_back(id);
@@ -183,7 +189,7 @@ private:
         }
     }
 
-    void explain_target(const StepOptions& s, const std::vector<StateId>& candidates, const std::vector<std::vector<int>>& ranks,
+    void explain_target(const StepOptions& s, const std::vector<StateId>& candidates, const std::vector<std::vector<std::int64_t>>& ranks,
                         const std::vector<bool>& must, const std::vector<std::optional<std::int8_t>>& fixed) {
         const State& t = states_[*target_];
         const auto it = std::find(candidates.begin(), candidates.end(), *target_);
@@ -208,7 +214,8 @@ private:
             }
             if (le && lt) {
                 reasons_.push_back("state #" + std::to_string(candidates[i].value) +
-                                   " has these places too and is nearer to what the step allows for every part (Def 38: the chain is made consistent by nearness, 8.3.4)");
+                                   " has these places too and the laws prefer it: it is nearer to what the step allows for every part (the `prefer` at " +
+                                   tables_.preference_where + ")");
                 return;
             }
         }
@@ -217,18 +224,12 @@ private:
                                : "this step allows it");
     }
 
-    // Def 38 with 8.3.4's threshold: how near a motion is to the nearest of an object's options.
-    int nearness(const std::vector<std::int8_t>& options, std::int8_t m) const {
-        int best = 3;
-        for (const auto y : options) best = std::min(best, tables_.rank(y, m));
-        return best;
-    }
-
     StateId from_;
     const State& current_;
     const StateIndex& states_;
     const ChainTables& tables_;
     std::vector<std::pair<std::size_t, std::size_t>> parts_;  // per pair: its parts' object indices
+    std::vector<std::uint8_t> allowed_;  // per object: the motions the current step allows it (ChainTables::allowed_mask)
     std::map<std::pair<StateId, Duration>, std::uint8_t> found_;
     std::optional<StateId> target_;
     std::vector<std::string> pair_names_, object_names_, reasons_;

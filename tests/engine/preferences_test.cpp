@@ -13,6 +13,8 @@
 #include <doctest/doctest.h>
 #include <map>
 #include <memory>
+#include <optional>
+#include <random>
 
 using namespace qm::engine;
 
@@ -183,4 +185,82 @@ prefer (points ?x ?d) by (near ?x ?d ?k) up to 2
     CHECK(preferred(e.atms().environment(std::vector<qm::atms::AssumptionId>{})) == std::vector<std::string>{"(points v n)"});
     CHECK(preferred(e.atms().environment({*e.assumption(*blocked)})) ==
           std::vector<std::string>{"(points v e)", "(points v w)"});
+}
+
+// A rank table (choice_set_rank_table) against brute force: random distance tables between a few
+// reference assumptions and the members of a choice set; in each subset of the references, a
+// member's rank is its least distance to a reference in the subset (capped by `up to`), a member
+// with none ranks after the farthest ranked one, and a set with no rank is all 0.
+TEST_CASE("engine/preferences: a rank table over reference assumptions equals brute force") {
+    const std::vector<std::string> dirs{"n", "e", "s"};
+    std::mt19937 rng(38);
+    for (int round = 0; round < 60; ++round) {
+        const std::int64_t cap = 1 + static_cast<std::int64_t>(rng() % 4);
+        std::map<std::pair<std::size_t, std::size_t>, std::int64_t> dist;  // (reference, member) -> distance
+        std::string text = "fact (object a)\nrule choose\n  when (object ?o)\n  then [exactly one ?d in {n e s}: assume (go ?o ?d)]\n";
+        for (std::size_t r = 0; r < dirs.size(); ++r) {
+            text += "assume (allow a " + dirs[r] + ")\n";
+            for (std::size_t m = 0; m < dirs.size(); ++m)
+                if (rng() % 3 != 0) {
+                    dist[{r, m}] = static_cast<std::int64_t>(rng() % 6);
+                    text += "fact (dist " + dirs[r] + " " + dirs[m] + " " + std::to_string(dist[{r, m}]) + ")\n";
+                }
+        }
+        text += "rule near\n  when (allow ?o ?r) (dist ?r ?d ?k)\n  then (near ?o ?d ?k)\n";
+        text += "prefer (go ?o ?d) by (near ?o ?d ?k) up to " + std::to_string(cap) + "\n";
+        qm::Diagnostics d;
+        ProgramSpec spec;
+        read_rule_text(text, "t.rules", spec, d);
+        auto p = compile_program(spec, d);
+        REQUIRE(p.has_value());
+        Engine e(std::move(p->program), std::move(p->values));
+        e.run(d);
+        REQUIRE(!d.has_errors());
+        REQUIRE(e.choice_sets().size() == 1);
+        const auto& set = e.choice_sets()[0];
+        const CompiledPreference* pref = choosing_preference(e, set);
+        REQUIRE(pref != nullptr);
+        CHECK(pref->where.file == "t.rules");
+        std::vector<qm::atms::AssumptionId> refs;
+        for (const auto& r : dirs) {
+            const std::vector<ValueId> args{e.values().symbol("a"), e.values().symbol(r)};
+            const auto f = e.find(e.values().symbol("allow"), args);
+            REQUIRE(f);
+            refs.push_back(*e.assumption(*f));
+        }
+        std::vector<std::size_t> member_dir;  // set[i] is (go a dirs[member_dir[i]])
+        for (auto a : set)
+            for (std::size_t m = 0; m < dirs.size(); ++m)
+                if (e.print(a) == "(go a " + dirs[m] + ")") member_dir.push_back(m);
+        REQUIRE(member_dir.size() == set.size());
+        const auto table = choice_set_rank_table(e, set, refs);
+        REQUIRE(table.size() == 8);
+        for (std::size_t mask = 0; mask < 8; ++mask) {
+            std::vector<std::optional<std::int64_t>> rank(set.size());
+            for (std::size_t i = 0; i < set.size(); ++i)
+                for (std::size_t r = 0; r < dirs.size(); ++r) {
+                    const auto it = dist.find({r, member_dir[i]});
+                    if (!(mask >> r & 1U) || it == dist.end()) continue;
+                    const std::int64_t k = std::min(it->second, cap);
+                    rank[i] = rank[i] ? std::min(*rank[i], k) : k;
+                }
+            std::int64_t farthest = -1;
+            for (const auto& r : rank)
+                if (r) farthest = std::max(farthest, *r);
+            std::vector<std::int64_t> expected;
+            for (const auto& r : rank) expected.push_back(farthest < 0 ? 0 : r ? *r : farthest + 1);
+            CHECK(table[mask] == expected);
+        }
+    }
+    // A set no preference chooses among has no declaration.
+    qm::Diagnostics d;
+    ProgramSpec spec;
+    read_rule_text("fact (object a)\nrule choose\n  when (object ?o)\n  then [exactly one ?d in {n e}: assume (go ?o ?d)]\n", "u.rules", spec, d);
+    auto p = compile_program(spec, d);
+    REQUIRE(p.has_value());
+    Engine e(std::move(p->program), std::move(p->values));
+    e.run(d);
+    REQUIRE(e.choice_sets().size() == 1);
+    CHECK(choosing_preference(e, e.choice_sets()[0]) == nullptr);
+    CHECK(choice_set_rank_table(e, e.choice_sets()[0], {}) == std::vector<std::vector<std::int64_t>>{{0, 0}});
 }
