@@ -118,6 +118,25 @@ TEST_CASE("cli/envision: --next, --previous and --without") {
     CHECK(without.out.find("gravity") == std::string::npos);
 }
 
+TEST_CASE("cli/envision: --why-not cites the laws' preference where it keeps another state (8.3.4)") {
+    // From #28 the escapement's step reaches the places of #217 and #218; the chain settles in
+    // #217, nearer to what the step allows, by the `prefer` of rules/clock/nearness.rules.
+    std::ifstream rules(std::string(QM_SOURCE_DIR) + "/rules/clock/nearness.rules");
+    std::string line;
+    int at = 0, n = 0;
+    while (std::getline(rules, line)) {
+        ++n;
+        if (line.rfind("prefer (motion ", 0) == 0) at = n;
+    }
+    REQUIRE(at > 0);
+    const auto r = envision(scene("escapement.def") + " --why-not '#28 -> #218'");
+    REQUIRE(r.status == 0);
+    CHECK(r.out.find("no transition #28 ") == 0);
+    CHECK(r.out.find("state #217 has these places too and the laws prefer it: it is nearer to what the step allows for every part (the `prefer` at ") !=
+          std::string::npos);
+    CHECK(r.out.find("/clock/nearness.rules:" + std::to_string(at) + ")") != std::string::npos);
+}
+
 TEST_CASE("cli/envision: --from, --path, --why-not, --dot and --svg") {
     const std::string ratchet = std::string(QM_SOURCE_DIR) + "/scenarios/clock/ratchet.def";
     const auto all = envision(ratchet + " --json");
