@@ -46,6 +46,25 @@ bool AtMostOneIndex::other_member(AssumptionId a, std::span<const std::uint64_t>
     return false;
 }
 
+bool AtMostOneIndex::other_member(AssumptionId a, SparseWords set) const noexcept {
+    if (a.value >= of_.size()) return false;
+    const std::size_t own_word = a.value / word_bits;
+    const std::uint64_t own_bit = std::uint64_t{1} << (a.value % word_bits);
+    for (std::uint32_t c : of_[a.value]) {
+        const Environment& m = members_[c];
+        // Only the listed words inside the member window can hold a shared member.
+        for (std::size_t j = 0; j < set.index.size(); ++j) {
+            const std::size_t w = set.index[j];
+            if (w < m.first_word()) continue;
+            if (w >= m.end_word()) break;
+            std::uint64_t shared = m.words()[w - m.first_word()] & set.words[j];
+            if (w == own_word) shared &= ~own_bit;
+            if (shared != 0) return true;
+        }
+    }
+    return false;
+}
+
 bool AtMostOneIndex::violated_by(std::span<const std::uint64_t> words, std::size_t first) const noexcept {
     if (members_.empty()) return false;
     // A constraint with two members in the set is found from either; one with a single member in

@@ -41,6 +41,8 @@ public:
     [[nodiscard]] bool violated_by(std::span<const std::uint64_t> words, std::size_t first = 0) const noexcept;
     // Some constraint of a has a member other than a in the window (a itself may or may not be in it).
     [[nodiscard]] bool other_member(AssumptionId a, std::span<const std::uint64_t> words, std::size_t first = 0) const noexcept;
+    // The same for a set given by its listed words (environment.hpp).
+    [[nodiscard]] bool other_member(AssumptionId a, SparseWords set) const noexcept;
 
 private:
     std::vector<Environment> members_;

@@ -79,6 +79,41 @@ bool window_intersects(std::span<const std::uint64_t> x, std::size_t x_first, st
     return false;
 }
 
+bool window_subset(std::span<const std::uint64_t> x, std::size_t x_first, SparseWords y) noexcept {
+    // Both walks go up: x's words in order, y's index by a cursor (a merge, no search).
+    std::size_t j = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        if (x[i] == 0) continue;
+        const std::size_t w = x_first + i;
+        while (j < y.index.size() && y.index[j] < w) ++j;
+        if (j == y.index.size() || y.index[j] != w || (x[i] & ~y.words[j]) != 0) return false;
+    }
+    return true;
+}
+
+bool window_intersects(std::span<const std::uint64_t> x, std::size_t x_first, SparseWords y) noexcept {
+    for (std::size_t j = 0; j < y.index.size(); ++j) {
+        const std::size_t w = y.index[j];
+        if (w < x_first) continue;
+        if (w - x_first >= x.size()) break;
+        if ((x[w - x_first] & y.words[j]) != 0) return true;
+    }
+    return false;
+}
+
+Environment Environment::from_sparse(SparseWords y) {
+    Environment e;
+    std::size_t lo = 0, hi = y.words.size();
+    while (lo < hi && y.words[lo] == 0) ++lo;
+    while (hi > lo && y.words[hi - 1] == 0) --hi;
+    if (lo == hi) return e;
+    QM_REQUIRE(std::size_t{y.index[hi - 1]} + 1 <= std::size_t{UINT32_MAX} / word_bits, "assumption id out of range");
+    e.first_ = y.index[lo];
+    e.words_.assign(std::size_t{y.index[hi - 1]} - e.first_ + 1, 0);
+    for (std::size_t j = lo; j < hi; ++j) e.words_[y.index[j] - e.first_] = y.words[j];
+    return e;  // both ends are non-zero words of y
+}
+
 bool Environment::subset_of(const Environment& other) const noexcept {
     // Both windows are tight, so a window reaching outside the other's has a bit the other lacks.
     if (empty()) return true;

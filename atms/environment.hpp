@@ -2,7 +2,8 @@
 // Provides:   Environment, a set of assumptions stored as a compact bitset over AssumptionId: only
 //             the window of 64-bit words from the first to the last non-zero one is kept, with the
 //             index of its first word, so a set of nearby assumptions is a word or two however many
-//             assumptions the ATMS has. Free functions on raw word windows for the hot loops.
+//             assumptions the ATMS has. Free functions on raw word windows for the hot loops, and
+//             SparseWords, a set given by its listed words only (weave's unions).
 // Ownership:  a value type; canonical copies are interned by EnvironmentTable (environment_table.hpp).
 // Invariants: words_ has no leading or trailing zero word, and first_ is 0 when words_ is empty,
 //             so the defaulted == is set equality and the hash of equal sets is equal.
@@ -15,6 +16,16 @@
 #include <vector>
 
 namespace qm::atms {
+// A set given by some of its words only: words[i] is word index[i] of the set (index strictly
+// increasing), every word not listed is zero (a listed word may be zero too). A set of a few
+// assumptions far apart (a situation's assumption and an object's choices, say) is a few words here
+// however wide its window: weave (label_update.cpp) forms its unions in this form, so their cost
+// does not grow with the number of assumptions (docs/perf/alex.md, "Sparse unions in weave").
+struct SparseWords {
+    std::span<const std::uint64_t> words;
+    std::span<const std::uint32_t> index;  // Pre: index.size() == words.size()
+};
+
 class Environment {
 public:
     Environment() = default;  // the empty environment {}
@@ -24,6 +35,8 @@ public:
     [[nodiscard]] static Environment from_words(std::span<const std::uint64_t> words);
     // The same for a window: words[i] is word first_word + i, every word outside it zero.
     [[nodiscard]] static Environment from_words(std::span<const std::uint64_t> words, std::size_t first_word);
+    // The set y (SparseWords above), as a window.
+    [[nodiscard]] static Environment from_sparse(SparseWords y);
     // *this = from_words(words, first_word), reusing the storage it has (no allocation once it has
     // grown): for a loop that forms many environments one after another.
     void assign_words(std::span<const std::uint64_t> words, std::size_t first_word);
@@ -65,6 +78,11 @@ private:
 // True iff the two windows share an assumption.
 [[nodiscard]] bool window_intersects(std::span<const std::uint64_t> x, std::size_t x_first,
                                      std::span<const std::uint64_t> y, std::size_t y_first) noexcept;
+
+// True iff the set of window x (x[i] is word x_first + i) is a subset of y.
+[[nodiscard]] bool window_subset(std::span<const std::uint64_t> x, std::size_t x_first, SparseWords y) noexcept;
+// True iff the set of window x and y share an assumption.
+[[nodiscard]] bool window_intersects(std::span<const std::uint64_t> x, std::size_t x_first, SparseWords y) noexcept;
 
 [[nodiscard]] Environment join(const Environment& x, const Environment& y);
 

@@ -18,10 +18,16 @@ using detail::BitsetPool;
 using detail::MinimalFilter;
 
 namespace {
-// Appends env to the pool as a row of the window starting at word `first` (Pre: env lies inside).
-void push(BitsetPool& pool, const Environment& env, std::size_t first) {
-    std::uint64_t* row = pool.push({});
-    if (!env.empty()) std::copy(env.words().begin(), env.words().end(), row + (env.first_word() - first));
+// ORs env into a row over `index` (SparseWords): each non-zero word of env at its listed position.
+// Pre: every non-zero word of env is listed.
+void place(std::uint64_t* row, const Environment& env, std::span<const std::uint32_t> index) {
+    const auto words = env.words();
+    auto at = index.begin();
+    for (std::size_t w = 0; w < words.size(); ++w) {
+        if (words[w] == 0) continue;
+        at = std::lower_bound(at, index.end(), static_cast<std::uint32_t>(env.first_word() + w));
+        row[at - index.begin()] |= words[w];
+    }
 }
 }  // namespace
 
@@ -33,26 +39,31 @@ std::vector<EnvId> weave(EnvironmentTable& table, const NogoodDatabase& nogoods,
 
 std::vector<EnvId> weave(EnvironmentTable& table, const NogoodDatabase& nogoods, std::span<const EnvId> envs,
                          std::span<const Label* const> labels, detail::WeaveScratch& scratch) {
-    // All unions are formed in the window of words [first, last) that holds every involved
-    // assumption, so with thousands of assumptions an env of nearby ones stays a few words wide.
-    std::size_t first = SIZE_MAX, last = 0;
-    auto widen = [&](EnvId e) {
+    // All unions are formed over the words that some involved env has non-zero (SparseWords,
+    // environment.hpp), not over the window from the lowest to the highest involved assumption: an
+    // env that holds a situation's assumption (among the first created) and an object's choices
+    // (created as the rules reach the object) spans a window that grows with the scene, and every
+    // union, subset test and nogood test paid for it (docs/perf/alex.md, "Sparse unions in weave").
+    std::vector<std::uint32_t>& index = scratch.index;
+    index.clear();
+    auto collect = [&](EnvId e) {
         const Environment& env = table[e];
-        if (env.empty()) return;
-        first = std::min(first, env.first_word());
-        last = std::max(last, env.end_word());
+        const auto words = env.words();
+        for (std::size_t w = 0; w < words.size(); ++w)
+            if (words[w] != 0) index.push_back(static_cast<std::uint32_t>(env.first_word() + w));
     };
-    for (EnvId e : envs) widen(e);
+    for (EnvId e : envs) collect(e);
     for (const Label* label : labels) {
         if (label->empty()) return {};
-        for (EnvId l : *label) widen(l);
+        for (EnvId l : *label) collect(l);
     }
-    if (first > last) first = last = 0;  // only empty environments
-    const std::size_t width = last - first;
+    std::sort(index.begin(), index.end());
+    index.erase(std::unique(index.begin(), index.end()), index.end());
+    const std::size_t width = index.size();
     BitsetPool& current = scratch.current;
     current.reset(width);
     for (EnvId e : envs)
-        if (!table.is_nogood(e)) push(current, table[e], first);
+        if (!table.is_nogood(e)) place(current.push({}), table[e], index);
     BitsetPool& unions = scratch.unions;
     BitsetPool& minimal = scratch.minimal;
     unions.reset(width);
@@ -63,21 +74,21 @@ std::vector<EnvId> weave(EnvironmentTable& table, const NogoodDatabase& nogoods,
         if (current.size() == 1 && label->size() == 1) {
             // One union of one env with one env (e.g. a nogood between two assumptions): formed in
             // place; its consistency is tested once, after the last label.
-            const Environment& le = table[label->front()];
-            std::uint64_t* row = current.row(0);
-            for (std::size_t w = 0; w < le.words().size(); ++w) row[le.first_word() - first + w] |= le.words()[w];
+            place(current.row(0), table[label->front()], index);
             tested = false;
             continue;
         }
+        // Each env of the label as its row over index, once, rather than placed again per union.
+        BitsetPool& placed = scratch.placed;
+        placed.reset(width);
+        for (EnvId l : *label) place(placed.push({}), table[l], index);
         unions.clear();
         for (std::size_t i = 0; i < current.size(); ++i) {
             const auto c = current[i];
-            for (EnvId l : *label) {
+            for (std::size_t k = 0; k < placed.size(); ++k) {
                 std::uint64_t* u = unions.push(c);
-                const Environment& le = table[l];
-                if (le.empty()) continue;
-                std::uint64_t* at = u + (le.first_word() - first);
-                for (std::size_t w = 0; w < le.words().size(); ++w) at[w] |= le.words()[w];
+                const auto p = placed[k];
+                for (std::size_t w = 0; w < width; ++w) u[w] |= p[w];
             }
         }
         // Drop the inconsistent unions (they can never support the consequent) only after
@@ -88,15 +99,15 @@ std::vector<EnvId> weave(EnvironmentTable& table, const NogoodDatabase& nogoods,
         filter.keep_minimal(unions, minimal);
         current.clear();
         for (std::size_t i = 0; i < minimal.size(); ++i)
-            if (!nogoods.subsumes_words(minimal[i], first)) current.push(minimal[i]);
+            if (!nogoods.subsumes_sparse({minimal[i], index})) current.push(minimal[i]);
         tested = true;
         if (current.size() == 0) break;
     }
-    if (!tested && nogoods.subsumes_words(current[0], first)) current.clear();
+    if (!tested && nogoods.subsumes_sparse({current[0], index})) current.clear();
     std::vector<EnvId> out;
     out.reserve(current.size());
     for (std::size_t i = 0; i < current.size(); ++i)
-        out.push_back(table.intern_consistent(Environment::from_words(current[i], first), nogoods));
+        out.push_back(table.intern_consistent(Environment::from_sparse({current[i], index}), nogoods));
     return out;
 }
 }  // namespace qm::atms

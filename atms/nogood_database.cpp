@@ -54,6 +54,31 @@ bool NogoodDatabase::subsumes_words(std::span<const std::uint64_t> words, std::s
     return false;
 }
 
+bool NogoodDatabase::subsumes_sparse(SparseWords set) const noexcept {
+    if (empty_nogood_) return true;
+    // subsumes_words, visiting only the listed words.
+    const std::uint64_t sig = signature(set.words);
+    for (std::size_t j = 0; j < set.words.size(); ++j) {
+        for (std::uint64_t bits = set.words[j]; bits != 0; bits &= bits - 1) {
+            const std::size_t a = std::size_t{set.index[j]} * word_bits + static_cast<std::size_t>(std::countr_zero(bits));
+            if (a < partners_.size()) {
+                const Environment& p = partners_[a];
+                if (!p.empty() && window_intersects(p.words(), p.first_word(), set)) return true;
+            }
+            if (a < filed_.size()) {
+                for (const Filed& f : filed_[a]) {
+                    if ((f.sig & ~sig) != 0) continue;
+                    const Environment& n = entries_[f.entry].env;
+                    if (window_subset(n.words(), n.first_word(), set)) return true;
+                }
+            }
+            const AssumptionId id{static_cast<std::uint32_t>(a)};
+            if (!at_most_one_.of(id).empty() && at_most_one_.other_member(id, set)) return true;
+        }
+    }
+    return false;
+}
+
 bool NogoodDatabase::subsumes_with(std::span<const std::uint64_t> words, AssumptionId a) const noexcept {
     if (empty_nogood_) return true;
     if (a.value < partners_.size()) {

@@ -11,7 +11,8 @@
 //                                    most there; two-assumption nogoods {a, b}, the usual
 //                                    exclusions, by one bitset of the partners b of each a of e;
 //                                    constraints by their member window. subsumes_words(w, first)
-//                                    is the same question for a raw bitset window from word first.
+//                                    is the same question for a raw bitset window from word first,
+//                                    subsumes_sparse(set) for a set given by its listed words.
 //               subsumes_with(w, a)  is some nogood or constraint containing a violated by w?  When
 //                                    w minus a is consistent (the backtracking step of
 //                                    interpretations), this equals subsumes(w).
@@ -39,6 +40,9 @@ public:
     }
     // words[i] is word first_word + i of the set; words outside the window are zero.
     [[nodiscard]] bool subsumes_words(std::span<const std::uint64_t> words, std::size_t first_word = 0) const noexcept;
+    // The same for a set given by its listed words (environment.hpp): costs what the listed words
+    // hold, not the width of the window from its lowest to its highest assumption.
+    [[nodiscard]] bool subsumes_sparse(SparseWords set) const noexcept;
     // words is a raw bitset from word 0 (the mutable partial choice of interpretations).
     [[nodiscard]] bool subsumes_with(std::span<const std::uint64_t> words, AssumptionId a) const noexcept;
     // Pre: base is consistent and does not hold a.

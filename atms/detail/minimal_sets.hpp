@@ -63,7 +63,8 @@ private:
 // The scratch space of one weave, kept by its owner between calls so that adding a justification
 // allocates nothing once the pools have grown (label_update.hpp).
 struct WeaveScratch {
-    BitsetPool current{0}, unions{0}, minimal{0};
+    BitsetPool current{0}, unions{0}, minimal{0}, placed{0};
+    std::vector<std::uint32_t> index;  // the words the rows stand for (SparseWords::index)
     MinimalFilter filter;
 };
 }  // namespace qm::atms::detail

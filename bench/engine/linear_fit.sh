@@ -33,7 +33,7 @@ trap 'rm -rf "$work"' EXIT
 
 # Self instructions by module from callgrind_annotate: a function belongs to the first qm module
 # its name mentions (std::function handlers and hash tables of a module's types included; "alex"
-# is the scene reader and the driver); __popcountdi2 is the ATMS' (environment sizes),
+# is the scene reader and the driver: qm::scene and qm::analysis, once qm::alex); __popcountdi2 is the ATMS' (environment sizes),
 # malloc/free/new/delete are "alloc", the rest (libc, whose memcpy/memset the ATMS' bitset pool
 # calls, the loader, libstdc++) "other".
 by_module() {
@@ -47,7 +47,7 @@ by_module() {
             else if ($0 ~ /malloc|[^a-z_]free|operator new|operator delete|unlink_chunk|malloc_consolidate/) m = "alloc"
             sum[m] += v
         }
-        END { printf "%.0f %.0f %.0f %.0f %.0f\n", sum["engine"], sum["atms"], sum["alex"], sum["alloc"], \
+        END { printf "%.0f %.0f %.0f %.0f %.0f\n", sum["engine"], sum["atms"], sum["alex"] + sum["analysis"] + sum["scene"], sum["alloc"], \
                      sum["other"] + sum["cli"] + sum["geometry"] + sum["support"] }'
 }
 

@@ -22,6 +22,21 @@ std::uint32_t shared(const Environment& x, const Environment& y) {
 }
 }  // namespace
 
+namespace {
+// e as SparseWords (environment.hpp): its non-zero words only, or (all_words) every word of its
+// window, zero words listed too. The vectors must outlive the view.
+SparseWords sparse(const Environment& e, bool all_words, std::vector<std::uint64_t>& words, std::vector<std::uint32_t>& index) {
+    words.clear();
+    index.clear();
+    for (std::size_t w = 0; w < e.words().size(); ++w) {
+        if (e.words()[w] == 0 && !all_words) continue;
+        words.push_back(e.words()[w]);
+        index.push_back(static_cast<std::uint32_t>(e.first_word() + w));
+    }
+    return {words, index};
+}
+}  // namespace
+
 TEST_CASE("atms/at_most_one_index: violated_by and other_member agree with counting members") {
     std::mt19937 rng(31);
     for (int round = 0; round < 300; ++round) {
@@ -48,6 +63,9 @@ TEST_CASE("atms/at_most_one_index: violated_by and other_member agree with count
                 CHECK(static_cast<std::size_t>(std::count_if(sets.begin(), sets.end(), [&](const Environment& s) { return s.contains(a); })) == of.size());
                 const bool other = std::any_of(of.begin(), of.end(), [&](std::uint32_t c) { return shared(sets[c], e.without(a)) >= 1; });
                 CHECK(index.other_member(a, e.words(), e.first_word()) == other);
+                std::vector<std::uint64_t> sw;
+                std::vector<std::uint32_t> si;
+                CHECK(index.other_member(a, sparse(e, q % 2 == 0, sw, si)) == other);
                 CHECK(index.other_member(a, e.without(a).words(), e.without(a).first_word()) == other);
             }
         }

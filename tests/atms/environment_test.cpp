@@ -131,3 +131,49 @@ TEST_CASE("atms/environment: windows of words: from_words with an offset, subset
     // An id far beyond any word yet seen is one word, not thousands.
     CHECK(Environment::of(std::vector{AssumptionId{100000}}).words().size() == 1);
 }
+
+namespace {
+// y as SparseWords over its non-zero words plus some zero words listed too (weave lists the words
+// of every env it involves, so a row may have listed zero words), in increasing order.
+struct Sparse {
+    std::vector<std::uint64_t> words;
+    std::vector<std::uint32_t> index;
+    [[nodiscard]] SparseWords view() const { return {words, index}; }
+};
+Sparse sparse_of(const std::set<std::uint32_t>& s, std::mt19937& rng, std::uint32_t universe) {
+    std::set<std::uint32_t> listed;
+    for (auto v : s) listed.insert(v / 64);
+    const auto extra = std::uniform_int_distribution<std::uint32_t>(0, 3)(rng);
+    for (std::uint32_t i = 0; i < extra; ++i) listed.insert(std::uniform_int_distribution<std::uint32_t>(0, universe / 64)(rng));
+    Sparse out;
+    for (auto w : listed) {
+        out.index.push_back(w);
+        out.words.push_back(0);
+    }
+    for (auto v : s) {
+        const auto at = std::lower_bound(out.index.begin(), out.index.end(), v / 64) - out.index.begin();
+        out.words[static_cast<std::size_t>(at)] |= std::uint64_t{1} << (v % 64);
+    }
+    return out;
+}
+}  // namespace
+
+TEST_CASE("atms/environment: SparseWords (listed words only) agree with std::set on random sets") {
+    std::mt19937 rng(11);
+    for (int round = 0; round < 4000; ++round) {
+        const std::uint32_t universe = round % 3 == 0 ? 10 : round % 3 == 1 ? 300 : 5000;
+        const auto x = random_set(rng, universe);
+        const auto y = random_set(rng, universe);
+        const Environment ex = env_of(x);
+        const Sparse sy = sparse_of(y, rng, universe);
+        CHECK(Environment::from_sparse(sy.view()) == env_of(y));
+        CHECK(window_subset(ex.words(), ex.first_word(), sy.view()) == std::includes(y.begin(), y.end(), x.begin(), x.end()));
+        std::set<std::uint32_t> common;
+        std::set_intersection(x.begin(), x.end(), y.begin(), y.end(), std::inserter(common, common.end()));
+        CHECK(window_intersects(ex.words(), ex.first_word(), sy.view()) == !common.empty());
+    }
+    CHECK(Environment::from_sparse({}) == Environment{});
+    const std::vector<std::uint64_t> zeros{0, 0};
+    const std::vector<std::uint32_t> at{3, 90};
+    CHECK(Environment::from_sparse({zeros, at}) == Environment{});
+}

@@ -20,6 +20,18 @@ std::vector<std::uint64_t> dense(const Environment& e) {
     std::copy(e.words().begin(), e.words().end(), w.begin() + static_cast<std::ptrdiff_t>(e.first_word()));
     return w;
 }
+// e as SparseWords (environment.hpp): its non-zero words only, or (all_words) every word of its
+// window, zero words listed too. The vectors must outlive the view.
+SparseWords sparse(const Environment& e, bool all_words, std::vector<std::uint64_t>& words, std::vector<std::uint32_t>& index) {
+    words.clear();
+    index.clear();
+    for (std::size_t w = 0; w < e.words().size(); ++w) {
+        if (e.words()[w] == 0 && !all_words) continue;
+        words.push_back(e.words()[w]);
+        index.push_back(static_cast<std::uint32_t>(e.first_word() + w));
+    }
+    return {words, index};
+}
 }  // namespace
 
 TEST_CASE("atms/nogood_database: subsumes, subsumes_with and minimal agree with brute force") {
@@ -50,6 +62,10 @@ TEST_CASE("atms/nogood_database: subsumes, subsumes_with and minimal agree with 
                 CHECK(db.subsumes(e) == subsumed_by(e));
                 // The same question on a window of e's words (as weave asks it).
                 CHECK(db.subsumes_words(e.words(), e.first_word()) == subsumed_by(e));
+                // And on its listed words (as weave asks it now).
+                std::vector<std::uint64_t> sw;
+                std::vector<std::uint32_t> si;
+                CHECK(db.subsumes_sparse(sparse(e, q % 2 == 0, sw, si)) == subsumed_by(e));
                 const auto w = dense(e);
                 CHECK(db.subsumes_words(w) == subsumed_by(e));
                 // Contract of subsumes_with: e minus a is consistent; then it answers subsumes(e).
