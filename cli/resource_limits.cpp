@@ -9,13 +9,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
-#if defined(__SANITIZE_ADDRESS__)
-#define QM_UNDER_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define QM_UNDER_ASAN 1
-#endif
-#endif
+#include "qm/address_sanitizer.hpp"
 
 namespace qm::cli {
 namespace {

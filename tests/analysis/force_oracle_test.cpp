@@ -54,15 +54,7 @@
 #include <utility>
 #include <vector>
 
-// Sanitized builds run the product some 25 times slower: fewer random scenes there.
-#if defined(__SANITIZE_ADDRESS__)
-#define QM_FORCE_ORACLE_SANITIZED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define QM_FORCE_ORACLE_SANITIZED 1
-#endif
-#endif
-
+// Sanitized builds (QM_SANITIZED_BUILD) run the product some 25 times slower: fewer random scenes there.
 using namespace qm::scene;
 using namespace qm::analysis;
 
@@ -1349,7 +1341,7 @@ RunStats run_family(Family family, int dims, std::size_t packs, std::uint32_t se
 }
 
 std::size_t packs_for(std::size_t release, std::size_t debug) {
-#if defined(NDEBUG) && !defined(QM_FORCE_ORACLE_SANITIZED)
+#if defined(NDEBUG) && !defined(QM_SANITIZED_BUILD)
     std::size_t packs = release;
     (void)debug;
 #else

@@ -35,15 +35,7 @@
 #include <utility>
 #include <vector>
 
-// Sanitized builds run the product some 25 times slower: fewer random scenes there.
-#if defined(__SANITIZE_ADDRESS__)
-#define QM_ORACLE_SANITIZED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define QM_ORACLE_SANITIZED 1
-#endif
-#endif
-
+// Sanitized builds (QM_SANITIZED_BUILD) run the product some 25 times slower: fewer random scenes there.
 using namespace qm::scene;
 using namespace qm::analysis;
 using QVec = std::vector<int>;  // qualitative vector: -1, 0, +1 or oracle::amb per place
@@ -1064,7 +1056,7 @@ TEST_CASE("analysis/kinematics_oracle: the product agrees with the oracle on see
     // other) combinations than the oracle: that known disagreement is counted and shown, and
     // reproduced by the skipped cases below.
     constexpr std::size_t chain_limit = 1000, per_pack = 4;
-#if defined(NDEBUG) && !defined(QM_ORACLE_SANITIZED)
+#if defined(NDEBUG) && !defined(QM_SANITIZED_BUILD)
     std::size_t packs = 300;
 #else
     std::size_t packs = 20;

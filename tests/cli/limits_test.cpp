@@ -6,19 +6,12 @@
 // file that starts with a UTF-8 byte-order mark reads as without it; a folder given as a scene
 // says so.
 #include "qm_atms_run.hpp"
+#include "qm/address_sanitizer.hpp"
 #include <doctest/doctest.h>
 #include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
-
-#if defined(__SANITIZE_ADDRESS__)
-#define QM_TEST_UNDER_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define QM_TEST_UNDER_ASAN 1
-#endif
-#endif
 
 using qm::test::qm_atms;
 
@@ -49,7 +42,7 @@ TEST_CASE("cli/limits: a program that counts for ever stops at --max-facts, loca
 }
 
 TEST_CASE("cli/limits: the default limits stop the runaway programs") {
-#ifndef QM_TEST_UNDER_ASAN  // 500000 facts: seconds in Release, too long for a sanitizer build's test
+#ifndef QM_SANITIZED_BUILD  // 500000 facts: seconds in Release, too long for a sanitizer build's test
     auto r = qm_atms("run " + grow, "limits");
     CHECK(r.status == 2);
     CHECK(r.out.empty());
@@ -94,7 +87,7 @@ TEST_CASE("cli/limits: a scene analysed under a tiny limit stops with exit 2 and
     }
 }
 
-#ifndef QM_TEST_UNDER_ASAN  // AddressSanitizer reserves terabytes of address space: no --max-memory there
+#ifndef QM_UNDER_ASAN  // AddressSanitizer reserves terabytes of address space: no --max-memory there
 TEST_CASE("cli/limits: --max-memory stops a program that needs more, exit 2, nothing written") {
     auto r = qm_atms("run " + grow + " --max-facts 100000000 --max-memory 200M", "limits");
     CHECK(r.status == 2);

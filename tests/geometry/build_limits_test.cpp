@@ -9,6 +9,7 @@
 #include "geometry/fcl_pair_oracle.hpp"
 #include "geometry/kinematic_pairs.hpp"
 #include "geometry/part_generators.hpp"
+#include "qm/address_sanitizer.hpp"
 
 #include <doctest/doctest.h>
 #include <cmath>
@@ -145,15 +146,7 @@ TEST_CASE("geometry/build_limits: the grids of all pairs together are bounded, l
     CHECK(os.str().find("16777472 samples together, more than the limit of 16777216; this pair's grid is 4096 x 4096") != std::string::npos);
 }
 
-#if defined(__SANITIZE_ADDRESS__)
-#define QM_NO_ADDRESS_LIMIT 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define QM_NO_ADDRESS_LIMIT 1
-#endif
-#endif
-
-#ifndef QM_NO_ADDRESS_LIMIT
+#ifndef QM_UNDER_ASAN
 namespace {
 
 // The process's address space now (VmSize), in bytes.
