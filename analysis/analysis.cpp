@@ -6,6 +6,7 @@
 #include "scene/direction_text.hpp"
 #include "analysis/kinematic_chains.hpp"
 #include "engine/preferences.hpp"
+#include "engine/program_cache.hpp"
 #include "scene/vocabulary.hpp"
 #include "scene/what_if.hpp"
 #include "qm/assert.hpp"
@@ -19,10 +20,12 @@ using engine::ValueId;
 namespace {
 
 // Every *.rules file directly in dir, in name order, checked as laws for a scene of this many dimensions.
-std::optional<engine::LoadedProgram> load_rules(const std::filesystem::path& dir, const Scene& scene, Diagnostics& diagnostics) {
+std::optional<engine::LoadedProgram> load_rules(const std::filesystem::path& dir, const std::filesystem::path& cache,
+                                                const Scene& scene, Diagnostics& diagnostics) {
     const std::vector<std::string> files = law_files(dir, diagnostics);
     if (files.empty()) return std::nullopt;
-    return engine::load_programs(files, diagnostics, law_check_options(scene.translation_arity(), "scene '" + scene.name + "'"));
+    return engine::load_programs_cached(files, diagnostics,
+                                        law_check_options(scene.translation_arity(), "scene '" + scene.name + "'"), cache);
 }
 
 // Law 1's choice sets, by object: which assumption stands for which motion.
@@ -260,7 +263,7 @@ std::unique_ptr<Analysis::State> build_state(const Scene& scene, const AnalysisO
 }
 
 std::optional<Analysis> analyse(const Scene& scene, const AnalysisOptions& options, Diagnostics& diagnostics) {
-    auto loaded = load_rules(options.rules_directory, scene, diagnostics);
+    auto loaded = load_rules(options.rules_directory, options.rule_cache, scene, diagnostics);
     if (!loaded) return std::nullopt;
     const std::shared_ptr<const Laws> laws = share_laws(std::move(*loaded));
     if (scene.situations.empty()) {

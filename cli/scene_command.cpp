@@ -159,6 +159,7 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
         d.error({options->interactive ? "-i" : options->why ? "--why" : "--situation", 1, 1},
                 "expected a scene with situations to ask about, but " + options->scene +
                     " states none (no Defstates, Situation or CONTACT list)");
+    ao.rule_cache = default_rule_cache();
     if (options->rules) ao.rules_directory = *options->rules;
     else if (auto dir = default_rules_directory()) ao.rules_directory = *dir;
     else d.error({"--rules", 1, 1}, "expected the folder of laws: none installed beside qm-atms; give --rules DIR");

@@ -312,8 +312,13 @@ std::optional<LoadedProgram> load_program(const std::string& path, Diagnostics& 
 
 std::optional<LoadedProgram> load_programs(std::span<const std::string> paths, Diagnostics& diagnostics,
                                            const LawCheckOptions& laws) {
-    ProgramSpec spec;
     SourceTexts sources;
+    return load_programs(paths, diagnostics, laws, sources);
+}
+
+std::optional<LoadedProgram> load_programs(std::span<const std::string> paths, Diagnostics& diagnostics,
+                                           const LawCheckOptions& laws, SourceTexts& sources) {
+    ProgramSpec spec;
     Diagnostics read;
     read_rule_files(paths, spec, read, default_builtins(), &sources);
     // A syntax error drops only its own item, so the items that were read are still checked and

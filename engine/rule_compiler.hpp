@@ -40,4 +40,9 @@ struct LoadedProgram {
 // Warnings go into diagnostics beside a program that loads.
 [[nodiscard]] std::optional<LoadedProgram> load_programs(std::span<const std::string> paths, Diagnostics& diagnostics,
                                                          const LawCheckOptions& laws = {});
+// The same, and gives every file the load read (those named and those they include), each with
+// the text it was read with: what a cached compiled form must be checked against (program_cache.hpp).
+class SourceTexts;
+[[nodiscard]] std::optional<LoadedProgram> load_programs(std::span<const std::string> paths, Diagnostics& diagnostics,
+                                                         const LawCheckOptions& laws, SourceTexts& sources);
 }  // namespace qm::engine

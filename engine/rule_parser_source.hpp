@@ -29,6 +29,8 @@ public:
         auto it = texts_.find(file);
         return it == texts_.end() ? nullptr : &it->second;
     }
+    // Every file read, by the name used in locations.
+    [[nodiscard]] const std::map<std::string, SourceText>& texts() const noexcept { return texts_; }
     // Appends every diagnostic of `from` to `to`, giving each one that has no source line the line
     // it points at, when its file was read.
     void attach_lines(const Diagnostics& from, Diagnostics& to) const {
