@@ -2,18 +2,13 @@
 // (cli/heap_setup.hpp).
 #include "heap_setup.hpp"
 
+#include "qm/address_sanitizer.hpp"
+
 #include <cstdint>
 #include <cstdlib>
 
-#if defined(__SANITIZE_ADDRESS__)
-#define QM_HEAP_SETUP_OFF 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define QM_HEAP_SETUP_OFF 1
-#endif
-#endif
-
-#if defined(__GLIBC__) && !defined(QM_HEAP_SETUP_OFF)
+// Off under AddressSanitizer, whose allocator is its own.
+#if defined(__GLIBC__) && !defined(QM_UNDER_ASAN)
 #include <malloc.h>
 #include <sys/mman.h>
 #include <unistd.h>
@@ -21,12 +16,12 @@
 
 namespace qm::cli {
 void prepare_heap() noexcept {
-#if defined(__GLIBC__) && !defined(QM_HEAP_SETUP_OFF)
+#if defined(__GLIBC__) && !defined(QM_UNDER_ASAN)
     // The segment reserved at once: more than the 200-block stack's peak (about 60 MB), so the scenes
     // of docs/perf/alex.md live in it; growth beyond it is served as before, in 4 KiB pages. Kept
-    // well below the smallest sensible --max-memory (RLIMIT_AS counts the reserved address space;
-    // tests/cli/limits_test.cpp runs with 200M), so that the limit still means what it says.
-    constexpr int reserve = 128 << 20;
+    // well below a sensible --max-memory; a limit under heap_reserve_limit_floor gives it back first
+    // (release_heap_reserve), so that the limit still means what it says (tests/cli/limits_test.cpp).
+    constexpr int reserve = static_cast<int>(heap_reserve_bytes);
     // glibc's largest allowed mmap threshold on 64-bit (HEAP_MAX_SIZE / 2): blocks below it come from
     // the heap.
     constexpr int mmap_threshold = 32 << 20;
@@ -46,6 +41,12 @@ void prepare_heap() noexcept {
     std::free(probe);  // back to the heap's top, kept (M_TRIM_THRESHOLD)
     // Only a probe inside the break segment (not an mmap fallback) tells where the segment is.
     if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_HUGEPAGE);
+#endif
+}
+
+void release_heap_reserve() noexcept {
+#if defined(__GLIBC__) && !defined(QM_UNDER_ASAN)
+    malloc_trim(0);  // unlike the automatic trim, not bound by M_TRIM_THRESHOLD
 #endif
 }
 }  // namespace qm::cli

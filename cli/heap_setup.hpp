@@ -17,8 +17,18 @@
 // Failure:    every step is advisory: if the break cannot grow or madvise is refused, the heap stays
 //             as the C library made it and only speed differs. Not done under AddressSanitizer
 //             (its allocator replaces glibc's). Outputs never depend on it.
+//             The reserve is mapped address space, which RLIMIT_AS counts but does not take back:
+//             a --max-memory near it would let the heap grow inside the reserve past the limit, so
+//             apply_memory_limit() gives the reserve back first (release_heap_reserve) when the limit
+//             is below heap_reserve_limit_floor.
 #pragma once
+#include <cstdint>
 
 namespace qm::cli {
+inline constexpr std::uint64_t heap_reserve_bytes = std::uint64_t{128} << 20;
+inline constexpr std::uint64_t heap_reserve_limit_floor = 8 * heap_reserve_bytes;
 void prepare_heap() noexcept;
+// Returns the heap's free top, the untouched reserve included, to the operating system; later growth
+// is in ordinary pages and counts against RLIMIT_AS as it happens.
+void release_heap_reserve() noexcept;
 }  // namespace qm::cli

@@ -23,7 +23,9 @@ namespace fs = std::filesystem;
 constexpr std::uint32_t format_version = 1;
 constexpr std::string_view magic = "QMRULES\n";
 constexpr std::size_t header_bytes = 8 + 4 + 8 + 8;  // magic, version, payload length, checksum
-constexpr std::size_t max_entry_bytes = std::size_t{64} << 20;
+// Entries of the bundled laws take about 120 kB; a decoded entry holds at most about 8 bytes of
+// structure per byte read, so this bounds what a corrupt or crafted entry can make the reader allocate.
+constexpr std::size_t max_entry_bytes = std::size_t{8} << 20;
 constexpr std::size_t max_term_depth = 256;
 constexpr std::string_view entry_suffix = ".qmrules";
 constexpr std::string_view byte_order_mark = "\xEF\xBB\xBF";  // SourceText drops it
@@ -163,8 +165,8 @@ private:
 // Reads the program's body back, every id checked against what it indexes.
 class ProgramReader {
 public:
-    ProgramReader(In& in, const std::vector<std::string>& files, std::size_t values, std::size_t builtins)
-        : in_(in), files_(files), values_(values), builtins_(builtins) {}
+    ProgramReader(In& in, const std::vector<std::string>& files, std::size_t values, const BuiltinRegistry& builtins)
+        : in_(in), files_(files), values_(values), builtins_(builtins.size()), registry_(builtins) {}
 
     CompiledProgram program() {
         CompiledProgram p;
@@ -178,8 +180,9 @@ public:
             c.choice = value();
             c.rank = value();
             const std::size_t keys = in_.count(4);
-            for (std::size_t k = 0; k < keys && in_.ok; ++k) c.key.push_back(in_.u32());
-            c.rank_at = in_.u32();
+            // Places among the rank predicate's arguments, of which there are keys + 1.
+            for (std::size_t k = 0; k < keys && in_.ok; ++k) c.key.push_back(in_.below(in_.u32(), keys + 1));
+            c.rank_at = in_.below(in_.u32(), keys + 1);
             if (in_.u8() != 0) c.up_to = static_cast<std::int64_t>(in_.u64());
             c.where = where();
             p.preferences.push_back(std::move(c));
@@ -212,6 +215,7 @@ private:
         t.slot = t.kind == CompiledTerm::Kind::variable ? in_.below(slot, slots_) : slot;
         t.function = BuiltinId{t.kind == CompiledTerm::Kind::call ? in_.below(function, builtins_) : function};
         t.args = terms(depth + 1);
+        if (t.kind == CompiledTerm::Kind::call && in_.ok) within_arity(t.function, t.args.size());
         return t;
     }
     std::vector<CompiledTerm> terms(std::size_t depth = 0) {
@@ -235,10 +239,18 @@ private:
         t.where = where();
         return t;
     }
+    // Builtins index their arguments: a call or test read back must have as many as the builtin takes.
+    void within_arity(BuiltinId b, std::size_t args) {
+        const Builtin& x = registry_.get(b);
+        if (args < x.min_arity || args > x.max_arity) in_.ok = false;
+    }
     std::vector<CompiledTest> tests() {
         std::vector<CompiledTest> out;
         const std::size_t n = in_.count(20);
-        for (std::size_t i = 0; i < n && in_.ok; ++i) out.push_back(test());
+        for (std::size_t i = 0; i < n && in_.ok; ++i) {
+            out.push_back(test());
+            if (in_.ok) within_arity(out.back().test, out.back().args.size());
+        }
         return out;
     }
     Slot slot() { return in_.below(in_.u32(), slots_); }
@@ -257,6 +269,7 @@ private:
             c.kind = static_cast<CompiledCondition::Kind>(kind);
             c.atom = atom();
             c.test = test();
+            if (c.kind == CompiledCondition::Kind::test && in_.ok) within_arity(c.test.test, c.test.args.size());
             c.slot = in_.u32();  // a quantified variable or an aggregate's result: a slot, or 0 unused
             if (c.slot >= std::max<std::size_t>(slots_, 1)) in_.ok = false;
             c.set = term(0);
@@ -264,7 +277,10 @@ private:
             const std::size_t atoms = in_.count(16);
             for (std::size_t k = 0; k < atoms && in_.ok; ++k) c.atoms.push_back(atom());
             c.function = BuiltinId{in_.u32()};
-            if (c.kind == CompiledCondition::Kind::aggregate) c.function = BuiltinId{in_.below(c.function.value, builtins_)};
+            if (c.kind == CompiledCondition::Kind::aggregate) {
+                c.function = BuiltinId{in_.below(c.function.value, builtins_)};
+                if (in_.ok) within_arity(c.function, 2);  // folded as function(total, value)
+            }
             c.value = term(0);
             c.start = term(0);
             const std::size_t locals = in_.count(4);
@@ -306,6 +322,7 @@ private:
     In& in_;
     const std::vector<std::string>& files_;
     std::size_t values_, builtins_;
+    const BuiltinRegistry& registry_;
     std::size_t slots_ = 0;  // the current rule's
 };
 
@@ -487,6 +504,10 @@ std::optional<std::string> cache_key(std::span<const std::string> paths, const L
 
 bool sources_unchanged(const std::vector<CachedSource>& sources) {
     for (const CachedSource& s : sources) {
+        // A rule file is a regular file: an entry naming a device or a pipe is not read (it could
+        // block or never end), only missed.
+        std::error_code ec;
+        if (!fs::is_regular_file(s.file, ec)) return false;
         const FileText now = read_file_text(s.file);
         if (!now.text) return false;
         std::string_view t = *now.text;
@@ -620,7 +641,7 @@ std::optional<DecodedProgram> decode_program(std::string_view bytes, const std::
     std::vector<std::string> files(in.count(4));
     for (std::string& f : files) f = in.str();
     if (!in.ok) return std::nullopt;
-    ProgramReader reader(in, files, out.program.values.size(), builtins.size());
+    ProgramReader reader(in, files, out.program.values.size(), builtins);
     out.program.program = reader.program();
     if (!in.ok || !in.at_end()) return std::nullopt;
     return out;

@@ -8,8 +8,12 @@
 #include "qm_atms_run.hpp"
 #include "qm/address_sanitizer.hpp"
 #include <doctest/doctest.h>
+#include <fcntl.h>
 #include <fstream>
+#include <spawn.h>
 #include <string>
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <utility>
 #include <vector>
 
@@ -93,6 +97,30 @@ TEST_CASE("cli/limits: --max-memory stops a program that needs more, exit 2, not
     CHECK(r.status == 2);
     CHECK(r.out.empty());
     CHECK(r.err == "qm-atms: error: memory limit 200M reached while running " + grow + "; raise it with --max-memory\n");
+}
+
+// The heap's reserve (cli/heap_setup.hpp, 128 MB of address space mapped before the limit is set)
+// must not let a smaller limit be overrun inside it: the process's peak resident memory, read for
+// exactly this child by wait4, stays under the limit.
+TEST_CASE("cli/limits: a --max-memory below the heap's reserve still bounds the process") {
+    posix_spawn_file_actions_t io;
+    posix_spawn_file_actions_init(&io);
+    posix_spawn_file_actions_addopen(&io, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&io, 2, "/dev/null", O_WRONLY, 0);
+    const std::string exe = dir + "/cli/qm-atms";
+    std::vector<std::string> args = {exe, "run", grow, "--max-facts", "100000000", "--max-memory", "96M"};
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    REQUIRE(posix_spawn(&pid, exe.c_str(), &io, nullptr, argv.data(), environ) == 0);
+    posix_spawn_file_actions_destroy(&io);
+    int status = 0;
+    rusage usage{};
+    REQUIRE(wait4(pid, &status, 0, &usage) == pid);
+    CHECK(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 2);
+    CHECK(usage.ru_maxrss < 96 * 1024);  // KiB
 }
 #endif
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <sys/stat.h>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -36,6 +37,7 @@ std::vector<fs::path> entries(const fs::path& dir) {
     std::error_code ec;
     for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
         if (it->path().extension() == ".qmrules") out.push_back(it->path());
+    std::sort(out.begin(), out.end());
     return out;
 }
 
@@ -69,6 +71,23 @@ TEST_CASE("every bundled Alex scene prints the same with the cache off, storing,
     const auto stored = entries(cache);
     CHECK(stored.size() >= 1);
     CHECK(stored.size() <= 2);
+    // A hit reads the entry and writes nothing: every entry is still the same file (an entry is
+    // only ever replaced by renaming a new file onto it, which would give it another inode).
+    std::vector<ino_t> before;
+    for (const fs::path& e : stored) {
+        struct stat st {};
+        REQUIRE(::stat(e.c_str(), &st) == 0);
+        before.push_back(st.st_ino);
+    }
+    for (const std::string& s : scenes) same(with_cache(cache.string(), s), with_cache("off", s));
+    const auto after = entries(cache);
+    REQUIRE(after.size() == stored.size());
+    for (std::size_t i = 0; i < after.size(); ++i) {
+        struct stat st {};
+        REQUIRE(::stat(after[i].c_str(), &st) == 0);
+        CHECK(after[i] == stored[i]);
+        CHECK(st.st_ino == before[i]);
+    }
     fs::remove_all(cache);
 }
 

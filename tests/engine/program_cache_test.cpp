@@ -102,6 +102,41 @@ TEST_CASE("the encoded laws decode to the same program, and a damaged entry is r
     CHECK(refused == tried);
 }
 
+// An entry can be intact (its checksum matches) and still not describe a program this engine can run:
+// indices past what they index, a builtin given more or fewer arguments than it takes. Such an
+// entry is refused, not run (builtins and preferences index their arguments unchecked).
+TEST_CASE("a sealed entry whose indices or arities are out of range is refused") {
+    Scratch s("ranges");
+    Diagnostics d;
+    const auto cold = load_programs(s.files, d, laws_2d());
+    REQUIRE(cold);
+    REQUIRE(!cold->program.preferences.empty());
+    const auto sealed = [&](const LoadedProgram& p) { return decode_program(encode_program("key", {}, p), "key").has_value(); };
+    CHECK(sealed(*cold));
+
+    LoadedProgram key_past = *cold;
+    auto& pref = key_past.program.preferences.front();
+    REQUIRE(!pref.key.empty());
+    pref.key.front() = static_cast<std::uint32_t>(pref.key.size() + 1);  // the rank atom has key.size() + 1 arguments
+    CHECK_FALSE(sealed(key_past));
+
+    LoadedProgram rank_past = *cold;
+    rank_past.program.preferences.front().rank_at = 1000;
+    CHECK_FALSE(sealed(rank_past));
+
+    // A builtin test with its arguments taken away.
+    LoadedProgram no_args = *cold;
+    bool found = false;
+    for (CompiledRule& r : no_args.program.rules)
+        for (CompiledCondition& c : r.conditions)
+            if (!found && c.kind == CompiledCondition::Kind::test && default_builtins().get(c.test.test).min_arity > 0) {
+                c.test.args.clear();
+                found = true;
+            }
+    REQUIRE(found);
+    CHECK_FALSE(sealed(no_args));
+}
+
 TEST_CASE("a load through the cache stores, serves what it stored, and misses once a rule file changes") {
     Scratch s("hit");
     Diagnostics d0;
