@@ -1,12 +1,14 @@
 // tests/atms/at_most_one_index_test.cpp: AtMostOneIndex's two questions against counting members,
 // on random constraints (overlapping, of 2 to 40 members) over assumptions spread across many words.
 #include "atms/at_most_one_index.hpp"
+#include "sparse_words.hpp"
 
 #include <algorithm>
 #include <doctest/doctest.h>
 #include <random>
 
 using namespace qm::atms;
+using qm::atms::test::sparse;
 
 namespace {
 Environment random_set(std::mt19937& rng, int max_size, std::uint32_t universe) {
@@ -19,21 +21,6 @@ std::uint32_t shared(const Environment& x, const Environment& y) {
     std::uint32_t n = 0;
     for (AssumptionId a : x.assumptions()) n += y.contains(a) ? 1 : 0;
     return n;
-}
-}  // namespace
-
-namespace {
-// e as SparseWords (environment.hpp): its non-zero words only, or (all_words) every word of its
-// window, zero words listed too. The vectors must outlive the view.
-SparseWords sparse(const Environment& e, bool all_words, std::vector<std::uint64_t>& words, std::vector<std::uint32_t>& index) {
-    words.clear();
-    index.clear();
-    for (std::size_t w = 0; w < e.words().size(); ++w) {
-        if (e.words()[w] == 0 && !all_words) continue;
-        words.push_back(e.words()[w]);
-        index.push_back(static_cast<std::uint32_t>(e.first_word() + w));
-    }
-    return {words, index};
 }
 }  // namespace
 

@@ -1,11 +1,13 @@
 // tests/atms/nogood_database_test.cpp: subsumption queries against a brute-force scan.
 #include "atms/nogood_database.hpp"
+#include "sparse_words.hpp"
 
 #include <algorithm>
 #include <doctest/doctest.h>
 #include <random>
 
 using namespace qm::atms;
+using qm::atms::test::sparse;
 
 namespace {
 Environment random_env(std::mt19937& rng, int max_size, std::uint32_t universe) {
@@ -19,18 +21,6 @@ std::vector<std::uint64_t> dense(const Environment& e) {
     std::vector<std::uint64_t> w(e.end_word(), 0);
     std::copy(e.words().begin(), e.words().end(), w.begin() + static_cast<std::ptrdiff_t>(e.first_word()));
     return w;
-}
-// e as SparseWords (environment.hpp): its non-zero words only, or (all_words) every word of its
-// window, zero words listed too. The vectors must outlive the view.
-SparseWords sparse(const Environment& e, bool all_words, std::vector<std::uint64_t>& words, std::vector<std::uint32_t>& index) {
-    words.clear();
-    index.clear();
-    for (std::size_t w = 0; w < e.words().size(); ++w) {
-        if (e.words()[w] == 0 && !all_words) continue;
-        words.push_back(e.words()[w]);
-        index.push_back(static_cast<std::uint32_t>(e.first_word() + w));
-    }
-    return {words, index};
 }
 }  // namespace
 

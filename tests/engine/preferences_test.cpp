@@ -19,6 +19,20 @@
 using namespace qm::engine;
 
 namespace {
+
+// The program in `text` (read as `file`) compiled and run: no diagnostic expected. An Engine can be
+// neither copied nor moved, hence the pointer.
+std::unique_ptr<Engine> run_text(const std::string& text, const std::string& file) {
+    qm::Diagnostics d;
+    ProgramSpec spec;
+    read_rule_text(text, file, spec, d);
+    auto p = compile_program(spec, d);
+    REQUIRE(p.has_value());
+    auto e = std::make_unique<Engine>(std::move(p->program), std::move(p->values));
+    e->run(d);
+    REQUIRE(!d.has_errors());
+    return e;
+}
 const char* program = R"(fact (ranked a)
 fact (ranked b)
 fact (object a)
@@ -101,14 +115,8 @@ TEST_CASE("engine/preferences: a syntax error in `prefer` is located") {
 }
 
 TEST_CASE("engine/preferences: ranks by the rank facts holding in an environment") {
-    qm::Diagnostics d;
-    ProgramSpec spec;
-    read_rule_text(program, "p.rules", spec, d);
-    auto p = compile_program(spec, d);
-    REQUIRE(p.has_value());
-    Engine e(std::move(p->program), std::move(p->values));
-    e.run(d);
-    REQUIRE(!d.has_errors());
+    const auto engine = run_text(program, "p.rules");
+    Engine& e = *engine;
     REQUIRE(e.choice_sets().size() == 3);
     // Which set is whose, and which member stands for which direction.
     std::map<std::string, std::vector<qm::atms::AssumptionId>> set_of;
@@ -157,14 +165,8 @@ rule blocked
   then false
 prefer (points ?x ?d) by (near ?x ?d ?k) up to 2
 )";
-    qm::Diagnostics d;
-    ProgramSpec spec;
-    read_rule_text(vane, "vane.rules", spec, d);
-    auto p = compile_program(spec, d);
-    REQUIRE(p.has_value());
-    Engine e(std::move(p->program), std::move(p->values));
-    e.run(d);
-    REQUIRE(!d.has_errors());
+    const auto engine = run_text(vane, "vane.rules");
+    Engine& e = *engine;
     REQUIRE(e.choice_sets().size() == 1);
     const auto& set = e.choice_sets()[0];
     auto preferred = [&](qm::atms::EnvId base) {
@@ -208,14 +210,8 @@ TEST_CASE("engine/preferences: a rank table over reference assumptions equals br
         }
         text += "rule near\n  when (allow ?o ?r) (dist ?r ?d ?k)\n  then (near ?o ?d ?k)\n";
         text += "prefer (go ?o ?d) by (near ?o ?d ?k) up to " + std::to_string(cap) + "\n";
-        qm::Diagnostics d;
-        ProgramSpec spec;
-        read_rule_text(text, "t.rules", spec, d);
-        auto p = compile_program(spec, d);
-        REQUIRE(p.has_value());
-        Engine e(std::move(p->program), std::move(p->values));
-        e.run(d);
-        REQUIRE(!d.has_errors());
+        const auto engine = run_text(text, "t.rules");
+        Engine& e = *engine;
         REQUIRE(e.choice_sets().size() == 1);
         const auto& set = e.choice_sets()[0];
         const CompiledPreference* pref = choosing_preference(e, set);
@@ -253,13 +249,8 @@ TEST_CASE("engine/preferences: a rank table over reference assumptions equals br
         }
     }
     // A set no preference chooses among has no declaration.
-    qm::Diagnostics d;
-    ProgramSpec spec;
-    read_rule_text("fact (object a)\nrule choose\n  when (object ?o)\n  then [exactly one ?d in {n e}: assume (go ?o ?d)]\n", "u.rules", spec, d);
-    auto p = compile_program(spec, d);
-    REQUIRE(p.has_value());
-    Engine e(std::move(p->program), std::move(p->values));
-    e.run(d);
+    const auto engine = run_text("fact (object a)\nrule choose\n  when (object ?o)\n  then [exactly one ?d in {n e}: assume (go ?o ?d)]\n", "u.rules");
+    Engine& e = *engine;
     REQUIRE(e.choice_sets().size() == 1);
     CHECK(choosing_preference(e, e.choice_sets()[0]) == nullptr);
     CHECK(choice_set_rank_table(e, e.choice_sets()[0], {}) == std::vector<std::vector<std::int64_t>>{{0, 0}});
