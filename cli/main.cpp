@@ -17,6 +17,7 @@
 #include <new>
 #include <string>
 #include <vector>
+#include <unistd.h>
 
 namespace {
 
@@ -54,6 +55,9 @@ int main(int argc, char** argv) {
         }
         // envision, draw, explore, --emit-def, --places, a metric scene (cli/geometry_dispatch.hpp)
         if (qm::cli::needs_geometry(args)) return qm::cli::geometry_command(argv, args, std::cin, std::cout, std::cerr, doing);
+        // a session on a terminal: line editing is qm-atms-geometry's (cli/geometry_dispatch.hpp)
+        if (qm::cli::interactive_on_terminal(args, isatty(STDIN_FILENO) != 0))
+            return qm::cli::terminal_session(argv, args, std::cin, std::cout, std::cerr, doing);
         doing = "analysing " + args[0];
         return qm::cli::scene_command(args, std::cin, std::cout, std::cerr);
     } catch (const qm::LimitReached& e) {  // a resource limit (cli/resource_limits.hpp): bad input at these settings
