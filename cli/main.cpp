@@ -8,6 +8,7 @@
 #include "geometry_command.hpp"
 #include "geometry_dispatch.hpp"
 #include "geometry_usage.hpp"
+#include "executable_prefault.hpp"
 #include "heap_setup.hpp"
 #include "resource_limits.hpp"
 #include "run_command.hpp"
@@ -45,6 +46,7 @@ int main(int argc, char** argv) {
             return 0;
         }
         qm::cli::prepare_heap();  // every command below may grow a large heap (cli/heap_setup.hpp)
+        qm::cli::prefault_executable();  // and touches much of the code (cli/executable_prefault.hpp)
         if (args[0] == "run") {
             doing = "running " + (args.size() > 1 ? args[1] : std::string("a rule program"));
             return qm::cli::run_command(std::span<const std::string>(args).subspan(1), std::cout, std::cerr);
