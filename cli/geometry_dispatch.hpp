@@ -10,9 +10,10 @@
 //               - `envision`, `draw`, `explore`, `--emit-def`, `--places` (the first argument);
 //               - a scene analysis (`qm-atms SCENE [options]`, with -i too) whose scene file is a
 //                 metric scene: it opens with `(Defmechanism` (is_metric_scene(); --config is only
-//                 valid there). The interactive session of an Alex scene stays in the light
-//                 executable: its queries (cli/session.hpp) work on the loaded analysis and
-//                 cannot open a metric scene, so nothing in it can reach the geometry.
+//                 valid there). The interactive session of an Alex scene needs no geometry:
+//                 its queries (cli/session.hpp) work on the loaded analysis and cannot open a
+//                 metric scene (read from a terminal it is handed on all the same, for its line
+//                 editing: interactive_on_terminal() below).
 //             and false for everything else: `run`, `check`, `--help`, an Alex scene, and a command
 //             line the light executable rejects anyway (a bad option, an unreadable scene file),
 //             whose message is the same text in both.
