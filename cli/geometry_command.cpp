@@ -31,4 +31,11 @@ int geometry_command(char** argv, std::span<const std::string> args, std::istrea
     return scene_command(args, in, out, err, &bridge::read_scene_at_config);
 }
 
+int terminal_session(char** argv, std::span<const std::string> args, std::istream& in, std::ostream& out, std::ostream& err,
+                     std::string& doing) {
+    (void)argv;  // this executable edits lines itself (cli/line_editing_libedit.cpp)
+    doing = "analysing " + args[0];
+    return scene_command(args, in, out, err);
+}
+
 }  // namespace qm::cli

@@ -41,4 +41,14 @@ bool needs_geometry(std::span<const std::string> args) {
     return file.text && is_metric_scene(*file.text);
 }
 
+bool interactive_on_terminal(std::span<const std::string> args, bool input_is_terminal) {
+    if (!input_is_terminal || args.empty()) return false;
+    constexpr std::array<std::string_view, 4> other_commands = {"run", "check", "--help", "-h"};
+    for (std::string_view c : other_commands)
+        if (args[0] == c) return false;
+    std::ostringstream ignored;  // a command line the scene command rejects is left to it
+    const auto options = parse_scene_options(args, ignored);
+    return options && options->interactive;
+}
+
 }  // namespace qm::cli

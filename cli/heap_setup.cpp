@@ -26,16 +26,36 @@ void prepare_heap() noexcept {
     // the heap.
     constexpr int mmap_threshold = 32 << 20;
     constexpr int default_top_pad = 128 << 10;  // glibc's M_TOP_PAD default (DEFAULT_TOP_PAD)
+    constexpr std::uintptr_t huge_page = std::uintptr_t{2} << 20;  // x86-64's transparent huge page
     if (mallopt(M_MMAP_THRESHOLD, mmap_threshold) == 0) return;
     // No trimming (not even of the reserve, free at first): a trimmed and regrown break would be a
     // new mapping without the advice.
     mallopt(M_TRIM_THRESHOLD, 4 * reserve);
+    // The reserve's body starts at a huge-page boundary. The break starts wherever the kernel put
+    // it, and the part of the segment below the first 2 MiB boundary can only have 4 KiB pages: a
+    // scene's first megabyte or so, all of a small one, was faulted in page by page, at about 10 us
+    // a fault on this machine's virtual machine against about 50 us for a whole 2 MiB huge page
+    // (docs/perf/startup.md, "Fourth pass": 209 heap faults of block.def). So the top the C library
+    // holds (what the static initialisers and main left) is trimmed and the break moved up to just
+    // below the next boundary; glibc's malloc takes a break moved by someone else as a gap it never
+    // touches (its "foreign sbrk" case), so the gap costs address space only. Every byte malloc
+    // writes while growing the segment (the probe's header and that of the top after it) must fall
+    // below the boundary: a page touched above it before the advice would be a 4 KiB page, and its
+    // 2 MiB range would stay in 4 KiB pages. Hence a probe only just larger than all the free
+    // memory malloc holds (so that no free block can serve it and the break must grow), placed so
+    // that it ends a page below the boundary.
+    malloc_trim(0);
+    const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+    const std::size_t probe_size = (mallinfo2().fordblks + page + 15) & ~std::size_t{15};
+    const auto brk_end = reinterpret_cast<std::uintptr_t>(sbrk(0));
+    const std::uintptr_t below = (probe_size + 2 * page - 1) & ~(page - 1);  // the probe, headers, slack
+    const std::uintptr_t start = ((brk_end + below + huge_page - 1) & ~(huge_page - 1)) - below;
+    if (start != brk_end && sbrk(static_cast<intptr_t>(start - brk_end)) == reinterpret_cast<void*>(-1)) return;
     mallopt(M_TOP_PAD, reserve);
-    // A block larger than the initial heap's free top makes malloc extend the break by block + pad.
-    void* probe = std::malloc(1 << 20);
+    // Larger than any free block and the top: malloc extends the break by block + pad.
+    void* probe = std::malloc(probe_size);
     mallopt(M_TOP_PAD, default_top_pad);
     if (probe == nullptr) return;
-    const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
     const auto from = reinterpret_cast<std::uintptr_t>(probe) & ~(page - 1);
     const auto to = reinterpret_cast<std::uintptr_t>(sbrk(0));
     std::free(probe);  // back to the heap's top, kept (M_TRIM_THRESHOLD)

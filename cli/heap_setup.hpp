@@ -6,7 +6,10 @@
 //             engine's facts): on this machine's kernel (THP "madvise" mode, a virtual machine) every
 //             first touch of a 4 KiB page was a page fault, 16.5 k of them for the stack of 200 blocks,
 //             about a third of its CPU time (docs/perf/alex.md, "Huge pages for the heap"). With the
-//             heap in 2 MiB pages the same run takes about 4 k faults. It is the effect of glibc's
+//             heap in 2 MiB pages the same run takes about 4 k faults. The reserve's body starts at
+//             a 2 MiB boundary (the break is moved up to it first), so that a small scene's heap,
+//             which lived below the first boundary in 4 KiB pages, is one huge page too: block.def
+//             209 -> 0 heap faults of 4 KiB (docs/perf/startup.md, "Fourth pass"). It is the effect of glibc's
 //             tunable glibc.malloc.hugetlb=1, obtained without asking users to set an environment
 //             variable.
 // What it changes: glibc's M_MMAP_THRESHOLD (large blocks stay in the heap instead of separate

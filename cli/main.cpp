@@ -8,6 +8,7 @@
 #include "geometry_command.hpp"
 #include "geometry_dispatch.hpp"
 #include "geometry_usage.hpp"
+#include "executable_prefault.hpp"
 #include "heap_setup.hpp"
 #include "resource_limits.hpp"
 #include "run_command.hpp"
@@ -17,6 +18,7 @@
 #include <new>
 #include <string>
 #include <vector>
+#include <unistd.h>
 
 namespace {
 
@@ -44,6 +46,7 @@ int main(int argc, char** argv) {
             return 0;
         }
         qm::cli::prepare_heap();  // every command below may grow a large heap (cli/heap_setup.hpp)
+        qm::cli::prefault_executable();  // and touches much of the code (cli/executable_prefault.hpp)
         if (args[0] == "run") {
             doing = "running " + (args.size() > 1 ? args[1] : std::string("a rule program"));
             return qm::cli::run_command(std::span<const std::string>(args).subspan(1), std::cout, std::cerr);
@@ -54,6 +57,9 @@ int main(int argc, char** argv) {
         }
         // envision, draw, explore, --emit-def, --places, a metric scene (cli/geometry_dispatch.hpp)
         if (qm::cli::needs_geometry(args)) return qm::cli::geometry_command(argv, args, std::cin, std::cout, std::cerr, doing);
+        // a session on a terminal: line editing is qm-atms-geometry's (cli/geometry_dispatch.hpp)
+        if (qm::cli::interactive_on_terminal(args, isatty(STDIN_FILENO) != 0))
+            return qm::cli::terminal_session(argv, args, std::cin, std::cout, std::cerr, doing);
         doing = "analysing " + args[0];
         return qm::cli::scene_command(args, std::cin, std::cout, std::cerr);
     } catch (const qm::LimitReached& e) {  // a resource limit (cli/resource_limits.hpp): bad input at these settings

@@ -6,10 +6,14 @@
 # ratio of medians to the first build. With --callgrind, also each run's instruction count under
 # valgrind's callgrind (repeatable where wall times are not), following an exec into
 # qm-atms-geometry (--trace-children), and the share spent in the dynamic loader's relocation.
-# /bin/true is timed alongside as the floor of a process start on this machine.
+# /bin/true is timed alongside as the floor of a process start on this machine (in the same
+# interleaving, each command line's own /bin/true median and each build's ratio to it), with the
+# median of minor page faults (wait4's ru_minflt) of each. --cache hit gives each build its own
+# compiled-rules cache folder, filled by one run first (every timed run a hit); --cache off sets
+# QM_RULE_CACHE=off; default: the environment as it is.
 # Prints numbers; passes or fails nothing (STYLE.md section 8).
 #
-# Usage: bench/startup/startup.py [--reps N] [--callgrind] [--rules DIR] [--all-alex] [--only NAME] QM_ATMS...
+# Usage: bench/startup/startup.py [--reps N] [--callgrind] [--rules DIR] [--all-alex] [--only NAME] [--cache hit|off] QM_ATMS...
 #   e.g. bench/startup/startup.py --reps 101 /tmp/old/qm-atms build/cli/qm-atms
 #   Each QM_ATMS is an executable (the light qm-atms finds qm-atms-geometry beside it). The laws
 #   are given with --rules (default: this tree's rules/) so that every build reads the same.
@@ -17,6 +21,7 @@ import argparse
 import glob
 import os
 import re
+import shutil
 import statistics
 import subprocess
 import sys
@@ -32,6 +37,7 @@ parser.add_argument("--callgrind", action="store_true")
 parser.add_argument("--rules", default=os.path.join(root, "rules"))
 parser.add_argument("--only", help="run only the command lines whose name contains this")
 parser.add_argument("--all-alex", action="store_true", help="every scene of scenarios/alex, not only the three below")
+parser.add_argument("--cache", choices=["env", "hit", "off"], default="env")
 parser.add_argument("builds", nargs="+")
 a = parser.parse_args()
 
@@ -54,12 +60,23 @@ if a.only:
     commands = [c for c in commands if a.only in c[0]]
 
 
-def spawn(argv):
+cache_root = tempfile.mkdtemp(prefix="qm-startup-cache-")
+environments = {}
+for i, b in enumerate(a.builds):
+    env = dict(os.environ)
+    if a.cache == "off":
+        env["QM_RULE_CACHE"] = "off"
+    elif a.cache == "hit":
+        env["QM_RULE_CACHE"] = os.path.join(cache_root, str(i))
+    environments[b] = env
+
+
+def spawn(argv, env=os.environ):
     start = time.perf_counter()
-    pid = os.posix_spawn(argv[0], argv, os.environ, file_actions=[(os.POSIX_SPAWN_OPEN, 1, "/dev/null", os.O_WRONLY, 0),
-                                                                  (os.POSIX_SPAWN_OPEN, 2, "/dev/null", os.O_WRONLY, 0)])
+    pid = os.posix_spawn(argv[0], argv, env, file_actions=[(os.POSIX_SPAWN_OPEN, 1, "/dev/null", os.O_WRONLY, 0),
+                                                           (os.POSIX_SPAWN_OPEN, 2, "/dev/null", os.O_WRONLY, 0)])
     _, status, usage = os.wait4(pid, 0)
-    return time.perf_counter() - start, usage.ru_utime + usage.ru_stime, status
+    return time.perf_counter() - start, usage.ru_utime + usage.ru_stime, status, usage.ru_minflt
 
 
 def instructions(argv):
@@ -81,16 +98,23 @@ def instructions(argv):
         return total, reloc
 
 
-print("# %d runs each, interleaved; load at start %s; %s" % (a.reps, " ".join(open("/proc/loadavg").read().split()[:3]),
+print("# %d runs each, interleaved; cache %s; load at start %s; %s" % (a.reps, a.cache, " ".join(open("/proc/loadavg").read().split()[:3]),
                                                             time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())))
 true_runs = []
 for name, args in commands:
     runs = {b: [] for b in a.builds}
-    for _ in range(a.reps):
-        for b in a.builds:
-            runs[b].append(spawn([b] + args))
-        true_runs.append(spawn(["/bin/true"]))
-    print("\n## %s   (load now %s)" % (name, " ".join(open("/proc/loadavg").read().split()[:3])))
+    own_true = []
+    for b in a.builds:  # the cache entry stored before the timed runs (--cache hit)
+        spawn([b] + args, environments[b])
+    for rep in range(a.reps):
+        order = a.builds if rep % 2 == 0 else a.builds[::-1]
+        for b in order:
+            runs[b].append(spawn([b] + args, environments[b]))
+        own_true.append(spawn(["/bin/true"]))
+    true_runs += own_true
+    true_med = statistics.median(r[0] * 1000 for r in own_true)
+    print("\n## %s   (load now %s; /bin/true median %.2f ms, %d minor faults)" % (
+        name, " ".join(open("/proc/loadavg").read().split()[:3]), true_med, statistics.median(r[3] for r in own_true)))
     base = None
     for b in a.builds:
         wall = [r[0] * 1000 for r in runs[b]]
@@ -98,7 +122,8 @@ for name, args in commands:
         bad = sum(1 for r in runs[b] if r[2] != 0)
         med = statistics.median(wall)
         base = base or med
-        line = "%-44s wall median %7.2f ms (min %6.2f) | cpu median %6.2f ms | x%.2f" % (b, med, min(wall), statistics.median(cpu), med / base)
+        line = "%-44s wall median %7.2f ms (min %6.2f) | cpu median %6.2f ms | x%.2f | /bin/true x%.2f | %d faults" % (
+            b, med, min(wall), statistics.median(cpu), med / base, med / true_med, statistics.median(r[3] for r in runs[b]))
         if bad:
             line += "  (%d non-zero exits!)" % bad
         if a.callgrind:
@@ -107,3 +132,4 @@ for name, args in commands:
         print(line)
 wall = [r[0] * 1000 for r in true_runs]
 print("\n/bin/true: wall median %.2f ms (min %.2f), %d runs" % (statistics.median(wall), min(wall), len(wall)))
+shutil.rmtree(cache_root, ignore_errors=True)

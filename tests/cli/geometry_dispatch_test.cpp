@@ -73,6 +73,20 @@ TEST_CASE("cli/geometry_dispatch: a scene needs the geometry stack when its file
     CHECK_FALSE(needs({cam, alex_scene("block.def")}));  // two scenes: refused as above
 }
 
+TEST_CASE("cli/geometry_dispatch: interactive_on_terminal is an Alex scene's -i reading a terminal") {
+    using qm::cli::interactive_on_terminal;
+    const std::string gears = alex_scene("gears.def");
+    auto on = [](std::vector<std::string> args, bool terminal) { return interactive_on_terminal(args, terminal); };
+    CHECK(on({gears, "-i"}, true));
+    CHECK(on({gears, "--interactive", "--json"}, true));
+    CHECK_FALSE(on({gears, "-i"}, false));  // a pipe or a file: the light executable reads it
+    CHECK_FALSE(on({gears}, true));
+    CHECK_FALSE(on({gears, "-i", "--bogus"}, true));  // rejected by the scene command itself
+    CHECK_FALSE(on({"run", gears, "-i"}, true));
+    CHECK_FALSE(on({"--help"}, true));
+    CHECK_FALSE(on({}, true));
+}
+
 TEST_CASE("cli/geometry_dispatch: is_metric_scene reads past a byte-order mark, blanks and comments") {
     CHECK(is_metric_scene("(Defmechanism cam)"));
     CHECK(is_metric_scene("\xEF\xBB\xBF; a comment\n  ; another\n\n( DEFMECHANISM cam)"));

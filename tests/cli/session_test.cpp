@@ -8,6 +8,7 @@
 #include <chrono>
 #include <csignal>
 #include <doctest/doctest.h>
+#include <filesystem>
 #include <fstream>
 #include <poll.h>
 #include <thread>
@@ -34,13 +35,12 @@ qm::test::Run session(const std::string& args, const std::string& input) {
 // qm-atms on a pseudo-terminal: what it writes, read until `until` appears (or 20 s pass).
 class Terminal {
 public:
-    explicit Terminal(const std::vector<std::string>& args) {
+    explicit Terminal(const std::vector<std::string>& args, const std::string& exe = std::string(QM_BINARY_DIR) + "/cli/qm-atms") {
         pid_ = forkpty(&fd_, nullptr, nullptr, nullptr);
         REQUIRE(pid_ >= 0);
         if (pid_ == 0) {
             setenv("TERM", "xterm", 1);
             std::vector<char*> argv;
-            const std::string exe = std::string(QM_BINARY_DIR) + "/cli/qm-atms";
             argv.push_back(const_cast<char*>(exe.c_str()));
             for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
             argv.push_back(nullptr);
@@ -105,6 +105,8 @@ public:
         return -1;
     }
 
+    [[nodiscard]] pid_t pid() const noexcept { return pid_; }
+
 private:
     int fd_ = -1;
     pid_t pid_ = -1;
@@ -166,6 +168,35 @@ TEST_CASE("cli/session: on a terminal: prompt, history with the Up arrow, a newl
     CHECK(again.find("unknown command") == std::string::npos);
     CHECK(t.end_input() == 0);  // Ctrl-D on an empty line: the end of the input
     CHECK(t.keep_.find('\n') != std::string::npos);
+}
+
+// The light qm-atms is linked statically and has no line editing: a session on a terminal is handed
+// to qm-atms-geometry (cli/geometry_dispatch.hpp, interactive_on_terminal), which has it; the
+// process at the prompt is qm-atms-geometry. From a pipe, the session stays in qm-atms.
+TEST_CASE("cli/session: on a terminal the session runs in qm-atms-geometry; from a pipe in qm-atms") {
+    Terminal t({scene("gears.def"), "-i"});
+    CHECK(t.read_until("qm-atms[1]> ").find("Type help.") != std::string::npos);
+    std::error_code ec;
+    const auto exe = std::filesystem::read_symlink("/proc/" + std::to_string(t.pid()) + "/exe", ec);
+    CHECK(!ec);
+    CHECK(exe.filename() == "qm-atms-geometry");
+    CHECK(t.end_input() == 0);
+    // Without qm-atms-geometry beside it, the light one says so (exit 1) rather than run a session
+    // without editing.
+    const std::string dir = std::string(QM_BINARY_DIR) + "/session_light_alone";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::filesystem::copy_file(std::string(QM_BINARY_DIR) + "/cli/qm-atms", dir + "/qm-atms");
+    Terminal alone({scene("gears.def"), "-i"}, dir + "/qm-atms");
+    CHECK(alone.read_until("\x01never", 5).find("cannot run '" + dir + "/qm-atms-geometry': No such file or directory") !=
+          std::string::npos);
+    CHECK(alone.wait_exit() == 1);
+    // The same copy reading a pipe runs the session itself.
+    const std::string in = dir + "/input";
+    std::ofstream(in) << "motions\n";
+    const auto piped = qm::test::run_executable(dir + "/qm-atms", scene("gears.def") + " -i <" + in, "session");
+    CHECK(piped.status == 0);
+    CHECK(piped.out.find("Motions: 6 consistent combinations") != std::string::npos);
 }
 
 // Issue 17 item 5: `with` answers from the labels already computed when what it adds is a contact of
