@@ -221,8 +221,8 @@ private:
                 if (code == 0) continue;
                 std::string options;
                 for (const auto x : s.motions[o]) options += std::string(options.empty() ? "" : " ") + sign_word(x);
-                reasons_.push_back("part " + object_names_[o] + " cannot move " + sign_word(t.motions[o]) + " after this step, moving " +
-                                   sign_word(current_.motions[o]) + " now with the step allowing it " + options + " (" + cite(code) + ")");
+                reasons_.push_back("part " + object_names_[o] + " cannot move " + sign_word(t.motions[o]) + " after this step: it moves " +
+                                   sign_word(current_.motions[o]) + " now and the step allows it " + options + " (" + cite(code) + ")");
             }
             return;
         }
