@@ -232,6 +232,7 @@ bool read_settling(engine::Engine& e, const g::Mechanism& m, const Chain& chain,
                                       " after a step but assume no (step-allows O H) for each of its motions (rules/clock/nearness.rules)");
                 return false;
             }
+        engine::Refutations refutations(e);
         std::vector<atms::AssumptionId> env;
         for (std::uint8_t mask = 0; mask < 8; ++mask)
             for (std::int8_t c = -1; c <= 1; ++c)
@@ -242,7 +243,7 @@ bool read_settling(engine::Engine& e, const g::Mechanism& m, const Chain& chain,
                         env.push_back(*now[o][static_cast<std::size_t>(c + 1)]);
                         env.push_back(f == -2 ? *none[o] : *fixes[o][static_cast<std::size_t>(f + 1)]);
                         env.push_back(*next[o][static_cast<std::size_t>(x + 1)]);
-                        const auto refuted = engine::refuting_rule(e, e.atms().environment(env));
+                        const auto refuted = refutations.of(e.atms().environment(env));
                         std::optional<ChainTables::Refuter> r;
                         if (refuted) r = ChainTables::Refuter{refuted->rule, refuted->where.file + ":" + std::to_string(refuted->where.line)};
                         tables.set_settling(o, mask, c, f == -2 ? std::nullopt : std::optional<std::int8_t>(f), x, r);

@@ -1,4 +1,4 @@
-// tests/engine/consistency_test.cpp: engine/consistency.hpp tells whether an environment is
+// tests/engine/consistency_test.cpp: engine/consistency.hpp's Refutations tell whether an environment is
 // consistent and, if not, names the rule whose `false` refutes it and where it is written; checked
 // against brute force over every subset of a small program's assumptions.
 #include "engine/consistency.hpp"
@@ -42,9 +42,10 @@ rule lit-excludes-c
   then false
 )";
 
-TEST_CASE("refuting_rule: nothing for a consistent environment, else the rule and line of a nogood within it") {
+TEST_CASE("Refutations: nothing for a consistent environment, else the rule and line of a nogood within it") {
     const auto engine = run_text(program, "c.rules");
     Engine& e = *engine;
+    Refutations refutations(e);
     std::vector<qm::atms::AssumptionId> on;
     for (const char* s : {"a", "b", "c", "d"}) {
         const ValueId arg[] = {e.values().symbol(s)};
@@ -60,7 +61,7 @@ TEST_CASE("refuting_rule: nothing for a consistent environment, else the rule an
             if (mask >> j & 1U) env.push_back(on[j]);
         const bool a = mask & 1U, b = mask & 2U, c = mask & 4U, d = mask & 8U;
         const bool ab = a && b, cd = c && d, bc = b && c;
-        const auto r = refuting_rule(e, e.atms().environment(env));
+        const auto r = refutations.of(e.atms().environment(env));
         CHECK(r.has_value() == (ab || cd || bc));
         if (!r) continue;
         CHECK(r->where.file == "c.rules");
