@@ -38,6 +38,12 @@ inline constexpr const char* motion = "motion";                  // (motion O M)
 inline constexpr const char* blocked_motion = "blocked-motion";  // (blocked-motion P PLACE V)
 inline constexpr const char* arrival = "arrival";                // (arrival P PLACE HOW V AFTER)
 inline constexpr const char* step_allows = "step-allows";        // (step-allows O H): an assumption, nearness.rules
+// One object's situation in a hypothesised step, each an assumption (settling.rules).
+inline constexpr const char* step_forbids = "step-forbids";          // (step-forbids O H)
+inline constexpr const char* motion_now = "motion-now";              // (motion-now O C)
+inline constexpr const char* collision_fixes = "collision-fixes";    // (collision-fixes O F)
+inline constexpr const char* no_collision = "no-collision";          // (no-collision O)
+inline constexpr const char* next_motion = "next-motion";            // (next-motion O M)
 inline constexpr const char* step = "step";                      // (step S DURATION CAUSE)
 inline constexpr const char* place_option = "place-option";      // (place-option S P NEXT HOW)
 inline constexpr const char* motion_option = "motion-option";    // (motion-option S O M)

@@ -1,5 +1,6 @@
 // envision/chain_tables.cpp
 #include "envision/chain_tables.hpp"
+#include "qm/assert.hpp"
 #include <algorithm>
 
 namespace qm::envision {
@@ -39,6 +40,22 @@ const std::vector<geometry::QualDirection>& ChainTables::arrival(std::size_t pai
 void ChainTables::set_preference_rank(std::size_t object, std::uint8_t allowed, std::int8_t m, std::int64_t rank) {
     if (preference_.size() <= object) preference_.resize(object + 1, {});
     preference_[object][allowed & 7U][idx(m)] = rank;
+}
+
+void ChainTables::set_settling(std::size_t object, std::uint8_t allowed, std::int8_t now, std::optional<std::int8_t> fix,
+                               std::int8_t next, const std::optional<Refuter>& refuted) {
+    if (settling_.size() <= object) settling_.resize(object + 1, {});
+    std::uint8_t code = 0;
+    if (refuted) {
+        auto it = std::find(refuters_.begin(), refuters_.end(), *refuted);
+        if (it == refuters_.end()) {
+            QM_REQUIRE(refuters_.size() < 255, "at most 255 refuting rules in a settling table");
+            refuters_.push_back(*refuted);
+            it = refuters_.end() - 1;
+        }
+        code = static_cast<std::uint8_t>(it - refuters_.begin() + 1);
+    }
+    settling_[object][allowed & 7U][idx(now)][fix ? idx(*fix) + 1 : 0][idx(next)] = code;
 }
 
 }  // namespace qm::envision

@@ -30,7 +30,7 @@ struct ChainEnvisionment {
     Chain chain;
     StateIndex states{{}};
     std::vector<Transition> transitions;  // sorted by from, to, duration
-    ChainTables tables;                   // the laws' arrivals and nearness ranks (for questions)
+    ChainTables tables;                   // the laws' arrivals, nearness ranks and settling (for questions)
     BehaviourGraph graph;
     std::size_t nogoods = 0;              // minimal nogoods of the state space (Law 2, linkage, ...)
     std::vector<bool> shown;              // empty: every state; else the states to print (--from)

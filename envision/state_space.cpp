@@ -1,6 +1,7 @@
 // envision/state_space.cpp: states as ATMS interpretations (thesis Def 35, Figure 8.4, 8.2.3).
 #include "envision/state_space.hpp"
 #include "bridge/clock_vocabulary.hpp"
+#include "engine/consistency.hpp"
 #include "engine/preferences.hpp"
 #include "envision/fact_reader.hpp"
 #include "qm/assert.hpp"
@@ -104,24 +105,52 @@ void read_tables(engine::Engine& e, std::span<const bridge::PairPlaces> pairs, c
     });
 }
 
+// Where the laws make fact f (the rule, or the item, of its first justification), for errors.
+SourceLocation where_made(const engine::Engine& e, engine::FactId f) {
+    for (const atms::JustId j : e.atms().justifications(e.node(f))) {
+        const engine::Firing& firing = e.firing(e.atms().justification(j).informant);
+        if (firing.where) return *firing.where;
+    }
+    return {"<envision>", 1, 1};
+}
+
+// Per chain object and motion, the assumption (PREDICATE O H) the laws make (bridge vocabulary);
+// a fact of the predicate that is not an assumption, or not of two arguments, is an error of the
+// laws, located at the rule that concludes it.
+using PerMotion = std::vector<std::array<std::optional<atms::AssumptionId>, 3>>;
+std::optional<PerMotion> per_motion(engine::Engine& e, const std::map<std::string, std::size_t>& object_index, const char* predicate,
+                                    std::size_t objects, Diagnostics& diagnostics) {
+    const FactReader read(e, std::nullopt);
+    PerMotion out(objects);
+    for (const engine::FactId f : e.facts_of(e.values().symbol(predicate))) {
+        const engine::Fact& fact = e.facts().fact(f);
+        const auto a = e.assumption(f);
+        if (fact.args.size() != 2 || !a) {
+            diagnostics.error(where_made(e, f), "the laws conclude " + e.print(f) + ", but the envisioner reads (" + predicate +
+                                                    " O H) only as an assumption, one for each object and motion");
+            return std::nullopt;
+        }
+        const auto it = object_index.find(read.symbol(fact.args[0]));
+        if (it != object_index.end()) out[it->second][static_cast<std::size_t>(read.sign(fact.args[1]) + 1)] = *a;
+    }
+    return out;
+}
+
+std::map<std::string, std::size_t> object_indices(const g::Mechanism& m, const Chain& chain) {
+    std::map<std::string, std::size_t> out;
+    for (std::size_t k = 0; k < chain.objects.size(); ++k) out[m.parts[chain.objects[k]].name] = k;
+    return out;
+}
+
 // The laws' preference between hypothesised next states (rules/clock/nearness.rules: a `prefer` on
 // the motion choice sets, ranked in the environment of the motions a step allows, each an assumption
 // (step-allows O H)): read once per chain as a table by object, allowed motions and motion, so that
-// the successor step (successors.hpp) applies it by lookup.
-void read_preference(engine::Engine& e, const g::Mechanism& m, const Chain& chain, const OrderedSets& ordered, ChainTables& tables) {
-    const FactReader read(e, std::nullopt);
-    std::map<std::string, std::size_t> object_index;
-    for (std::size_t k = 0; k < chain.objects.size(); ++k) object_index[m.parts[chain.objects[k]].name] = k;
-    // references[o][idx(h)]: the assumption (step-allows o h).
-    std::vector<std::array<std::optional<atms::AssumptionId>, 3>> references(chain.objects.size());
-    const engine::ValueId allows = e.values().symbol(v::step_allows);
-    for (const engine::FactId f : e.facts_of(allows)) {
-        const engine::Fact& fact = e.facts().fact(f);
-        const auto a = e.assumption(f);
-        if (fact.args.size() != 2 || !a) throw InternalError("the laws conclude " + e.print(f) + ", expected the assumption (step-allows O H)");
-        const auto it = object_index.find(read.symbol(fact.args[0]));
-        if (it != object_index.end()) references[it->second][static_cast<std::size_t>(read.sign(fact.args[1]) + 1)] = *a;
-    }
+// the successor step (successors.hpp) applies it by lookup. A preference the laws cannot rank that
+// way is an error at the `prefer` declaration.
+bool read_preference(engine::Engine& e, const g::Mechanism& m, const Chain& chain, const OrderedSets& ordered, ChainTables& tables,
+                     Diagnostics& diagnostics) {
+    const auto references = per_motion(e, object_indices(m, chain), v::step_allows, chain.objects.size(), diagnostics);
+    if (!references) return false;
     for (std::size_t k = 0; k < ordered.sets.size(); ++k) {
         const auto& meaning = ordered.meaning[k];
         if (meaning.empty() || meaning.front().is_place) continue;
@@ -130,9 +159,13 @@ void read_preference(engine::Engine& e, const g::Mechanism& m, const Chain& chai
         tables.preference_where = p->where.file + ":" + std::to_string(p->where.line);
         const std::size_t o = meaning.front().index;
         std::vector<atms::AssumptionId> refs;
-        for (const auto& r : references[o]) {
-            if (!r) throw InternalError("the laws prefer among the motions of " + m.parts[chain.objects[o]].name + " (" +
-                                        tables.preference_where + ") but assume no (step-allows O H) for each of its motions");
+        for (const auto& r : (*references)[o]) {
+            if (!r) {
+                diagnostics.error(p->where, "the laws prefer among the motions of " + m.parts[chain.objects[o]].name +
+                                                " but assume no (step-allows O H) for each of its motions: the envisioner ranks a "
+                                                "motion in the environment of the motions a step allows (rules/clock/nearness.rules)");
+                return false;
+            }
             refs.push_back(*r);
         }
         const auto table = engine::choice_set_rank_table(e, ordered.sets[k], refs);
@@ -140,6 +173,83 @@ void read_preference(engine::Engine& e, const g::Mechanism& m, const Chain& chai
             for (std::size_t i = 0; i < meaning.size(); ++i)
                 tables.set_preference_rank(o, static_cast<std::uint8_t>(mask), meaning[i].motion, table[mask][i]);
     }
+    return true;
+}
+
+// Which motion each object may have after a step (rules/clock/settling.rules): for every situation
+// of the object in a step (the motions the step allows it and those it forbids, its motion now, the
+// motion a collision fixes or no collision) and every motion after, whether that environment of
+// assumptions is consistent, and if not the rule refuting it (engine/consistency.hpp); read once per
+// chain, looked up by the successor step. An object the laws make none of these assumptions for is
+// settled by nothing (every motion allowed); one with only some of them is an error of the laws.
+bool read_settling(engine::Engine& e, const g::Mechanism& m, const Chain& chain, ChainTables& tables, Diagnostics& diagnostics) {
+    const auto objects = object_indices(m, chain);
+    const std::size_t n = chain.objects.size();
+    const char* const names[] = {v::step_allows, v::step_forbids, v::motion_now, v::collision_fixes, v::next_motion};
+    std::vector<PerMotion> per;
+    for (const char* name : names) {
+        auto p = per_motion(e, objects, name, n, diagnostics);
+        if (!p) return false;
+        per.push_back(std::move(*p));
+    }
+    const PerMotion &allows = per[0], &forbids = per[1], &now = per[2], &fixes = per[3], &next = per[4];
+    // (no-collision O), and where the laws make one of the settling assumptions (for errors).
+    std::vector<std::optional<atms::AssumptionId>> none(n);
+    std::optional<SourceLocation> made;
+    const FactReader read(e, std::nullopt);
+    for (const engine::FactId f : e.facts_of(e.values().symbol(v::no_collision))) {
+        const engine::Fact& fact = e.facts().fact(f);
+        const auto a = e.assumption(f);
+        if (fact.args.size() != 1 || !a) {
+            diagnostics.error(where_made(e, f), "the laws conclude " + e.print(f) + ", but the envisioner reads (" +
+                                                    std::string(v::no_collision) + " O) only as an assumption, one for each object");
+            return false;
+        }
+        if (!made) made = where_made(e, f);
+        const auto it = objects.find(read.symbol(fact.args[0]));
+        if (it != objects.end()) none[it->second] = *a;
+    }
+    for (std::size_t o = 0; o < n; ++o) {
+        bool any = none[o].has_value(), all = any;
+        for (std::size_t i = 1; i < per.size(); ++i)
+            for (const auto& a : per[i][o]) {
+                any = any || a.has_value();
+                all = all && a.has_value();
+            }
+        if (!any) continue;
+        if (!all) {
+            diagnostics.error(made.value_or(SourceLocation{"<envision>", 1, 1}),
+                              "the laws settle the motion of " + m.parts[chain.objects[o]].name +
+                                  " after a step with only some of the assumptions (step-forbids O H), (motion-now O C), "
+                                  "(collision-fixes O F), (no-collision O), (next-motion O M): the envisioner needs each, "
+                                  "for each motion (rules/clock/settling.rules)");
+            return false;
+        }
+        for (const auto& a : allows[o])
+            if (!a) {
+                diagnostics.error(made.value_or(SourceLocation{"<envision>", 1, 1}),
+                                  "the laws settle the motion of " + m.parts[chain.objects[o]].name +
+                                      " after a step but assume no (step-allows O H) for each of its motions (rules/clock/nearness.rules)");
+                return false;
+            }
+        engine::Refutations refutations(e);
+        std::vector<atms::AssumptionId> env;
+        for (std::uint8_t mask = 0; mask < 8; ++mask)
+            for (std::int8_t c = -1; c <= 1; ++c)
+                for (std::int8_t f = -2; f <= 1; ++f)  // -2: no collision
+                    for (std::int8_t x = -1; x <= 1; ++x) {
+                        env.clear();
+                        for (std::size_t h = 0; h < 3; ++h) env.push_back(mask >> h & 1U ? *allows[o][h] : *forbids[o][h]);
+                        env.push_back(*now[o][static_cast<std::size_t>(c + 1)]);
+                        env.push_back(f == -2 ? *none[o] : *fixes[o][static_cast<std::size_t>(f + 1)]);
+                        env.push_back(*next[o][static_cast<std::size_t>(x + 1)]);
+                        const auto refuted = refutations.of(e.atms().environment(env));
+                        std::optional<ChainTables::Refuter> r;
+                        if (refuted) r = ChainTables::Refuter{refuted->rule, refuted->where.file + ":" + std::to_string(refuted->where.line)};
+                        tables.set_settling(o, mask, c, f == -2 ? std::nullopt : std::optional<std::int8_t>(f), x, r);
+                    }
+    }
+    return true;
 }
 
 bool state_less(const State& x, const State& y) {
@@ -226,7 +336,8 @@ std::optional<StateSpace> enumerate_states(const Laws& laws, const g::Mechanism&
     }
     std::sort(out.states.begin(), out.states.end(), state_less);
     read_tables(*e, pairs, chain, out.tables);
-    read_preference(*e, m, chain, *ordered, out.tables);
+    if (!read_preference(*e, m, chain, *ordered, out.tables, diagnostics)) return std::nullopt;
+    if (!read_settling(*e, m, chain, out.tables, diagnostics)) return std::nullopt;
     out.nogoods = e->atms().minimal_nogoods().size();
     return out;
 }

@@ -11,8 +11,11 @@
 // Invariants: states are sorted by place vector (pairs in chain order, place ids ascending), then
 //             by motions (objects in chain order, - before 0 before +), so ids are stable across
 //             runs; their net_force is left empty.
-// Errors:     rule programs that do not declare the choice sets, or errors while running them:
-//             located diagnostics. More than max_states states: an error saying so (nothing is
+// Errors:     rule programs that do not declare the choice sets, or errors while running them,
+//             or whose preference or settling the tables cannot read (a `prefer` on motions
+//             without a (step-allows O H) assumption for each motion, an assumption of the
+//             settling vocabulary concluded as a plain fact or made for only some motions):
+//             located diagnostics, at the `prefer` or the rule. More than max_states states: an error saying so (nothing is
 //             returned).
 #pragma once
 #include "bridge/place_facts.hpp"

@@ -121,37 +121,45 @@ private:
         settle(s, places, arrivals, branch);
     }
 
-    // The chain made consistent (8.3.4): among the states with these places, those whose colliding
-    // pairs move as the branch says and whose objects that must change (the current motion is not
-    // among the step's options) take one of their options; of those, the ones the laws' preference
-    // keeps (rules/clock/nearness.rules: a `prefer` on every object's motion, ranked given the
-    // motions the step allows it, read once as a table: chain_tables.hpp), a Pareto front.
+    // The chain made consistent (8.3.4): among the states with these places, those in which every
+    // object has a motion the laws allow after this step, given its situation in it (the motions
+    // the step allows it, its motion now, the motion each collision of this branch fixes:
+    // rules/clock/settling.rules, read once as a table: chain_tables.hpp); of those, the ones the
+    // laws' preference keeps (rules/clock/nearness.rules: a `prefer` on every object's motion,
+    // ranked given the motions the step allows it, also a table), a Pareto front.
     void settle(const StepOptions& s, const std::vector<PlaceOption>& places, const std::vector<Arrival>& arrivals,
                 const std::vector<g::QualDirection>& branch) {
         const std::size_t n = current_.motions.size();
-        std::vector<std::optional<std::int8_t>> fixed(n);
+        // Per object, the motions after this step the laws allow it (bit idx(m)): with collisions,
+        // those every collision's outcome allows.
+        next_.assign(n, 0);
+        fixed_.assign(n, false);
         for (std::size_t i = 0; i < arrivals.size(); ++i) {
             const auto [a, b] = parts_[arrivals[i].pair];
             for (const auto& [o, x] : {std::pair{a, branch[i].s[0]}, std::pair{b, branch[i].s[1]}}) {
-                if (fixed[o] && *fixed[o] != x) return;  // two collisions disagree (5.3.3: never at once)
-                fixed[o] = x;
+                const std::uint8_t mine = allowed_next(o, x);
+                next_[o] = fixed_[o] ? static_cast<std::uint8_t>(next_[o] & mine) : mine;
+                fixed_[o] = true;
             }
+        }
+        for (std::size_t o = 0; o < n; ++o) {
+            if (!fixed_[o]) next_[o] = allowed_next(o, std::nullopt);
+            if (next_[o] == 0) return;  // no motion of o can follow (two collisions that disagree: 5.3.3)
         }
         if (target_) {
             const State& t = states_[*target_];
             for (std::size_t i = 0; i < arrivals.size(); ++i) {
                 const auto [a, b] = parts_[arrivals[i].pair];
-                if (t.motions[a] != branch[i].s[0] || t.motions[b] != branch[i].s[1]) {
+                std::uint8_t code = settling(a, branch[i].s[0], t.motions[a]);
+                if (code == 0) code = settling(b, branch[i].s[1], t.motions[b]);
+                if (code != 0) {
                     reasons_.push_back("arriving at place " + std::to_string(places[arrivals[i].pair].place.value) + ", pair " +
                                        pair_names_[arrivals[i].pair] + " moves on with " + g::to_string(branch[i]) +
-                                       " in this outcome, not with the target's motions");
+                                       " in this outcome, not with the target's motions (" + cite(code) + ")");
                     return;
                 }
             }
         }
-        std::vector<bool> must(n, false);
-        for (std::size_t o = 0; o < n; ++o)
-            must[o] = std::find(s.motions[o].begin(), s.motions[o].end(), current_.motions[o]) == s.motions[o].end();
         bool wraps = false;
         std::uint8_t causes = s.cause | (arrivals.empty() ? 0 : Cause::collision);
         std::vector<g::PlaceId> target;
@@ -168,11 +176,9 @@ private:
             std::vector<std::int64_t> r;
             r.reserve(n);
             for (std::size_t o = 0; o < n && ok; ++o) {
-                const auto& options = s.motions[o];
-                if (fixed[o]) ok = t.motions[o] == *fixed[o];
-                else if (must[o]) ok = std::find(options.begin(), options.end(), t.motions[o]) != options.end();
-                // The declared preference ranks every object's motion: where the constraints above
-                // leave one motion (fixed) or only the step's options (must), the candidates tie there.
+                ok = (next_[o] >> (t.motions[o] + 1) & 1U) != 0;
+                // The declared preference ranks every object's motion: where the settling laws leave
+                // one motion (a collision's) or only some, the candidates tie there.
                 r.push_back(tables_.preference_rank(o, allowed_[o], t.motions[o]));
             }
             if (!ok) continue;
@@ -180,7 +186,7 @@ private:
             ranks.push_back(std::move(r));
         }
         if (target_) {
-            explain_target(s, candidates, ranks, must, fixed);
+            explain_target(s, candidates, ranks);
             return;
         }
         for (const std::size_t i : atms::pareto_front(ranks)) {
@@ -189,18 +195,34 @@ private:
         }
     }
 
-    void explain_target(const StepOptions& s, const std::vector<StateId>& candidates, const std::vector<std::vector<std::int64_t>>& ranks,
-                        const std::vector<bool>& must, const std::vector<std::optional<std::int8_t>>& fixed) {
+    // The settling table's answer for object o after this step (0: allowed; else the refuter's code).
+    [[nodiscard]] std::uint8_t settling(std::size_t o, std::optional<std::int8_t> fix, std::int8_t next) const {
+        return tables_.settling(o, allowed_[o], current_.motions[o], fix, next);
+    }
+    [[nodiscard]] std::uint8_t allowed_next(std::size_t o, std::optional<std::int8_t> fix) const {
+        std::uint8_t mask = 0;
+        for (std::int8_t m = -1; m <= 1; ++m)
+            if (settling(o, fix, m) == 0) mask = static_cast<std::uint8_t>(mask | 1U << (m + 1));
+        return mask;
+    }
+    // "rule NAME at FILE:LINE": the law that refutes a motion, for explanations.
+    [[nodiscard]] std::string cite(std::uint8_t code) const {
+        const auto& r = tables_.refuter(code);
+        return (r.rule.empty() ? std::string("the laws") : "rule " + r.rule) + " at " + r.where;
+    }
+
+    void explain_target(const StepOptions& s, const std::vector<StateId>& candidates, const std::vector<std::vector<std::int64_t>>& ranks) {
         const State& t = states_[*target_];
         const auto it = std::find(candidates.begin(), candidates.end(), *target_);
         if (it == candidates.end()) {
             for (std::size_t o = 0; o < t.motions.size(); ++o) {
-                if (fixed[o] || !must[o]) continue;
+                if (fixed_[o]) continue;
+                const std::uint8_t code = settling(o, std::nullopt, t.motions[o]);
+                if (code == 0) continue;
                 std::string options;
                 for (const auto x : s.motions[o]) options += std::string(options.empty() ? "" : " ") + sign_word(x);
-                if (std::find(s.motions[o].begin(), s.motions[o].end(), t.motions[o]) == s.motions[o].end())
-                    reasons_.push_back("part " + object_names_[o] + " must change its motion in this step, to one of " + options +
-                                       " (Table 5.1 with its net force), not " + sign_word(t.motions[o]));
+                reasons_.push_back("part " + object_names_[o] + " cannot move " + sign_word(t.motions[o]) + " after this step: it moves " +
+                                   sign_word(current_.motions[o]) + " now and the step allows it " + options + " (" + cite(code) + ")");
             }
             return;
         }
@@ -230,6 +252,8 @@ private:
     const ChainTables& tables_;
     std::vector<std::pair<std::size_t, std::size_t>> parts_;  // per pair: its parts' object indices
     std::vector<std::uint8_t> allowed_;  // per object: the motions the current step allows it (ChainTables::allowed_mask)
+    std::vector<std::uint8_t> next_;     // per object: the motions after the step the settling laws allow (settle)
+    std::vector<bool> fixed_;            // per object: whether a collision of the branch fixes its motion (settle)
     std::map<std::pair<StateId, Duration>, std::uint8_t> found_;
     std::optional<StateId> target_;
     std::vector<std::string> pair_names_, object_names_, reasons_;

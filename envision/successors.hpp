@@ -3,15 +3,17 @@
 //             combination of one option per pair and per object of each step the laws allow
 //             (state_dynamics.hpp) is a hypothesised next state; each pair's motion is carried
 //             through its arrival at its next place (a collision or the end of an axis may change
-//             it: collision.rules, a stop at the end of an axis too); the motions the step or an arrival fixed
-//             stay, and the chain is made consistent (8.3.4) by keeping, among the generated states
-//             with the hypothesised places and those motions, the ones the laws' preference keeps
-//             (rules/clock/nearness.rules: `prefer` on every object's motion, ranked given
-//             the motions the step allows it; read once per chain into ChainTables and applied here
-//             by lookup: the Pareto front, atms/pareto_front.hpp); a hypothesis that matches no
-//             generated state is dropped (8.3.5). This file decides no rank, threshold or order of
-//             motions; the two hard constraints (a collision's outcome, an object whose current
-//             motion the step does not allow takes one of its options) are still applied here. The combination that
+//             it: collision.rules, a stop at the end of an axis too); every object keeps only the
+//             motions after the step the laws allow given its situation in it (a collision's
+//             outcome, a motion the step does not allow that must change: rules/clock/
+//             settling.rules, read once per chain into ChainTables as a settling table and looked
+//             up here), and the chain is made consistent (8.3.4) by keeping, among the generated
+//             states with the hypothesised places and those motions, the ones the laws' preference
+//             keeps (rules/clock/nearness.rules: `prefer` on every object's motion, ranked given
+//             the motions the step allows it; also read once per chain into ChainTables and applied
+//             here by lookup: the Pareto front, atms/pareto_front.hpp); a hypothesis that matches no
+//             generated state is dropped (8.3.5). This file holds no law: it decides no rank,
+//             threshold, order of motions, nor which motion may follow which. The combination that
 //             changes nothing is no transition, unless some pair wraps round a periodic axis: then
 //             the state has a transition to itself over an interval. A step that another preempts
 //             (Law 4: the laws' `preempts`) gives its transitions only if that one gives none.
@@ -34,9 +36,10 @@ namespace qm::envision {
                                                  const StateDynamics& dynamics);
 
 // Why `from` has no transition to `to` (--why-not): per step of the state, the reasons its
-// hypotheses do not give `to` (a pair that cannot reach the place, a collision's outcome, a part
-// that must change, a state the laws' preference keeps instead, citing the `prefer` declaration's
-// file and line, or "this step allows it" when only a preemption stops it).
+// hypotheses do not give `to` (a pair that cannot reach the place, a collision's outcome or a part's
+// motion the settling laws refute, citing the refuting rule's name, file and line, a state the laws'
+// preference keeps instead, citing the `prefer` declaration's file and line, or "this step allows
+// it" when only a preemption stops it).
 [[nodiscard]] std::vector<std::pair<std::string, std::vector<std::string>>> why_no_transition(
     StateId from, StateId to, const StateIndex& states, const Chain& chain, std::span<const bridge::PairPlaces> pairs,
     const std::vector<std::string>& object_names, const ChainTables& tables, const StateDynamics& dynamics);

@@ -6,6 +6,7 @@
 #include "../support/json_value.hpp"
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <doctest/doctest.h>
 #include <fstream>
 #include <set>
@@ -135,6 +136,57 @@ TEST_CASE("cli/envision: --why-not cites the laws' preference where it keeps ano
     CHECK(r.out.find("state #217 has these places too and the laws prefer it: it is nearer to what the step allows for every part (the `prefer` at ") !=
           std::string::npos);
     CHECK(r.out.find("/clock/nearness.rules:" + std::to_string(at) + ")") != std::string::npos);
+}
+
+// The reasons of a --why-not answer (up to the derivations of the first state), with the source
+// folder written ROOT.
+std::string reasons_of(const std::string& out) {
+    std::string text = out.substr(0, out.find("  the laws in the first state:\n"));
+    const std::string root = QM_SOURCE_DIR;
+    for (auto at = text.find(root); at != std::string::npos; at = text.find(root, at)) text.replace(at, root.size(), "ROOT");
+    return text;
+}
+
+TEST_CASE("cli/envision: --why-not cites the settling law that refutes a motion (rules/clock/settling.rules)") {
+    // #113: the escapement at rest at place 19 under a definite force on the scape wheel: the
+    // instant step allows it only -, so it must change (Table 5.1, 8.3.3: rule must-change).
+    // #188 -> #40: arriving at place 8 the collision gives the pair (+ -), not #40's motions (5.3.3:
+    // rule collision-fixes-motion). Goldens: tests/cli/why_not/*.txt.
+    for (const auto& [question, golden] : {std::pair{"#113 -> #114", "must_change.txt"}, std::pair{"#188 -> #40", "collision.txt"}}) {
+        CAPTURE(question);
+        const auto r = envision(scene("escapement.def") + " --why-not '" + question + "'");
+        REQUIRE(r.status == 0);
+        CHECK(reasons_of(r.out) == slurp(std::string(QM_SOURCE_DIR) + "/tests/cli/why_not/" + golden));
+    }
+}
+
+TEST_CASE("cli/envision: laws that prefer among motions without a step-allows for each are an error at the `prefer`") {
+    namespace fs = std::filesystem;
+    const fs::path from = fs::path(QM_SOURCE_DIR) / "rules/clock";
+    // The nearness rule that assumes (step-allows O H) for every motion narrowed to (+), and made a
+    // plain conclusion: each a faulty law file, refused where it is written (exit 2), not a crash.
+    const std::string assumed = "  when (possible-motions ?o ?motions) (motion-value ?h)\n  then assume (step-allows ?o ?h)";
+    const std::vector<std::pair<std::string, std::string>> broken{
+        {"  when (possible-motions ?o ?motions) (motion-value ?h) (= ?h (+))\n  then assume (step-allows ?o ?h)",
+         "nearness.rules:55:1: error: the laws prefer among the motions of scape-wheel but assume no (step-allows O H) for each of its motions"},
+        {"  when (possible-motions ?o ?motions) (motion-value ?h)\n  then (step-allows ?o ?h)",
+         "nearness.rules:41:1: error: the laws conclude (step-allows "},
+    };
+    for (std::size_t i = 0; i < broken.size(); ++i) {
+        CAPTURE(i);
+        const fs::path dir = fs::path(QM_BINARY_DIR) / ("envision_broken_rules_" + std::to_string(i));
+        fs::remove_all(dir);
+        fs::copy(from, dir);
+        std::string text = slurp((dir / "nearness.rules").string());
+        const auto at = text.find(assumed);
+        REQUIRE(at != std::string::npos);
+        text.replace(at, assumed.size(), broken[i].first);
+        std::ofstream(dir / "nearness.rules") << text;
+        const auto r = envision(scene("escapement.def") + " --rules " + dir.string());
+        CHECK(r.status == 2);
+        CHECK(r.out.empty());
+        CHECK_MESSAGE(r.err.find(broken[i].second) != std::string::npos, r.err);
+    }
 }
 
 TEST_CASE("cli/envision: --from, --path, --why-not, --dot and --svg") {

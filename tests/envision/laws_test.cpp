@@ -53,6 +53,25 @@ TEST_CASE("envision/laws: deleting the collision law removes the escapement's co
     MESSAGE("escapement: " << edges(a, true).size() << " collision transitions of " << a.transitions.size() << " go with the law");
 }
 
+TEST_CASE("envision/laws: the settling of a step is the settling law's: deleting it changes the transitions, not the states") {
+    // rules/clock/settling.rules makes a collision's outcome and a must-change motion hard; the C++
+    // holds neither (envision/successors.cpp looks the law's table up), so without the file the
+    // escapement goes on differently from the same states.
+    const auto m = mechanism("scenarios/metric/escapement.def");
+    const auto& full = envisioned_once("scenarios/metric/escapement.def");
+    EnvisionOptions o;
+    o.rules = laws_without("no-settling", {"settling.rules"});
+    const auto loose = envisioned(m, o);
+    const auto& a = full.chains[0];
+    const auto& b = loose.chains[0];
+    CHECK(a.states.size() == b.states.size());
+    std::set<Edge> with_law = edges(a, true), without_law = edges(b, true);
+    for (const auto& e : edges(a, false)) with_law.insert(e);
+    for (const auto& e : edges(b, false)) without_law.insert(e);
+    CHECK(with_law != without_law);
+    for (std::size_t o = 0; o < b.chain.objects.size(); ++o) CHECK(b.tables.settling(o, 1, 1, std::nullopt, 1) == 0);
+}
+
 TEST_CASE("envision/laws: without the metric diagram's constraint, states the geometry blocks come back") {
     // The clock's ratchet: a place where the normals alone allow a motion that the metric diagram
     // blocks (docs/LAWS.md, Law 2 comparison); on the other bundled mechanisms the two agree.
