@@ -45,6 +45,10 @@ public:
     [[nodiscard]] bool other_member(AssumptionId a, SparseWords set) const noexcept;
 
 private:
+    // Both other_member forms: the constraints of a, each tested by the set's own form
+    // (at_most_one_index.cpp: a raw window or listed words).
+    template <class Set>
+    [[nodiscard]] bool other_member_in(AssumptionId a, const Set& set) const noexcept;
     std::vector<Environment> members_;
     std::vector<std::vector<std::uint32_t>> of_;  // assumption -> constraints holding it
 };

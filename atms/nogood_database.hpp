@@ -35,9 +35,7 @@
 namespace qm::atms {
 class NogoodDatabase {
 public:
-    [[nodiscard]] bool subsumes(const Environment& e) const noexcept {
-        return subsumes_words(e.words(), e.first_word());
-    }
+    [[nodiscard]] bool subsumes(const Environment& e) const noexcept { return subsumes_sparse(e.sparse()); }
     // words[i] is word first_word + i of the set; words outside the window are zero.
     [[nodiscard]] bool subsumes_words(std::span<const std::uint64_t> words, std::size_t first_word = 0) const noexcept;
     // The same for a set given by its listed words (environment.hpp): costs what the listed words
@@ -77,6 +75,10 @@ public:
                                    std::uint64_t sig = ~std::uint64_t{0}) const noexcept;
 
 private:
+    // subsumes_words and subsumes_sparse: one pass over the query set's words, whichever form it
+    // comes in (nogood_database.cpp: a raw window or listed words).
+    template <class Set>
+    [[nodiscard]] bool subsumes_set(const Set& set) const noexcept;
     void set_partner(AssumptionId a, AssumptionId b, bool on);
     void retire(std::uint32_t entry);
     struct Entry {
