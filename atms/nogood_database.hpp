@@ -10,14 +10,14 @@
 //                                    visited, and a one-word signature (members modulo 64) rejects
 //                                    most there; two-assumption nogoods {a, b}, the usual
 //                                    exclusions, by one bitset of the partners b of each a of e;
-//                                    constraints by their member window. subsumes_words(w, first)
+//                                    constraints by their listed members. subsumes_words(w, first)
 //                                    is the same question for a raw bitset window from word first,
 //                                    subsumes_sparse(set) for a set given by its listed words.
 //               subsumes_with(w, a)  is some nogood or constraint containing a violated by w?  When
 //                                    w minus a is consistent (the backtracking step of
 //                                    interpretations), this equals subsumes(w).
 //               excludes(base, a)    is base + a inconsistent, base being consistent without a?
-//                                    (the same question as subsumes_with, on base's own window)
+//                                    (the same question as subsumes_with, on base's listed words)
 //               within(e)            the live stated nogoods that are subsets of e.
 // Ownership:  owns copies of its nogood environments; EnvIds refer to the owner's EnvironmentTable.
 // Invariants: live stated nogoods are pairwise incomparable (a new nogood retires its supersets), and
