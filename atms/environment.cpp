@@ -75,10 +75,19 @@ Environment Environment::from_sparse(SparseWords y) {
 }
 
 bool Environment::contains(AssumptionId a) const noexcept {
+    if (empty()) return false;
     const std::uint64_t w = a.value / word_bits;
     const auto ix = index();
-    const auto it = std::lower_bound(ix.begin(), ix.end(), w);
-    return it != ix.end() && *it == w && (data_[static_cast<std::size_t>(it - ix.begin())] & bit_of(a)) != 0;
+    // Where w is if every word from the first one on is listed (an interpretation over nearby
+    // assumptions, say): tried first, a binary search otherwise (callers test membership per
+    // assumption of an interpretation, analysis/).
+    std::size_t at = static_cast<std::size_t>(w - ix.front());
+    if (w < ix.front() || at >= ix.size() || ix[at] != w) {
+        const auto it = std::lower_bound(ix.begin(), ix.end(), w);
+        if (it == ix.end() || *it != w) return false;
+        at = static_cast<std::size_t>(it - ix.begin());
+    }
+    return (data_[at] & bit_of(a)) != 0;
 }
 
 bool window_subset(std::span<const std::uint64_t> x, std::size_t x_first, std::span<const std::uint64_t> y,
@@ -130,15 +139,6 @@ bool sparse_subset(SparseWords x, SparseWords y) noexcept {
         const std::uint64_t w = x.index[i];
         while (j < y.index.size() && y.index[j] < w) ++j;
         if (j == y.index.size() || y.index[j] != w || (x.words[i] & ~y.words[j]) != 0) return false;
-    }
-    return true;
-}
-
-bool sparse_subset(SparseWords x, std::span<const std::uint64_t> y, std::size_t y_first) noexcept {
-    for (std::size_t i = 0; i < x.words.size(); ++i) {
-        if (x.words[i] == 0) continue;
-        const std::size_t w = x.index[i];
-        if (w < y_first || w - y_first >= y.size() || (x.words[i] & ~y[w - y_first]) != 0) return false;
     }
     return true;
 }

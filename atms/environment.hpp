@@ -96,7 +96,15 @@ private:
 // The same questions with x given by its listed words: they cost what x lists (and, for y sparse,
 // what y lists), never the width of a window.
 [[nodiscard]] bool sparse_subset(SparseWords x, SparseWords y) noexcept;
-[[nodiscard]] bool sparse_subset(SparseWords x, std::span<const std::uint64_t> y, std::size_t y_first = 0) noexcept;
+// (inline: the backtracking search of interpretations calls it per nogood per pick)
+[[nodiscard]] inline bool sparse_subset(SparseWords x, std::span<const std::uint64_t> y, std::size_t y_first = 0) noexcept {
+    for (std::size_t i = 0; i < x.words.size(); ++i) {
+        if (x.words[i] == 0) continue;
+        const std::size_t w = x.index[i];
+        if (w < y_first || w - y_first >= y.size() || (x.words[i] & ~y[w - y_first]) != 0) return false;
+    }
+    return true;
+}
 [[nodiscard]] bool sparse_intersects(SparseWords x, SparseWords y) noexcept;
 [[nodiscard]] bool sparse_intersects(SparseWords x, std::span<const std::uint64_t> y, std::size_t y_first = 0) noexcept;
 
