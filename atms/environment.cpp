@@ -14,21 +14,22 @@ std::uint64_t bit_of(AssumptionId a) noexcept { return std::uint64_t{1} << (a.va
 }  // namespace
 
 Environment Environment::of(std::span<const AssumptionId> as) {
+    Environment e;
+    if (as.empty()) return e;
+    // Sorted ids, then one pass: the words into the block's front, their indices after them.
     std::vector<std::uint32_t> ids;
     ids.reserve(as.size());
     for (AssumptionId a : as) ids.push_back(a.value);
     std::sort(ids.begin(), ids.end());
-    std::vector<std::uint64_t> words, index;
-    for (std::uint32_t v : ids) {
-        const std::uint32_t w = v / word_bits;
-        if (index.empty() || index.back() != w) {
-            index.push_back(w);
-            words.push_back(0);
-        }
-        words.back() |= std::uint64_t{1} << (v % word_bits);
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < ids.size(); ++i) k += (i == 0 || ids[i] / word_bits != ids[i - 1] / word_bits) ? 1 : 0;
+    e.data_.assign(2 * k, 0);
+    std::size_t at = 0;
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+        if (i > 0 && ids[i] / word_bits != ids[i - 1] / word_bits) ++at;
+        e.data_[k + at] = ids[i] / word_bits;
+        e.data_[at] |= std::uint64_t{1} << (ids[i] % word_bits);
     }
-    Environment e;
-    e.assign_listed(words, index);
     return e;
 }
 
