@@ -188,8 +188,17 @@ Environment Environment::without(AssumptionId a) const {
 }
 
 void Environment::insert(AssumptionId a) {
-    const AssumptionId one[] = {a};
-    *this = join(*this, Environment::of(one));
+    // In place: OR into its word, or a new word (and its index) at its place in the block.
+    const std::uint64_t w = a.value / word_bits;
+    const std::size_t k = count();
+    const auto ix = index();
+    const auto at = static_cast<std::size_t>(std::lower_bound(ix.begin(), ix.end(), w) - ix.begin());
+    if (at < k && ix[at] == w) {
+        data_[at] |= bit_of(a);
+        return;
+    }
+    data_.insert(data_.begin() + static_cast<std::ptrdiff_t>(k + at), w);
+    data_.insert(data_.begin() + static_cast<std::ptrdiff_t>(at), bit_of(a));
 }
 
 void Environment::erase(AssumptionId a) {
