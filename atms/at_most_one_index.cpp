@@ -1,5 +1,5 @@
 // atms/at_most_one_index.cpp: the at-most-one constraints, tested by intersecting a constraint's
-// member window with the environment's window, never pair by pair.
+// listed member words with the environment's words, never pair by pair.
 #include "atms/at_most_one_index.hpp"
 
 #include "qm/assert.hpp"
@@ -28,41 +28,62 @@ const Environment& AtMostOneIndex::members(std::uint32_t c) const {
     return members_[c];
 }
 
-bool AtMostOneIndex::other_member(AssumptionId a, std::span<const std::uint64_t> words, std::size_t first) const noexcept {
-    if (a.value >= of_.size()) return false;
-    const std::size_t own_word = a.value / word_bits;
-    const std::uint64_t own_bit = std::uint64_t{1} << (a.value % word_bits);
-    for (std::uint32_t c : of_[a.value]) {
-        const Environment& m = members_[c];
-        // Only the words both windows cover can hold a shared member.
-        const std::size_t lo = std::max(m.first_word(), first);
-        const std::size_t hi = std::min(m.end_word(), first + words.size());
-        for (std::size_t w = lo; w < hi; ++w) {
-            std::uint64_t shared = m.words()[w - m.first_word()] & words[w - first];
+namespace {
+// The two forms of the query set for other_member_in. meets(m, own_word, own_bit): does the set hold
+// a member of m other than the one at (own_word, own_bit)? Each costs what m lists (a raw window is
+// indexed directly; listed words are merged with m's).
+struct WindowSet {
+    std::span<const std::uint64_t> words;
+    std::size_t first;
+    [[nodiscard]] bool meets(const Environment& m, std::size_t own_word, std::uint64_t own_bit) const noexcept {
+        for (std::size_t j = 0; j < m.words().size(); ++j) {
+            const std::size_t w = m.index()[j];
+            if (w < first) continue;
+            if (w - first >= words.size()) break;
+            std::uint64_t shared = m.words()[j] & words[w - first];
             if (w == own_word) shared &= ~own_bit;
             if (shared != 0) return true;
         }
+        return false;
     }
+};
+struct ListedSet {
+    SparseWords set;
+    [[nodiscard]] bool meets(const Environment& m, std::size_t own_word, std::uint64_t own_bit) const noexcept {
+        const auto mw = m.words();
+        const auto mi = m.index();
+        std::size_t i = 0, j = 0;
+        while (i < mi.size() && j < set.index.size()) {
+            if (mi[i] < set.index[j]) ++i;
+            else if (set.index[j] < mi[i]) ++j;
+            else {
+                std::uint64_t shared = mw[i] & set.words[j];
+                if (mi[i] == own_word) shared &= ~own_bit;
+                if (shared != 0) return true;
+                ++i, ++j;
+            }
+        }
+        return false;
+    }
+};
+}  // namespace
+
+template <class Set>
+bool AtMostOneIndex::other_member_in(AssumptionId a, const Set& set) const noexcept {
+    if (a.value >= of_.size()) return false;
+    const std::size_t own_word = a.value / word_bits;
+    const std::uint64_t own_bit = std::uint64_t{1} << (a.value % word_bits);
+    for (std::uint32_t c : of_[a.value])
+        if (set.meets(members_[c], own_word, own_bit)) return true;
     return false;
 }
 
+bool AtMostOneIndex::other_member(AssumptionId a, std::span<const std::uint64_t> words, std::size_t first) const noexcept {
+    return other_member_in(a, WindowSet{words, first});
+}
+
 bool AtMostOneIndex::other_member(AssumptionId a, SparseWords set) const noexcept {
-    if (a.value >= of_.size()) return false;
-    const std::size_t own_word = a.value / word_bits;
-    const std::uint64_t own_bit = std::uint64_t{1} << (a.value % word_bits);
-    for (std::uint32_t c : of_[a.value]) {
-        const Environment& m = members_[c];
-        // Only the listed words inside the member window can hold a shared member.
-        for (std::size_t j = 0; j < set.index.size(); ++j) {
-            const std::size_t w = set.index[j];
-            if (w < m.first_word()) continue;
-            if (w >= m.end_word()) break;
-            std::uint64_t shared = m.words()[w - m.first_word()] & set.words[j];
-            if (w == own_word) shared &= ~own_bit;
-            if (shared != 0) return true;
-        }
-    }
-    return false;
+    return other_member_in(a, ListedSet{set});
 }
 
 bool AtMostOneIndex::violated_by(std::span<const std::uint64_t> words, std::size_t first) const noexcept {

@@ -6,8 +6,9 @@
 //             a pair, whether an environment holds two members of some constraint:
 //               violated_by(w, first)      does the window w (word first on) hold two members of one?
 //               other_member(a, w, first)  does w hold a member other than a of one of a's?
-//             Both cost what the window and the constraints' member windows share, so a query
-//             should pass the tightest window it has (not a bitset from word 0 over every assumption).
+//             Both cost what the constraints' members list (members are stored sparsely,
+//             environment.hpp), not the width of the query window; other_member also takes a set
+//             given by its listed words.
 // Ownership:  owns copies of the member sets; constraints are numbered densely from 0 in the order
 //             added and never removed.
 // Invariants: a constraint has at least two distinct members (smaller ones constrain nothing and
@@ -45,6 +46,10 @@ public:
     [[nodiscard]] bool other_member(AssumptionId a, SparseWords set) const noexcept;
 
 private:
+    // Both other_member forms: the constraints of a, each tested by the set's own form
+    // (at_most_one_index.cpp: a raw window or listed words).
+    template <class Set>
+    [[nodiscard]] bool other_member_in(AssumptionId a, const Set& set) const noexcept;
     std::vector<Environment> members_;
     std::vector<std::vector<std::uint32_t>> of_;  // assumption -> constraints holding it
 };

@@ -38,7 +38,7 @@ void Atms::new_nogood(EnvId env) {
     AssumptionId rarest = nogood.first();
     for (std::size_t w = 0; w < nogood.words().size(); ++w)
         for (std::uint64_t bits = nogood.words()[w]; bits != 0; bits &= bits - 1) {
-            const AssumptionId a{static_cast<std::uint32_t>((nogood.first_word() + w) * 64 + static_cast<std::size_t>(std::countr_zero(bits)))};
+            const AssumptionId a{static_cast<std::uint32_t>(std::size_t{nogood.index()[w]} * 64 + static_cast<std::size_t>(std::countr_zero(bits)))};
             if (envs_.containing(a).size() < envs_.containing(rarest).size()) rarest = a;
         }
     // containing() may not grow during the scan (retire interns nothing), so indexing is safe.

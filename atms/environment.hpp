@@ -1,12 +1,13 @@
 // atms/environment.hpp
-// Provides:   Environment, a set of assumptions stored as a compact bitset over AssumptionId: only
-//             the window of 64-bit words from the first to the last non-zero one is kept, with the
-//             index of its first word, so a set of nearby assumptions is a word or two however many
-//             assumptions the ATMS has. Free functions on raw word windows for the hot loops, and
-//             SparseWords, a set given by its listed words only (weave's unions).
+// Provides:   Environment, a set of assumptions stored sparsely over AssumptionId: only its non-zero
+//             64-bit words, each with its word index, so a set costs (in memory, hashing, subset
+//             tests) what it holds, however far apart its assumptions are and however many the ATMS
+//             has (docs/perf/engine.md, "Sparse environments"). SparseWords, a set given by its
+//             listed words (an Environment's own form, and weave's unions); free functions on
+//             sparse sets and on raw word windows for the hot loops.
 // Ownership:  a value type; canonical copies are interned by EnvironmentTable (environment_table.hpp).
-// Invariants: words_ has no leading or trailing zero word, and first_ is 0 when words_ is empty,
-//             so the defaulted == is set equality and the hash of equal sets is equal.
+// Invariants: words() holds no zero word; index()[i] is the word index of words()[i], strictly
+//             increasing; so the defaulted == is set equality and the hash of equal sets is equal.
 // Knows nothing of rules, facts or mechanics: an assumption is only an id.
 #pragma once
 #include "atms/ids.hpp"
@@ -23,7 +24,7 @@ namespace qm::atms {
 // does not grow with the number of assumptions (docs/perf/alex.md, "Sparse unions in weave").
 struct SparseWords {
     std::span<const std::uint64_t> words;
-    std::span<const std::uint32_t> index;  // Pre: index.size() == words.size()
+    std::span<const std::uint64_t> index;  // Pre: index.size() == words.size()
 };
 
 class Environment {
@@ -43,7 +44,7 @@ public:
 
     [[nodiscard]] bool contains(AssumptionId a) const noexcept;
     [[nodiscard]] bool subset_of(const Environment& other) const noexcept;
-    [[nodiscard]] bool empty() const noexcept { return words_.empty(); }
+    [[nodiscard]] bool empty() const noexcept { return data_.empty(); }
     [[nodiscard]] std::uint32_t size() const noexcept;  // number of assumptions
     [[nodiscard]] Environment with(AssumptionId a) const;
     [[nodiscard]] Environment without(AssumptionId a) const;
@@ -54,18 +55,26 @@ public:
     [[nodiscard]] std::vector<AssumptionId> assumptions() const;
     // The lowest assumption. Pre: !empty().
     [[nodiscard]] AssumptionId first() const;
-    // The stored window: words()[i] is word first_word() + i of the set; all other words are zero.
-    // Both ends of a non-empty window are non-zero; the empty set has no words and first_word 0.
-    [[nodiscard]] std::span<const std::uint64_t> words() const noexcept { return words_; }
-    [[nodiscard]] std::size_t first_word() const noexcept { return first_; }
-    [[nodiscard]] std::size_t end_word() const noexcept { return first_ + words_.size(); }
+    // The non-zero words in increasing order, and their word indices: words()[i] is word index()[i]
+    // of the set (bit b of it <=> AssumptionId{64 * index()[i] + b}); every other word is zero.
+    [[nodiscard]] std::span<const std::uint64_t> words() const noexcept { return {data_.data(), count()}; }
+    [[nodiscard]] std::span<const std::uint64_t> index() const noexcept { return {data_.data() + count(), count()}; }
+    [[nodiscard]] SparseWords sparse() const noexcept { return {words(), index()}; }
+    // The window from the lowest to the highest non-zero word: [first_word(), end_word()); 0 and 0
+    // for the empty set. window() is that window written out densely (for tests and raw bitsets).
+    [[nodiscard]] std::size_t first_word() const noexcept { return empty() ? 0 : data_[count()]; }
+    [[nodiscard]] std::size_t end_word() const noexcept { return empty() ? 0 : data_.back() + 1; }
+    [[nodiscard]] std::vector<std::uint64_t> window() const;
     [[nodiscard]] std::size_t hash() const noexcept;
     friend bool operator==(const Environment&, const Environment&) = default;
 
 private:
-    void normalise() noexcept;  // drops zero words at both ends (restores the invariants)
-    std::uint32_t first_ = 0;
-    std::vector<std::uint64_t> words_;  // bit i of words_[w] <=> AssumptionId{64 * (first_ + w) + i}
+    [[nodiscard]] std::size_t count() const noexcept { return data_.size() / 2; }  // listed words
+    // Builds from listed words (some may be zero: they are dropped). Pre: index increasing.
+    void assign_listed(std::span<const std::uint64_t> words, std::span<const std::uint64_t> index);
+    // The non-zero words in increasing word index, then their word indices, in one block (one
+    // allocation per environment): data_[i] is word data_[count() + i] of the set.
+    std::vector<std::uint64_t> data_;
 };
 
 // True iff the set of window x (x[i] is word x_first + i) is a subset of the set of window y.
@@ -83,6 +92,21 @@ private:
 [[nodiscard]] bool window_subset(std::span<const std::uint64_t> x, std::size_t x_first, SparseWords y) noexcept;
 // True iff the set of window x and y share an assumption.
 [[nodiscard]] bool window_intersects(std::span<const std::uint64_t> x, std::size_t x_first, SparseWords y) noexcept;
+
+// The same questions with x given by its listed words: they cost what x lists (and, for y sparse,
+// what y lists), never the width of a window.
+[[nodiscard]] bool sparse_subset(SparseWords x, SparseWords y) noexcept;
+// (inline: the backtracking search of interpretations calls it per nogood per pick)
+[[nodiscard]] inline bool sparse_subset(SparseWords x, std::span<const std::uint64_t> y, std::size_t y_first = 0) noexcept {
+    for (std::size_t i = 0; i < x.words.size(); ++i) {
+        if (x.words[i] == 0) continue;
+        const std::size_t w = x.index[i];
+        if (w < y_first || w - y_first >= y.size() || (x.words[i] & ~y[w - y_first]) != 0) return false;
+    }
+    return true;
+}
+[[nodiscard]] bool sparse_intersects(SparseWords x, SparseWords y) noexcept;
+[[nodiscard]] bool sparse_intersects(SparseWords x, std::span<const std::uint64_t> y, std::size_t y_first = 0) noexcept;
 
 [[nodiscard]] Environment join(const Environment& x, const Environment& y);
 

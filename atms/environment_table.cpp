@@ -62,7 +62,7 @@ EnvId EnvironmentTable::add(const Environment& e, std::size_t hash, bool nogood)
     }
     for (std::size_t w = 0; w < e.words().size(); ++w)
         for (std::uint64_t bits = e.words()[w]; bits != 0; bits &= bits - 1) {
-            const auto a = static_cast<std::size_t>((e.first_word() + w) * 64 + static_cast<std::size_t>(std::countr_zero(bits)));
+            const auto a = static_cast<std::size_t>(std::size_t{e.index()[w]} * 64 + static_cast<std::size_t>(std::countr_zero(bits)));
             if (by_assumption_.size() <= a) by_assumption_.resize(a + 1);
             by_assumption_[a].push_back(id);
         }

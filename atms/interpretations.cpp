@@ -60,7 +60,7 @@ void exclusions(const NogoodDatabase& nogoods, Plan& plan) {
         const Environment& partners = nogoods.partners(plan.assumption[k]);
         for (std::size_t w = 0; w < partners.words().size(); ++w)
             for (std::uint64_t bits = partners.words()[w]; bits != 0; bits &= bits - 1) {
-                const auto b = static_cast<std::uint32_t>((partners.first_word() + w) * word_bits +
+                const auto b = static_cast<std::uint32_t>(std::size_t{partners.index()[w]} * word_bits +
                                                           static_cast<std::size_t>(std::countr_zero(bits)));
                 for (auto it = std::lower_bound(by_assumption.begin(), by_assumption.end(), std::pair(b, 0U));
                      it != by_assumption.end() && it->first == b; ++it)
@@ -188,7 +188,7 @@ std::size_t enumerate_interpretations(const NogoodDatabase& nogoods, std::size_t
     if (nogoods.subsumes(base)) return 0;
     // The partial choice is a plain bitset from word 0 over every assumption.
     std::vector<std::uint64_t> words(std::max(base.end_word(), (assumption_count + word_bits - 1) / word_bits), 0);
-    std::copy(base.words().begin(), base.words().end(), words.begin() + static_cast<std::ptrdiff_t>(base.first_word()));
+    for (std::size_t i = 0; i < base.words().size(); ++i) words[base.index()[i]] = base.words()[i];
     // Drop choices inconsistent with base alone once, instead of at every node of the search.
     Plan plan;
     plan.start.push_back(0);

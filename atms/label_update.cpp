@@ -20,12 +20,11 @@ using detail::MinimalFilter;
 namespace {
 // ORs env into a row over `index` (SparseWords): each non-zero word of env at its listed position.
 // Pre: every non-zero word of env is listed.
-void place(std::uint64_t* row, const Environment& env, std::span<const std::uint32_t> index) {
+void place(std::uint64_t* row, const Environment& env, std::span<const std::uint64_t> index) {
     const auto words = env.words();
     auto at = index.begin();
     for (std::size_t w = 0; w < words.size(); ++w) {
-        if (words[w] == 0) continue;
-        at = std::lower_bound(at, index.end(), static_cast<std::uint32_t>(env.first_word() + w));
+        at = std::lower_bound(at, index.end(), env.index()[w]);
         row[at - index.begin()] |= words[w];
     }
 }
@@ -44,13 +43,11 @@ std::vector<EnvId> weave(EnvironmentTable& table, const NogoodDatabase& nogoods,
     // env that holds a situation's assumption (among the first created) and an object's choices
     // (created as the rules reach the object) spans a window that grows with the scene, and every
     // union, subset test and nogood test paid for it (docs/perf/alex.md, "Sparse unions in weave").
-    std::vector<std::uint32_t>& index = scratch.index;
+    std::vector<std::uint64_t>& index = scratch.index;
     index.clear();
     auto collect = [&](EnvId e) {
-        const Environment& env = table[e];
-        const auto words = env.words();
-        for (std::size_t w = 0; w < words.size(); ++w)
-            if (words[w] != 0) index.push_back(static_cast<std::uint32_t>(env.first_word() + w));
+        const auto words = table[e].index();
+        index.insert(index.end(), words.begin(), words.end());
     };
     for (EnvId e : envs) collect(e);
     for (const Label* label : labels) {

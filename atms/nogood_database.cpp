@@ -24,100 +24,113 @@ std::uint64_t signature(std::span<const std::uint64_t> words) noexcept {
 }
 }  // namespace
 
-bool NogoodDatabase::subsumes_words(std::span<const std::uint64_t> words, std::size_t first_word) const noexcept {
+namespace {
+// The two forms a query set comes in, for subsumes_set: a raw window of words (words[i] is word
+// first + i) and a set given by its listed words. Each answers the three questions subsumes_set
+// asks of it at the cost of the stored nogood's (or constraint's) listed words.
+struct WindowSet {
+    std::span<const std::uint64_t> words;
+    std::size_t first;
+    [[nodiscard]] std::size_t count() const noexcept { return words.size(); }
+    [[nodiscard]] std::size_t index(std::size_t j) const noexcept { return first + j; }
+    [[nodiscard]] std::uint64_t word(std::size_t j) const noexcept { return words[j]; }
+    [[nodiscard]] std::span<const std::uint64_t> all_words() const noexcept { return words; }
+    [[nodiscard]] bool holds(const Environment& n) const noexcept { return sparse_subset(n.sparse(), words, first); }
+    [[nodiscard]] bool meets(const Environment& p) const noexcept { return sparse_intersects(p.sparse(), words, first); }
+    [[nodiscard]] bool other_member(const AtMostOneIndex& i, AssumptionId a) const noexcept {
+        return i.other_member(a, words, first);
+    }
+};
+struct ListedSet {
+    SparseWords set;
+    [[nodiscard]] std::size_t count() const noexcept { return set.words.size(); }
+    [[nodiscard]] std::size_t index(std::size_t j) const noexcept { return set.index[j]; }
+    [[nodiscard]] std::uint64_t word(std::size_t j) const noexcept { return set.words[j]; }
+    [[nodiscard]] std::span<const std::uint64_t> all_words() const noexcept { return set.words; }
+    [[nodiscard]] bool holds(const Environment& n) const noexcept { return sparse_subset(n.sparse(), set); }
+    [[nodiscard]] bool meets(const Environment& p) const noexcept { return sparse_intersects(p.sparse(), set); }
+    [[nodiscard]] bool other_member(const AtMostOneIndex& i, AssumptionId a) const noexcept {
+        return i.other_member(a, set);
+    }
+};
+}  // namespace
+
+template <class Set>
+bool NogoodDatabase::subsumes_set(const Set& set) const noexcept {
     if (empty_nogood_) return true;
     // A stated nogood N of size 1 or >= 3 is filed under one of its assumptions: N is a subset of e
     // only if that one is in e, so only the buckets of e's assumptions are visited, and in them the
     // signature rejects most without touching N. A pair {a, b} is found from either member through
     // the partners of a.
-    const std::uint64_t sig = signature(words);
-    for (std::size_t w = 0; w < words.size(); ++w) {
-        for (std::uint64_t bits = words[w]; bits != 0; bits &= bits - 1) {
-            const std::size_t a = (first_word + w) * word_bits + static_cast<std::size_t>(std::countr_zero(bits));
+    const std::uint64_t sig = signature(set.all_words());
+    for (std::size_t j = 0; j < set.count(); ++j) {
+        for (std::uint64_t bits = set.word(j); bits != 0; bits &= bits - 1) {
+            const std::size_t a = set.index(j) * word_bits + static_cast<std::size_t>(std::countr_zero(bits));
             if (a < partners_.size()) {
                 const Environment& p = partners_[a];
-                if (!p.empty() && window_intersects(p.words(), p.first_word(), words, first_word)) return true;
+                if (!p.empty() && set.meets(p)) return true;
             }
             if (a < filed_.size()) {
                 for (const Filed& f : filed_[a]) {
                     if ((f.sig & ~sig) != 0) continue;
-                    const Environment& n = entries_[f.entry].env;
-                    if (window_subset(n.words(), n.first_word(), words, first_word)) return true;
+                    if (set.holds(entries_[f.entry].env)) return true;
                 }
             }
             // A constraint with two members in e is found from either (AtMostOneIndex::violated_by,
             // folded into this one pass over e).
             const AssumptionId id{static_cast<std::uint32_t>(a)};
-            if (!at_most_one_.of(id).empty() && at_most_one_.other_member(id, words, first_word)) return true;
+            if (!at_most_one_.of(id).empty() && set.other_member(at_most_one_, id)) return true;
         }
     }
     return false;
 }
 
-bool NogoodDatabase::subsumes_sparse(SparseWords set) const noexcept {
-    if (empty_nogood_) return true;
-    // subsumes_words, visiting only the listed words.
-    const std::uint64_t sig = signature(set.words);
-    for (std::size_t j = 0; j < set.words.size(); ++j) {
-        for (std::uint64_t bits = set.words[j]; bits != 0; bits &= bits - 1) {
-            const std::size_t a = std::size_t{set.index[j]} * word_bits + static_cast<std::size_t>(std::countr_zero(bits));
-            if (a < partners_.size()) {
-                const Environment& p = partners_[a];
-                if (!p.empty() && window_intersects(p.words(), p.first_word(), set)) return true;
-            }
-            if (a < filed_.size()) {
-                for (const Filed& f : filed_[a]) {
-                    if ((f.sig & ~sig) != 0) continue;
-                    const Environment& n = entries_[f.entry].env;
-                    if (window_subset(n.words(), n.first_word(), set)) return true;
-                }
-            }
-            const AssumptionId id{static_cast<std::uint32_t>(a)};
-            if (!at_most_one_.of(id).empty() && at_most_one_.other_member(id, set)) return true;
-        }
-    }
-    return false;
+bool NogoodDatabase::subsumes_words(std::span<const std::uint64_t> words, std::size_t first_word) const noexcept {
+    return subsumes_set(WindowSet{words, first_word});
 }
+
+bool NogoodDatabase::subsumes_sparse(SparseWords set) const noexcept { return subsumes_set(ListedSet{set}); }
 
 bool NogoodDatabase::subsumes_with(std::span<const std::uint64_t> words, AssumptionId a) const noexcept {
     if (empty_nogood_) return true;
     if (a.value < partners_.size()) {
-        const Environment& p = partners_[a.value];
-        if (window_intersects(p.words(), p.first_word(), words, 0)) return true;
+        if (sparse_intersects(partners_[a.value].sparse(), words)) return true;
     }
     return larger_with(words, a) || at_most_one_.other_member(a, words);
 }
 
 bool NogoodDatabase::excludes(const Environment& base, AssumptionId a) const noexcept {
     if (empty_nogood_) return true;
-    const Environment& p = partners(a);
-    if (window_intersects(p.words(), p.first_word(), base.words(), base.first_word())) return true;
+    if (sparse_intersects(partners(a).sparse(), base.sparse())) return true;
     if (a.value < not_pairs_.size()) {
-        const std::size_t own_word = a.value / word_bits;
+        const std::uint64_t own_word = a.value / word_bits;
         const std::uint64_t own_bit = std::uint64_t{1} << (a.value % word_bits);
+        const auto bw = base.words();
+        const auto bi = base.index();
         for (std::uint32_t i : not_pairs_[a.value]) {
             const Entry& n = entries_[i];
             if (!n.live) continue;
-            // n minus a within base (word by word, so nothing is allocated)?
+            // n minus a within base (a merge of the listed words, so nothing is allocated)?
             bool inside = true;
+            std::size_t k = 0;
             for (std::size_t w = 0; w < n.env.words().size() && inside; ++w) {
-                const std::size_t at = n.env.first_word() + w;
+                const std::uint64_t at = n.env.index()[w];
                 const std::uint64_t need = n.env.words()[w] & (at == own_word ? ~own_bit : ~std::uint64_t{0});
                 if (need == 0) continue;
-                inside = at >= base.first_word() && at < base.end_word() &&
-                         (need & ~base.words()[at - base.first_word()]) == 0;
+                while (k < bi.size() && bi[k] < at) ++k;
+                inside = k < bi.size() && bi[k] == at && (need & ~bw[k]) == 0;
             }
             if (inside) return true;
         }
     }
-    return at_most_one_.other_member(a, base.words(), base.first_word());
+    return at_most_one_.other_member(a, base.sparse());
 }
 
 bool NogoodDatabase::larger_with(std::span<const std::uint64_t> words, AssumptionId a, std::uint64_t sig) const noexcept {
     if (a.value >= not_pairs_.size()) return false;
     for (std::uint32_t i : not_pairs_[a.value]) {
         const Entry& n = entries_[i];
-        if (n.live && (n.sig & ~sig) == 0 && window_subset(n.env.words(), n.env.first_word(), words, 0)) return true;
+        if (n.live && (n.sig & ~sig) == 0 && sparse_subset(n.env.sparse(), words)) return true;
     }
     return false;
 }

@@ -64,7 +64,7 @@ private:
 // allocates nothing once the pools have grown (label_update.hpp).
 struct WeaveScratch {
     BitsetPool current{0}, unions{0}, minimal{0}, placed{0};
-    std::vector<std::uint32_t> index;  // the words the rows stand for (SparseWords::index)
+    std::vector<std::uint64_t> index;  // the words the rows stand for (SparseWords::index)
     MinimalFilter filter;
 };
 }  // namespace qm::atms::detail

@@ -44,16 +44,16 @@ TEST_CASE("atms/at_most_one_index: violated_by and other_member agree with count
         for (int q = 0; q < 40; ++q) {
             const Environment e = random_set(rng, 12, universe);
             const bool two = std::any_of(sets.begin(), sets.end(), [&](const Environment& s) { return shared(s, e) >= 2; });
-            CHECK(index.violated_by(e.words(), e.first_word()) == two);
+            CHECK(index.violated_by(e.window(), e.first_word()) == two);
             for (AssumptionId a : e.assumptions()) {
                 const auto of = index.of(a);
                 CHECK(static_cast<std::size_t>(std::count_if(sets.begin(), sets.end(), [&](const Environment& s) { return s.contains(a); })) == of.size());
                 const bool other = std::any_of(of.begin(), of.end(), [&](std::uint32_t c) { return shared(sets[c], e.without(a)) >= 1; });
-                CHECK(index.other_member(a, e.words(), e.first_word()) == other);
+                CHECK(index.other_member(a, e.window(), e.first_word()) == other);
                 std::vector<std::uint64_t> sw;
-                std::vector<std::uint32_t> si;
+                std::vector<std::uint64_t> si;
                 CHECK(index.other_member(a, sparse(e, q % 2 == 0, sw, si)) == other);
-                CHECK(index.other_member(a, e.without(a).words(), e.without(a).first_word()) == other);
+                CHECK(index.other_member(a, e.without(a).window(), e.without(a).first_word()) == other);
             }
         }
     }

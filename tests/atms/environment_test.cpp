@@ -19,7 +19,8 @@ std::set<std::uint32_t> random_set(std::mt19937& rng, std::uint32_t universe) {
 // The set as a raw bitset from word 0.
 std::vector<std::uint64_t> dense(const Environment& e) {
     std::vector<std::uint64_t> w(e.end_word(), 0);
-    std::copy(e.words().begin(), e.words().end(), w.begin() + static_cast<std::ptrdiff_t>(e.first_word()));
+    const auto window = e.window();
+    std::copy(window.begin(), window.end(), w.begin() + static_cast<std::ptrdiff_t>(e.first_word()));
     return w;
 }
 Environment env_of(const std::set<std::uint32_t>& s) {
@@ -50,12 +51,23 @@ TEST_CASE("atms/environment: operations agree with std::set on random sets (seve
         CHECK((ex.hash() == ey.hash()) >= (x == y));
         const bool subset = std::includes(y.begin(), y.end(), x.begin(), x.end());
         CHECK(ex.subset_of(ey) == subset);
-        CHECK(window_subset(ex.words(), ex.first_word(), ey.words(), ey.first_word()) == subset);
+        CHECK(window_subset(ex.window(), ex.first_word(), ey.window(), ey.first_word()) == subset);
         CHECK(words_subset(dense(ex), dense(ey)) == subset);
         std::set<std::uint32_t> common;
         std::set_intersection(x.begin(), x.end(), y.begin(), y.end(), std::inserter(common, common.end()));
-        CHECK(window_intersects(ex.words(), ex.first_word(), ey.words(), ey.first_word()) == !common.empty());
-        CHECK(window_intersects(ex.words(), ex.first_word(), dense(ey), 0) == !common.empty());
+        CHECK(window_intersects(ex.window(), ex.first_word(), ey.window(), ey.first_word()) == !common.empty());
+        CHECK(window_intersects(ex.window(), ex.first_word(), dense(ey), 0) == !common.empty());
+        // The stored form: listed non-zero words only, word indices increasing.
+        for (std::size_t i = 0; i < ex.words().size(); ++i) {
+            CHECK(ex.words()[i] != 0);
+            if (i > 0) CHECK(ex.index()[i - 1] < ex.index()[i]);
+        }
+        CHECK(sparse_subset(ex.sparse(), ey.sparse()) == subset);
+        CHECK(sparse_subset(ex.sparse(), dense(ey)) == subset);
+        CHECK(sparse_subset(ex.sparse(), ey.window(), ey.first_word()) == subset);
+        CHECK(sparse_intersects(ex.sparse(), ey.sparse()) == !common.empty());
+        CHECK(sparse_intersects(ex.sparse(), dense(ey)) == !common.empty());
+        CHECK(sparse_intersects(ex.sparse(), ey.window(), ey.first_word()) == !common.empty());
         std::set<std::uint32_t> u = x;
         u.insert(y.begin(), y.end());
         CHECK(join(ex, ey) == env_of(u));
@@ -117,13 +129,14 @@ TEST_CASE("atms/environment: windows of words: from_words with an offset, subset
         // y's window, padded with zero words on both sides and shifted, rebuilds y.
         const std::size_t pad = static_cast<std::size_t>(round % 3);
         std::vector<std::uint64_t> padded(pad, 0);
-        padded.insert(padded.end(), ey.words().begin(), ey.words().end());
+        const auto wy = ey.window();
+        padded.insert(padded.end(), wy.begin(), wy.end());
         padded.push_back(0);
         const std::size_t at = ey.first_word() >= pad ? ey.first_word() - pad : 0;
         if (ey.first_word() >= pad) {
             CHECK(Environment::from_words(padded, at) == ey);
             const bool subset = std::includes(y.begin(), y.end(), x.begin(), x.end());
-            CHECK(window_subset(ex.words(), ex.first_word(), padded, at) == subset);
+            CHECK(window_subset(ex.window(), ex.first_word(), padded, at) == subset);
         }
     }
     CHECK(Environment::from_words(std::vector<std::uint64_t>{0, 0}, 5) == Environment{});
@@ -137,7 +150,7 @@ namespace {
 // of every env it involves, so a row may have listed zero words), in increasing order.
 struct Sparse {
     std::vector<std::uint64_t> words;
-    std::vector<std::uint32_t> index;
+    std::vector<std::uint64_t> index;
     [[nodiscard]] SparseWords view() const { return {words, index}; }
 };
 Sparse sparse_of(const std::set<std::uint32_t>& s, std::mt19937& rng, std::uint32_t universe) {
@@ -167,13 +180,13 @@ TEST_CASE("atms/environment: SparseWords (listed words only) agree with std::set
         const Environment ex = env_of(x);
         const Sparse sy = sparse_of(y, rng, universe);
         CHECK(Environment::from_sparse(sy.view()) == env_of(y));
-        CHECK(window_subset(ex.words(), ex.first_word(), sy.view()) == std::includes(y.begin(), y.end(), x.begin(), x.end()));
+        CHECK(window_subset(ex.window(), ex.first_word(), sy.view()) == std::includes(y.begin(), y.end(), x.begin(), x.end()));
         std::set<std::uint32_t> common;
         std::set_intersection(x.begin(), x.end(), y.begin(), y.end(), std::inserter(common, common.end()));
-        CHECK(window_intersects(ex.words(), ex.first_word(), sy.view()) == !common.empty());
+        CHECK(window_intersects(ex.window(), ex.first_word(), sy.view()) == !common.empty());
     }
     CHECK(Environment::from_sparse({}) == Environment{});
     const std::vector<std::uint64_t> zeros{0, 0};
-    const std::vector<std::uint32_t> at{3, 90};
+    const std::vector<std::uint64_t> at{3, 90};
     CHECK(Environment::from_sparse({zeros, at}) == Environment{});
 }

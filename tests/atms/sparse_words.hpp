@@ -12,13 +12,14 @@ namespace qm::atms::test {
 // e as SparseWords: its non-zero words only, or (all_words) every word of its window, zero words
 // listed too. The vectors must outlive the view.
 inline SparseWords sparse(const Environment& e, bool all_words, std::vector<std::uint64_t>& words,
-                          std::vector<std::uint32_t>& index) {
+                          std::vector<std::uint64_t>& index) {
     words.clear();
     index.clear();
-    for (std::size_t w = 0; w < e.words().size(); ++w) {
-        if (e.words()[w] == 0 && !all_words) continue;
-        words.push_back(e.words()[w]);
-        index.push_back(static_cast<std::uint32_t>(e.first_word() + w));
+    const auto window = e.window();
+    for (std::size_t w = 0; w < window.size(); ++w) {
+        if (window[w] == 0 && !all_words) continue;
+        words.push_back(window[w]);
+        index.push_back(e.first_word() + w);
     }
     return {words, index};
 }
