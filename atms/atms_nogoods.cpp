@@ -6,6 +6,7 @@
 
 #include "qm/assert.hpp"
 #include <algorithm>
+#include <numeric>
 #include <bit>
 #include <utility>
 
@@ -54,9 +55,19 @@ JustId Atms::add_at_most_one(InformantId why, std::span<const AssumptionId> memb
         QM_REQUIRE(assumption_nodes_.contains(a), "unknown assumption id");
         nodes.push_back(assumption_nodes_[a]);
     }
-    // Duplicates collapse, keeping the first occurrence's place.
-    std::vector<char> seen(nodes.empty() ? 0 : std::max_element(nodes.begin(), nodes.end())->value + 1, 0);
-    std::erase_if(nodes, [&](NodeId n) { return std::exchange(seen[n.value], char{1}) != 0; });
+    // Duplicates collapse, keeping the first occurrence's place. Found by sorting the members' places
+    // (stable: the first occurrence leads its equals), so that a constraint costs what it holds, not
+    // the number of nodes (a table indexed by node made a scene's choice sets quadratic in its size).
+    std::vector<std::size_t> order(nodes.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return nodes[x].value < nodes[y].value; });
+    std::vector<char> keep(nodes.size(), 1);
+    for (std::size_t i = 1; i < order.size(); ++i)
+        if (nodes[order[i]] == nodes[order[i - 1]]) keep[order[i]] = 0;
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+        if (keep[i] != 0) nodes[kept++] = nodes[i];
+    nodes.resize(kept);
     const JustId j{static_cast<std::uint32_t>(justs_.size())};
     justs_.push_back(Justification{why, std::move(nodes), contradiction_, Justification::Kind::at_most_one});
     at_most_one_.push_back(j);

@@ -34,13 +34,17 @@ Environment Environment::of(std::span<const AssumptionId> as) {
 }
 
 void Environment::assign_listed(std::span<const std::uint64_t> words, std::span<const std::uint64_t> index) {
+    // Checked before anything changes, so that a refused id leaves the environment as it was.
     std::size_t k = 0;
-    for (std::uint64_t w : words) k += w != 0 ? 1 : 0;
+    for (std::size_t j = 0; j < words.size(); ++j) {
+        if (words[j] == 0) continue;
+        QM_REQUIRE(index[j] <= std::size_t{UINT32_MAX} / word_bits, "assumption id out of range");
+        ++k;
+    }
     data_.resize(2 * k);
     std::size_t at = 0;
     for (std::size_t j = 0; j < words.size(); ++j) {
         if (words[j] == 0) continue;
-        QM_REQUIRE(index[j] < std::size_t{UINT32_MAX} / word_bits, "assumption id out of range");
         data_[at] = words[j];
         data_[k + at] = index[j];
         ++at;
@@ -57,12 +61,15 @@ Environment Environment::from_words(std::span<const std::uint64_t> words, std::s
 
 void Environment::assign_words(std::span<const std::uint64_t> words, std::size_t first_word) {
     std::size_t k = 0;
-    for (std::uint64_t w : words) k += w != 0 ? 1 : 0;
+    for (std::size_t i = 0; i < words.size(); ++i) {
+        if (words[i] == 0) continue;
+        QM_REQUIRE(first_word + i <= std::size_t{UINT32_MAX} / word_bits, "assumption id out of range");
+        ++k;
+    }
     data_.resize(2 * k);
     std::size_t at = 0;
     for (std::size_t i = 0; i < words.size(); ++i) {
         if (words[i] == 0) continue;
-        QM_REQUIRE(first_word + i < std::size_t{UINT32_MAX} / word_bits, "assumption id out of range");
         data_[at] = words[i];
         data_[k + at] = first_word + i;
         ++at;
@@ -232,7 +239,7 @@ Environment join(const Environment& x, const Environment& y) {
             out[m++] = xw[i++] | yw[j++];
         }
     }
-    std::copy(out + cap, out + cap + m, out + m);
+    if (m != cap) std::copy(out + cap, out + cap + m, out + m);  // close the gap (std::copy needs distinct ranges)
     e.data_.resize(2 * m);
     return e;  // non-zero words of x or y stay non-zero
 }

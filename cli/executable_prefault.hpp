@@ -8,8 +8,9 @@
 //             16 pages around it), while populating the whole 4.2 MB of the light executable's code
 //             and constants takes about 0.15-0.2 ms: block.def took 54 faults in them and 20 in its
 //             data and bss, about 0.8 ms of a run of about 8 (docs/perf/startup.md, "Fourth pass").
-//             Page-cache pages only are mapped: nothing is read from disk that was not already
-//             cached by the exec.
+//             The populate reads as a first touch would: on a cold page cache it reads the whole
+//             code from disk at once, not only the pages this run needs (on a warm cache, the usual
+//             case for a command run again, nothing is read).
 // Failure:    advisory: a kernel without MADV_POPULATE_* (before Linux 5.14) or any error leaves the
 //             pages to be faulted in as before. Outputs never depend on it.
 #pragma once

@@ -15,7 +15,9 @@
 //             (docs/perf/startup.md), cannot load libedit and replaces itself with qm-atms-geometry
 //             as for a geometry command: the person at the terminal gets line editing and history.
 // Errors:     as the commands' (2 for bad input, diagnostics on err); the delegate returns 1 with
-//             a message on err when qm-atms-geometry cannot be started (missing, not executable).
+//             a message on err when qm-atms-geometry cannot be started (missing, not executable) for
+//             a geometry command; for a terminal's session it notes that and runs the session
+//             itself, without line editing.
 //             qm::InternalError and resource limits propagate to main, which names `doing`.
 #pragma once
 #include <istream>

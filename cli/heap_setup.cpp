@@ -46,7 +46,12 @@ void prepare_heap() noexcept {
     // that it ends a page below the boundary.
     malloc_trim(0);
     const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
-    const std::size_t probe_size = (mallinfo2().fordblks + page + 15) & ~std::size_t{15};
+#if __GLIBC_PREREQ(2, 33)
+    const std::size_t free_bytes = mallinfo2().fordblks;
+#else
+    const auto free_bytes = static_cast<std::size_t>(mallinfo().fordblks);  // mallinfo2 is glibc 2.33's
+#endif
+    const std::size_t probe_size = (free_bytes + page + 15) & ~std::size_t{15};
     const auto brk_end = reinterpret_cast<std::uintptr_t>(sbrk(0));
     const std::uintptr_t below = (probe_size + 2 * page - 1) & ~(page - 1);  // the probe, headers, slack
     const std::uintptr_t start = ((brk_end + below + huge_page - 1) & ~(huge_page - 1)) - below;

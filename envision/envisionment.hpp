@@ -32,7 +32,7 @@ struct ChainEnvisionment {
     std::vector<Transition> transitions;  // sorted by from, to, duration
     ChainTables tables;                   // the laws' arrivals, nearness ranks and settling (for questions)
     BehaviourGraph graph;
-    std::size_t nogoods = 0;              // minimal nogoods of the state space (Law 2, linkage, ...)
+    std::size_t nogoods = 0;              // minimal nogoods of the state space (Law 2, linkage, ..., and settling.rules')
     std::vector<bool> shown;              // empty: every state; else the states to print (--from)
     [[nodiscard]] bool is_shown(StateId s) const { return shown.empty() || shown[s.value]; }
     [[nodiscard]] std::size_t shown_count() const;

@@ -115,23 +115,30 @@ SourceLocation where_made(const engine::Engine& e, engine::FactId f) {
 }
 
 // Per chain object and motion, the assumption (PREDICATE O H) the laws make (bridge vocabulary);
-// a fact of the predicate that is not an assumption, or not of two arguments, is an error of the
-// laws, located at the rule that concludes it.
+// a fact of the predicate that is not an assumption, not of two arguments, or not of an object's name
+// and a definite sign (H is (+), (0) or (-)), is an error of the laws, located at the rule that
+// concludes it. `first`, if given, is set to where the laws make the first such fact.
 using PerMotion = std::vector<std::array<std::optional<atms::AssumptionId>, 3>>;
 std::optional<PerMotion> per_motion(engine::Engine& e, const std::map<std::string, std::size_t>& object_index, const char* predicate,
-                                    std::size_t objects, Diagnostics& diagnostics) {
-    const FactReader read(e, std::nullopt);
+                                    std::size_t objects, Diagnostics& diagnostics, std::optional<SourceLocation>* first = nullptr) {
     PerMotion out(objects);
     for (const engine::FactId f : e.facts_of(e.values().symbol(predicate))) {
         const engine::Fact& fact = e.facts().fact(f);
         const auto a = e.assumption(f);
-        if (fact.args.size() != 2 || !a) {
+        const auto is_sign = [&](engine::ValueId v) {
+            const engine::Value& x = e.values().value(v);
+            return x.kind == engine::ValueKind::direction && x.text.size() == 1 && (x.text[0] == '+' || x.text[0] == '0' || x.text[0] == '-');
+        };
+        if (fact.args.size() != 2 || !a || e.values().value(fact.args[0]).kind != engine::ValueKind::symbol || !is_sign(fact.args[1])) {
             diagnostics.error(where_made(e, f), "the laws conclude " + e.print(f) + ", but the envisioner reads (" + predicate +
-                                                    " O H) only as an assumption, one for each object and motion");
+                                                    " O H) only as an assumption, one for each object O and motion H of (+), (0), (-)");
             return std::nullopt;
         }
-        const auto it = object_index.find(read.symbol(fact.args[0]));
-        if (it != object_index.end()) out[it->second][static_cast<std::size_t>(read.sign(fact.args[1]) + 1)] = *a;
+        if (first && !*first) *first = where_made(e, f);
+        const engine::Value& h = e.values().value(fact.args[1]);
+        const std::size_t at = h.text[0] == '-' ? 0 : h.text[0] == '0' ? 1 : 2;
+        const auto it = object_index.find(e.values().value(fact.args[0]).text);
+        if (it != object_index.end()) out[it->second][at] = *a;
     }
     return out;
 }
@@ -187,26 +194,25 @@ bool read_settling(engine::Engine& e, const g::Mechanism& m, const Chain& chain,
     const std::size_t n = chain.objects.size();
     const char* const names[] = {v::step_allows, v::step_forbids, v::motion_now, v::collision_fixes, v::next_motion};
     std::vector<PerMotion> per;
+    std::optional<SourceLocation> made;  // where the laws make one of the settling assumptions (for errors)
     for (const char* name : names) {
-        auto p = per_motion(e, objects, name, n, diagnostics);
+        auto p = per_motion(e, objects, name, n, diagnostics, name == names[0] ? nullptr : &made);
         if (!p) return false;
         per.push_back(std::move(*p));
     }
     const PerMotion &allows = per[0], &forbids = per[1], &now = per[2], &fixes = per[3], &next = per[4];
-    // (no-collision O), and where the laws make one of the settling assumptions (for errors).
+    // (no-collision O)
     std::vector<std::optional<atms::AssumptionId>> none(n);
-    std::optional<SourceLocation> made;
-    const FactReader read(e, std::nullopt);
     for (const engine::FactId f : e.facts_of(e.values().symbol(v::no_collision))) {
         const engine::Fact& fact = e.facts().fact(f);
         const auto a = e.assumption(f);
-        if (fact.args.size() != 1 || !a) {
+        if (fact.args.size() != 1 || !a || e.values().value(fact.args[0]).kind != engine::ValueKind::symbol) {
             diagnostics.error(where_made(e, f), "the laws conclude " + e.print(f) + ", but the envisioner reads (" +
                                                     std::string(v::no_collision) + " O) only as an assumption, one for each object");
             return false;
         }
         if (!made) made = where_made(e, f);
-        const auto it = objects.find(read.symbol(fact.args[0]));
+        const auto it = objects.find(e.values().value(fact.args[0]).text);
         if (it != objects.end()) none[it->second] = *a;
     }
     for (std::size_t o = 0; o < n; ++o) {

@@ -208,7 +208,7 @@ private:
     // "rule NAME at FILE:LINE": the law that refutes a motion, for explanations.
     [[nodiscard]] std::string cite(std::uint8_t code) const {
         const auto& r = tables_.refuter(code);
-        return (r.rule.empty() ? std::string("the laws") : "rule " + r.rule) + " at " + r.where;
+        return (r.rule.empty() ? std::string("the laws") : "rule " + r.rule) + (r.where.empty() ? std::string() : " at " + r.where);
     }
 
     void explain_target(const StepOptions& s, const std::vector<StateId>& candidates, const std::vector<std::vector<std::int64_t>>& ranks) {

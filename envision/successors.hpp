@@ -13,7 +13,11 @@
 //             the motions the step allows it; also read once per chain into ChainTables and applied
 //             here by lookup: the Pareto front, atms/pareto_front.hpp); a hypothesis that matches no
 //             generated state is dropped (8.3.5). This file holds no law: it decides no rank,
-//             threshold, order of motions, nor which motion may follow which. The combination that
+//             threshold, order of motions, nor which motion may follow which. One limit: the
+//             settling table is per situation with at most one collision's outcome, so an object
+//             two collisions meet keeps the motions both outcomes allow (the intersection, here);
+//             for laws whose nogoods are pairwise per object, as settling.rules', that is the same
+//             as the laws' verdict on both outcomes at once. The combination that
 //             changes nothing is no transition, unless some pair wraps round a periodic axis: then
 //             the state has a transition to itself over an interval. A step that another preempts
 //             (Law 4: the laws' `preempts`) gives its transitions only if that one gives none.

@@ -181,16 +181,17 @@ TEST_CASE("cli/session: on a terminal the session runs in qm-atms-geometry; from
     CHECK(!ec);
     CHECK(exe.filename() == "qm-atms-geometry");
     CHECK(t.end_input() == 0);
-    // Without qm-atms-geometry beside it, the light one says so (exit 1) rather than run a session
-    // without editing.
+    // Without qm-atms-geometry beside it, the light one says so and runs the session itself, without
+    // line editing.
     const std::string dir = std::string(QM_BINARY_DIR) + "/session_light_alone";
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     std::filesystem::copy_file(std::string(QM_BINARY_DIR) + "/cli/qm-atms", dir + "/qm-atms");
     Terminal alone({scene("gears.def"), "-i"}, dir + "/qm-atms");
-    CHECK(alone.read_until("\x01never", 5).find("cannot run '" + dir + "/qm-atms-geometry': No such file or directory") !=
-          std::string::npos);
-    CHECK(alone.wait_exit() == 1);
+    const std::string said = alone.read_until("qm-atms[1]> ");
+    CHECK(said.find("note: cannot run '" + dir + "/qm-atms-geometry' (No such file or directory)") != std::string::npos);
+    CHECK(said.find("Type help.") != std::string::npos);
+    CHECK(alone.end_input() == 0);
     // The same copy reading a pipe runs the session itself.
     const std::string in = dir + "/input";
     std::ofstream(in) << "motions\n";
