@@ -171,6 +171,9 @@ TEST_CASE("cli/envision: laws that prefer among motions without a step-allows fo
          "nearness.rules:55:1: error: the laws prefer among the motions of scape-wheel but assume no (step-allows O H) for each of its motions"},
         {"  when (possible-motions ?o ?motions) (motion-value ?h)\n  then (step-allows ?o ?h)",
          "nearness.rules:41:1: error: the laws conclude (step-allows "},
+        // A motion that is no sign of Table 5.1 (the review found it written past a table's end).
+        {"  when (possible-motions ?o ?motions) (motion-value ?h)\n  then assume (step-allows ?o ?h) assume (step-allows ?o (?))",
+         "(?)), but the envisioner reads (step-allows O H) only as an assumption, one for each object O and motion H of (+), (0), (-)"},
     };
     for (std::size_t i = 0; i < broken.size(); ++i) {
         CAPTURE(i);
