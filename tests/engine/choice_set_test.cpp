@@ -13,6 +13,7 @@
 #include "engine/rule_spec_reader.hpp"
 #include "engine/run_report.hpp"
 #include "engine/why.hpp"
+#include "run_rule_text.hpp"
 #include <doctest/doctest.h>
 #include <algorithm>
 #include <memory>
@@ -21,15 +22,7 @@ using namespace qm::engine;
 
 namespace {
 std::unique_ptr<Engine> run(const std::string& text) {
-    qm::Diagnostics d;
-    ProgramSpec spec;
-    read_rule_text(text, "c.rules", spec, d);
-    auto p = compile_program(spec, d);
-    REQUIRE(p.has_value());
-    auto e = std::make_unique<Engine>(std::move(p->program), std::move(p->values));
-    e->run(d);
-    REQUIRE(!d.has_errors());
-    return e;
+    return test::run_rule_text(text, "c.rules");
 }
 FactId fact(Engine& e, const std::string& predicate, std::vector<ValueId> args) {
     auto f = e.find(e.values().symbol(predicate), args);

@@ -4,6 +4,7 @@
 #include "engine/consistency.hpp"
 #include "engine/rule_compiler.hpp"
 #include "engine/rule_spec_reader.hpp"
+#include "run_rule_text.hpp"
 #include <doctest/doctest.h>
 #include <memory>
 
@@ -12,15 +13,7 @@ using namespace qm::engine;
 namespace {
 
 std::unique_ptr<Engine> run_text(const std::string& text, const std::string& file) {
-    qm::Diagnostics d;
-    ProgramSpec spec;
-    read_rule_text(text, file, spec, d);
-    auto p = compile_program(spec, d);
-    REQUIRE(p.has_value());
-    auto e = std::make_unique<Engine>(std::move(p->program), std::move(p->values));
-    e->run(d);
-    REQUIRE(!d.has_errors());
-    return e;
+    return test::run_rule_text(text, file);
 }
 
 // Four switches: a and b never together (line 7), nor c and d (line 10), nor c with (lit), which b

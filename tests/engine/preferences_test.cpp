@@ -10,6 +10,7 @@
 #include "engine/rule_printer.hpp"
 #include "engine/rule_spec_reader.hpp"
 #include <algorithm>
+#include "run_rule_text.hpp"
 #include <doctest/doctest.h>
 #include <map>
 #include <memory>
@@ -20,18 +21,9 @@ using namespace qm::engine;
 
 namespace {
 
-// The program in `text` (read as `file`) compiled and run: no diagnostic expected. An Engine can be
-// neither copied nor moved, hence the pointer.
+// The program in `text` (read as `file`) compiled and run (run_rule_text.hpp).
 std::unique_ptr<Engine> run_text(const std::string& text, const std::string& file) {
-    qm::Diagnostics d;
-    ProgramSpec spec;
-    read_rule_text(text, file, spec, d);
-    auto p = compile_program(spec, d);
-    REQUIRE(p.has_value());
-    auto e = std::make_unique<Engine>(std::move(p->program), std::move(p->values));
-    e->run(d);
-    REQUIRE(!d.has_errors());
-    return e;
+    return test::run_rule_text(text, file);
 }
 const char* program = R"(fact (ranked a)
 fact (ranked b)

@@ -11,6 +11,7 @@
 #include "engine/engine.hpp"
 #include "engine/rule_compiler.hpp"
 #include "engine/rule_spec_reader.hpp"
+#include "run_rule_text.hpp"
 #include <doctest/doctest.h>
 #include <map>
 #include <memory>
@@ -21,15 +22,7 @@ using namespace qm::engine;
 namespace {
 
 std::unique_ptr<Engine> run(const std::string& text) {
-    qm::Diagnostics d;
-    ProgramSpec spec;
-    read_rule_text(text, "builtins.rules", spec, d);
-    auto p = compile_program(spec, d);
-    REQUIRE(p.has_value());
-    auto e = std::make_unique<Engine>(std::move(p->program), std::move(p->values));
-    e->run(d);
-    REQUIRE(!d.has_errors());
-    return e;
+    return test::run_rule_text(text, "builtins.rules");
 }
 
 // Every fact of predicate, as its argument texts.
