@@ -30,18 +30,20 @@ const Environment& AtMostOneIndex::members(std::uint32_t c) const {
 
 namespace {
 // The two forms of the query set for other_member_in. meets(m, own_word, own_bit): does the set hold
-// a member of m other than the one at (own_word, own_bit)? Each costs what m lists (a raw window is
-// indexed directly; listed words are merged with m's).
+// a member of m other than the one at (own_word, own_bit)? m, a constraint's members, may list
+// thousands of words (one choice over 100,000 states: 1,563), the query set a few, so each costs
+// what the query set lists times a binary search in m's word indices, never a walk through all of m
+// (that walk made one large choice set quadratic).
 struct WindowSet {
     std::span<const std::uint64_t> words;
     std::size_t first;
     [[nodiscard]] bool meets(const Environment& m, std::size_t own_word, std::uint64_t own_bit) const noexcept {
-        for (std::size_t j = 0; j < m.words().size(); ++j) {
-            const std::size_t w = m.index()[j];
-            if (w < first) continue;
-            if (w - first >= words.size()) break;
-            std::uint64_t shared = m.words()[j] & words[w - first];
-            if (w == own_word) shared &= ~own_bit;
+        const auto mi = m.index();
+        const auto mw = m.words();
+        for (auto it = std::lower_bound(mi.begin(), mi.end(), first); it != mi.end() && *it - first < words.size(); ++it) {
+            const auto j = static_cast<std::size_t>(it - mi.begin());
+            std::uint64_t shared = mw[j] & words[*it - first];
+            if (*it == own_word) shared &= ~own_bit;
             if (shared != 0) return true;
         }
         return false;
@@ -50,18 +52,15 @@ struct WindowSet {
 struct ListedSet {
     SparseWords set;
     [[nodiscard]] bool meets(const Environment& m, std::size_t own_word, std::uint64_t own_bit) const noexcept {
-        const auto mw = m.words();
         const auto mi = m.index();
-        std::size_t i = 0, j = 0;
-        while (i < mi.size() && j < set.index.size()) {
-            if (mi[i] < set.index[j]) ++i;
-            else if (set.index[j] < mi[i]) ++j;
-            else {
-                std::uint64_t shared = mw[i] & set.words[j];
-                if (mi[i] == own_word) shared &= ~own_bit;
-                if (shared != 0) return true;
-                ++i, ++j;
-            }
+        const auto mw = m.words();
+        auto from = mi.begin();
+        for (std::size_t j = 0; j < set.index.size() && from != mi.end(); ++j) {
+            from = std::lower_bound(from, mi.end(), set.index[j]);
+            if (from == mi.end() || *from != set.index[j]) continue;
+            std::uint64_t shared = mw[static_cast<std::size_t>(from - mi.begin())] & set.words[j];
+            if (*from == own_word) shared &= ~own_bit;
+            if (shared != 0) return true;
         }
         return false;
     }
