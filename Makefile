@@ -1,6 +1,6 @@
 # Thin wrapper around CMake so the README's two commands stay short.
 #   make run   install what the executable needs, build only qm-atms, analyse the bundled scene
-#              (the target qm-atms builds both its executables: qm-atms and qm-atms-geometry)
+#              (the one executable, build/cli/qm-atms)
 #   make test  install every dependency, build everything (tests, benchmarks), run every test
 # `make run` builds the one target the first answer needs (the laws in rules/ are read at run time,
 # nothing to build); `make test` then builds the rest in the same tree, reusing what run built.

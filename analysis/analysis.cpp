@@ -6,7 +6,7 @@
 #include "scene/direction_text.hpp"
 #include "analysis/kinematic_chains.hpp"
 #include "engine/preferences.hpp"
-#include "engine/program_cache.hpp"
+#include "engine/rule_compiler.hpp"
 #include "scene/vocabulary.hpp"
 #include "scene/what_if.hpp"
 #include "qm/assert.hpp"
@@ -20,12 +20,11 @@ using engine::ValueId;
 namespace {
 
 // Every *.rules file directly in dir, in name order, checked as laws for a scene of this many dimensions.
-std::optional<engine::LoadedProgram> load_rules(const std::filesystem::path& dir, const std::filesystem::path& cache,
-                                                const Scene& scene, Diagnostics& diagnostics) {
+std::optional<engine::LoadedProgram> load_rules(const std::filesystem::path& dir, const Scene& scene,
+                                                Diagnostics& diagnostics) {
     const std::vector<std::string> files = law_files(dir, diagnostics);
     if (files.empty()) return std::nullopt;
-    return engine::load_programs_cached(files, diagnostics,
-                                        law_check_options(scene.translation_arity(), "scene '" + scene.name + "'"), cache);
+    return engine::load_programs(files, diagnostics, law_check_options(scene.translation_arity(), "scene '" + scene.name + "'"));
 }
 
 // Law 1's choice sets, by object: which assumption stands for which motion.
@@ -65,8 +64,7 @@ std::optional<IdVector<ObjectId, ObjectChoices>> read_choices(const Scene& scene
 std::vector<std::string> law_files(const std::filesystem::path& dir, Diagnostics& diagnostics) {
     std::error_code ec;
     std::vector<std::string> files;
-    // Why the folder gives no laws, in words a user can act on (issue 19: an unreadable folder
-    // said `found none here`).
+    // Why the folder gives no laws, in words a user can act on.
     auto refuse = [&](const std::string& why) {
         diagnostics.error({dir.string(), 1, 1}, "expected a folder of .rules files (the laws), but " + why);
         return std::vector<std::string>{};
@@ -263,7 +261,7 @@ std::unique_ptr<Analysis::State> build_state(const Scene& scene, const AnalysisO
 }
 
 std::optional<Analysis> analyse(const Scene& scene, const AnalysisOptions& options, Diagnostics& diagnostics) {
-    auto loaded = load_rules(options.rules_directory, options.rule_cache, scene, diagnostics);
+    auto loaded = load_rules(options.rules_directory, scene, diagnostics);
     if (!loaded) return std::nullopt;
     const std::shared_ptr<const Laws> laws = share_laws(std::move(*loaded));
     if (scene.situations.empty()) {

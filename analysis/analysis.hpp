@@ -50,9 +50,6 @@ struct WhyLimits {
 
 struct AnalysisOptions {
     std::filesystem::path rules_directory;  // every *.rules file directly in it, loaded in name order
-    // Where the compiled laws are kept between runs (engine/program_cache.hpp); empty: read and
-    // compiled at every run. The result is the same either way.
-    std::filesystem::path rule_cache;
     std::vector<Motion> given;              // `--given`: current motions added to every situation
     std::vector<QueryFact> without;         // `--without`: contacts/forces taken away everywhere
     std::size_t combination_limit = 100000; // per chain: stop enumerating after this many (--limit)

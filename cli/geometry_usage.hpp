@@ -2,10 +2,7 @@
 // Provides:   the usage lines of the commands that need the geometry stack (FCL, geometry/,
 //             bridge/, envision/): --emit-def and --places (cli/metric_command.hpp), draw
 //             (cli/draw_command.hpp), explore (cli/explore_command.hpp) and envision
-//             (cli/envision_command.hpp). They live apart from those commands so that the light
-//             qm-atms, which links none of the geometry stack (cli/geometry_dispatch.hpp,
-//             docs/perf/startup.md), prints the whole `--help` itself instead of starting
-//             qm-atms-geometry for it.
+//             (cli/envision_command.hpp), for `--help` and each command's usage error.
 // Errors:     none.
 #pragma once
 

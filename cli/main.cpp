@@ -1,15 +1,12 @@
 // cli/main.cpp: the qm-atms command. The only place that prints diagnostics and picks the exit
 // status: 0 success, 2 bad input, 1 internal error (STYLE.md section 6).
-// Compiled into both executables of cli/ (cli/geometry_dispatch.hpp): the light qm-atms and
-// qm-atms-geometry differ only in geometry_command() (cli/geometry_command.hpp), which runs the
-// command lines that need the geometry stack, or hands them to qm-atms-geometry.
 #include "qm/assert.hpp"
 #include "check_command.hpp"
-#include "geometry_command.hpp"
-#include "geometry_dispatch.hpp"
+#include "draw_command.hpp"
+#include "envision_command.hpp"
+#include "explore_command.hpp"
 #include "geometry_usage.hpp"
-#include "executable_prefault.hpp"
-#include "heap_setup.hpp"
+#include "metric_command.hpp"
 #include "resource_limits.hpp"
 #include "run_command.hpp"
 #include "scene_command.hpp"
@@ -18,7 +15,6 @@
 #include <new>
 #include <string>
 #include <vector>
-#include <unistd.h>
 
 namespace {
 
@@ -45,8 +41,6 @@ int main(int argc, char** argv) {
                       << qm::cli::check_usage();
             return 0;
         }
-        qm::cli::prepare_heap();  // every command below may grow a large heap (cli/heap_setup.hpp)
-        qm::cli::prefault_executable();  // and touches much of the code (cli/executable_prefault.hpp)
         if (args[0] == "run") {
             doing = "running " + (args.size() > 1 ? args[1] : std::string("a rule program"));
             return qm::cli::run_command(std::span<const std::string>(args).subspan(1), std::cout, std::cerr);
@@ -55,11 +49,23 @@ int main(int argc, char** argv) {
             doing = "checking " + (args.size() > 1 ? args[1] : std::string("the laws"));
             return qm::cli::check_command(std::span<const std::string>(args).subspan(1), std::cout, std::cerr);
         }
-        // envision, draw, explore, --emit-def, --places, a metric scene (cli/geometry_dispatch.hpp)
-        if (qm::cli::needs_geometry(args)) return qm::cli::geometry_command(argv, args, std::cin, std::cout, std::cerr, doing);
-        // a session on a terminal: line editing is qm-atms-geometry's (cli/geometry_dispatch.hpp)
-        if (qm::cli::interactive_on_terminal(args, isatty(STDIN_FILENO) != 0))
-            return qm::cli::terminal_session(argv, args, std::cin, std::cout, std::cerr, doing);
+        const auto rest = std::span<const std::string>(args).subspan(1);
+        const std::string what = args.size() > 1 ? args[1] : std::string("a metric scene");
+        if (args[0] == "envision") {  // the envisioner (cli/envision_command.hpp)
+            doing = "envisioning " + what;
+            return qm::cli::envision_command(rest, std::cout, std::cerr);
+        }
+        if (args[0] == "draw" || args[0] == "explore") {  // pictures of metric scenes
+            doing = "drawing " + what;
+            return args[0] == "draw" ? qm::cli::draw_command(rest, std::cout, std::cerr)
+                                     : qm::cli::explore_command(rest, std::cout, std::cerr);
+        }
+        if (args[0] == "--emit-def" || args[0] == "--places") {  // metric scenes (cli/metric_command.hpp)
+            doing = "reading " + what;
+            return args[0] == "--emit-def" ? qm::cli::emit_def_command(rest, std::cout, std::cerr)
+                                           : qm::cli::places_command(rest, std::cout, std::cerr);
+        }
+        // An Alex scene, or a metric scene analysed at --config as the scene --emit-def writes.
         doing = "analysing " + args[0];
         return qm::cli::scene_command(args, std::cin, std::cout, std::cerr);
     } catch (const qm::LimitReached& e) {  // a resource limit (cli/resource_limits.hpp): bad input at these settings

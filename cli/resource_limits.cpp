@@ -1,6 +1,5 @@
 // cli/resource_limits.cpp: the limit options and their messages (cli/resource_limits.hpp).
 #include "resource_limits.hpp"
-#include "heap_setup.hpp"
 #include <cctype>
 #include <charconv>
 #include <cstdio>
@@ -104,7 +103,6 @@ void apply_memory_limit(const ResourceLimits& limits) {
     if (::getrlimit(RLIMIT_AS, &r) != 0) return;
     const rlim_t want = static_cast<rlim_t>(limits.max_memory);
     if (r.rlim_max != RLIM_INFINITY && want > r.rlim_max) return;  // a lower hard limit is already set
-    if (limits.max_memory < heap_reserve_limit_floor) release_heap_reserve();  // cli/heap_setup.hpp
     r.rlim_cur = want;
     if (::setrlimit(RLIMIT_AS, &r) == 0) applied_memory_limit = limits.max_memory;
 #else

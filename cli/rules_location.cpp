@@ -1,7 +1,6 @@
 // cli/rules_location.cpp
 #include "rules_location.hpp"
 #include <cstdlib>
-#include <string_view>
 #include <system_error>
 
 namespace qm::cli {
@@ -19,14 +18,6 @@ std::optional<std::filesystem::path> default_rules_directory() {
     if (fs::is_directory(QM_RULES_SOURCE_DIR, ec)) return fs::path(QM_RULES_SOURCE_DIR);
 #endif
     return std::nullopt;
-}
-
-std::filesystem::path default_rule_cache() {
-    namespace fs = std::filesystem;
-    if (const char* env = std::getenv("QM_RULE_CACHE"); env && *env) return std::string_view(env) == "off" ? fs::path() : fs::path(env);
-    if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return fs::path(x) / "qm-atms" / "rules";
-    if (const char* h = std::getenv("HOME"); h && *h) return fs::path(h) / ".cache" / "qm-atms" / "rules";
-    return {};
 }
 
 }  // namespace qm::cli

@@ -10,8 +10,4 @@
 
 namespace qm::cli {
 [[nodiscard]] std::optional<std::filesystem::path> default_rules_directory();
-// default_rule_cache(), where the compiled laws are kept between runs (engine/program_cache.hpp):
-// $QM_RULE_CACHE (`off`: no cache); $XDG_CACHE_HOME/qm-atms/rules; ~/.cache/qm-atms/rules; else
-// none (empty). A folder that cannot be created or written only means no cache.
-[[nodiscard]] std::filesystem::path default_rule_cache();
 }

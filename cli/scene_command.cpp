@@ -7,7 +7,7 @@
 #include "analysis/result_printer.hpp"
 #include "analysis/why_printer.hpp"
 #include "exit_owned.hpp"
-#include "geometry_dispatch.hpp"
+#include "bridge/scene_at_config.hpp"
 #include "query_text.hpp"
 #include "rules_location.hpp"
 #include "scene/scene_parser.hpp"
@@ -16,6 +16,7 @@
 #include "qm/file_text.hpp"
 #include "qm/source_text.hpp"
 #include "session.hpp"
+#include <cctype>
 #include <charconv>
 #include <optional>
 #include <sstream>
@@ -24,7 +25,7 @@ namespace qm::cli {
 namespace {
 
 // The scene of options.scene: a metric scene at --config, else an Alex scene. Errors in d.
-std::optional<scene::Scene> load_scene(const SceneOptions& options, MetricSceneReader read_metric, Diagnostics& d,
+std::optional<scene::Scene> load_scene(const SceneOptions& options, Diagnostics& d,
                                        std::ostream& err) {
     FileText file = read_file_text(options.scene);
     if (!file.text) {
@@ -32,14 +33,8 @@ std::optional<scene::Scene> load_scene(const SceneOptions& options, MetricSceneR
         return std::nullopt;
     }
     if (is_metric_scene(*file.text)) {
-        // The light qm-atms sent a metric scene to qm-atms-geometry (cli/geometry_dispatch.hpp);
-        // it meets one here only if the file became one since.
-        if (!read_metric) {
-            d.error({options.scene, 1, 1}, "a metric scene (Defmechanism) is read by qm-atms-geometry, not by this executable");
-            return std::nullopt;
-        }
         // A metric scene is analysed at a configuration, as the Alex scene --emit-def writes it.
-        auto scene = read_metric(options.scene, options.config.value_or(""), d);
+        auto scene = bridge::read_scene_at_config(options.scene, options.config.value_or(""), d);
         if (scene && !d.items().empty()) {
             d.print(err);  // warnings (e.g. a contact an Alex scene cannot state)
             d = Diagnostics{};
@@ -92,6 +87,21 @@ void print_results(const analysis::Analysis& analysis, const SceneOptions& optio
 
 }  // namespace
 
+bool is_metric_scene(std::string_view text) {
+    std::size_t i = text.starts_with(SourceText::byte_order_mark) ? SourceText::byte_order_mark.size() : 0;
+    for (;;) {
+        while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+        if (i >= text.size() || text[i] != ';') break;
+        while (i < text.size() && text[i] != '\n') ++i;
+    }
+    if (i >= text.size() || text[i] != '(') return false;
+    for (++i; i < text.size() && std::isspace(static_cast<unsigned char>(text[i]));) ++i;
+    std::string word;
+    for (; i < text.size() && std::isalnum(static_cast<unsigned char>(text[i])) && word.size() < 12; ++i)
+        word += static_cast<char>(std::tolower(static_cast<unsigned char>(text[i])));
+    return word == "defmechanism";
+}
+
 std::string scene_usage() {
     return "usage: qm-atms SCENE.def [--json] [--kinematic] [--why FACT [--situation N] [--full]] [--given 'OBJ TRANS ROT']...\n"
            "                         [--without 'Contact A B' | 'Force OBJ [CAUSE]']... [--with 'Contact A B' | 'Force OBJ DIR ORIGIN [CAUSE]']...\n"
@@ -119,8 +129,7 @@ std::string scene_usage() {
            std::string(limits_usage());
 }
 
-int scene_command(std::span<const std::string> args, std::istream& in, std::ostream& out, std::ostream& err,
-                  MetricSceneReader read_metric) {
+int scene_command(std::span<const std::string> args, std::istream& in, std::ostream& out, std::ostream& err) {
     auto options = parse_scene_options(args, err);
     if (!options) {
         err << scene_usage();
@@ -128,7 +137,7 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     }
     apply_memory_limit(options->limits);
     Diagnostics d;
-    std::optional<scene::Scene> scene = load_scene(*options, read_metric, d, err);
+    std::optional<scene::Scene> scene = load_scene(*options, d, err);
     if (!scene || d.has_errors()) {
         d.print(err);
         return 2;
@@ -159,7 +168,6 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
         d.error({options->interactive ? "-i" : options->why ? "--why" : "--situation", 1, 1},
                 "expected a scene with situations to ask about, but " + options->scene +
                     " states none (no Defstates, Situation or CONTACT list)");
-    ao.rule_cache = default_rule_cache();
     if (options->rules) ao.rules_directory = *options->rules;
     else if (auto dir = default_rules_directory()) ao.rules_directory = *dir;
     else d.error({"--rules", 1, 1}, "expected the folder of laws: none installed beside qm-atms; give --rules DIR");

@@ -99,7 +99,5 @@ function(qm_module_tests module)
       QM_SOURCE_DIR="${CMAKE_SOURCE_DIR}" QM_BINARY_DIR="${CMAKE_BINARY_DIR}")
     qm_defaults(${name})
     add_test(NAME ${name} COMMAND ${name} WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
-    # A qm-atms the test runs keeps its compiled laws in the build tree, never in the real home.
-    set_tests_properties(${name} PROPERTIES ENVIRONMENT "QM_RULE_CACHE=${CMAKE_BINARY_DIR}/test-rule-cache")
   endforeach()
 endfunction()

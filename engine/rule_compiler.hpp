@@ -41,7 +41,7 @@ struct LoadedProgram {
 [[nodiscard]] std::optional<LoadedProgram> load_programs(std::span<const std::string> paths, Diagnostics& diagnostics,
                                                          const LawCheckOptions& laws = {});
 // The same, and gives every file the load read (those named and those they include), each with
-// the text it was read with: what a cached compiled form must be checked against (program_cache.hpp).
+// the text it was read with, for diagnostics that quote a source line.
 class SourceTexts;
 [[nodiscard]] std::optional<LoadedProgram> load_programs(std::span<const std::string> paths, Diagnostics& diagnostics,
                                                          const LawCheckOptions& laws, SourceTexts& sources);

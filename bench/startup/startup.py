@@ -1,27 +1,22 @@
 #!/usr/bin/env python3
-# bench/startup/startup.py: start-up of qm-atms builds side by side (issue 15 item 1,
-# docs/perf/startup.md). For each command line, whole-process runs of every build, interleaved
+# bench/startup/startup.py: start-up of qm-atms builds side by side (docs/perf/startup.md). For each command line, whole-process runs of every build, interleaved
 # (A, B, A, B, ...) so that the load of the shared machine falls on all alike; prints, per build,
 # the median and minimum wall time and the median CPU time (user + sys, from wait4), in ms, and the
 # ratio of medians to the first build. With --callgrind, also each run's instruction count under
-# valgrind's callgrind (repeatable where wall times are not), following an exec into
-# qm-atms-geometry (--trace-children), and the share spent in the dynamic loader's relocation.
+# valgrind's callgrind (repeatable where wall times are not), and the share spent in the dynamic
+# loader's relocation.
 # /bin/true is timed alongside as the floor of a process start on this machine (in the same
 # interleaving, each command line's own /bin/true median and each build's ratio to it), with the
-# median of minor page faults (wait4's ru_minflt) of each. --cache hit gives each build its own
-# compiled-rules cache folder, filled by one run first (every timed run a hit); --cache off sets
-# QM_RULE_CACHE=off; default: the environment as it is.
+# median of minor page faults (wait4's ru_minflt) of each.
 # Prints numbers; passes or fails nothing (STYLE.md section 8).
 #
-# Usage: bench/startup/startup.py [--reps N] [--callgrind] [--rules DIR] [--all-alex] [--only NAME] [--cache hit|off] QM_ATMS...
+# Usage: bench/startup/startup.py [--reps N] [--callgrind] [--rules DIR] [--all-alex] [--only NAME] QM_ATMS...
 #   e.g. bench/startup/startup.py --reps 101 /tmp/old/qm-atms build/cli/qm-atms
-#   Each QM_ATMS is an executable (the light qm-atms finds qm-atms-geometry beside it). The laws
-#   are given with --rules (default: this tree's rules/) so that every build reads the same.
+#   Each QM_ATMS is an executable. The laws are given with --rules (default: this tree's rules/) so that every build reads the same.
 import argparse
 import glob
 import os
 import re
-import shutil
 import statistics
 import subprocess
 import sys
@@ -37,14 +32,12 @@ parser.add_argument("--callgrind", action="store_true")
 parser.add_argument("--rules", default=os.path.join(root, "rules"))
 parser.add_argument("--only", help="run only the command lines whose name contains this")
 parser.add_argument("--all-alex", action="store_true", help="every scene of scenarios/alex, not only the three below")
-parser.add_argument("--cache", choices=["env", "hit", "off"], default="env")
 parser.add_argument("builds", nargs="+")
 a = parser.parse_args()
 
 alex = os.path.join(root, "scenarios", "alex")
 metric = os.path.join(root, "scenarios", "metric")
-# name -> arguments. The Alex scenes are the issue's targets (10 ms); --help the 3 ms one; the
-# metric ones show what the hand-over to qm-atms-geometry costs on top of the geometry itself.
+# name -> arguments: --help, Alex scenes of several sizes, a rule program and a metric scene.
 commands = [
     ("--help", ["--help"]),
     ("block.def", [os.path.join(alex, "block.def"), "--rules", a.rules]),
@@ -60,15 +53,7 @@ if a.only:
     commands = [c for c in commands if a.only in c[0]]
 
 
-cache_root = tempfile.mkdtemp(prefix="qm-startup-cache-")
-environments = {}
-for i, b in enumerate(a.builds):
-    env = dict(os.environ)
-    if a.cache == "off":
-        env["QM_RULE_CACHE"] = "off"
-    elif a.cache == "hit":
-        env["QM_RULE_CACHE"] = os.path.join(cache_root, str(i))
-    environments[b] = env
+environments = {b: dict(os.environ) for b in a.builds}
 
 
 def spawn(argv, env=os.environ):
@@ -98,13 +83,13 @@ def instructions(argv):
         return total, reloc
 
 
-print("# %d runs each, interleaved; cache %s; load at start %s; %s" % (a.reps, a.cache, " ".join(open("/proc/loadavg").read().split()[:3]),
+print("# %d runs each, interleaved; load at start %s; %s" % (a.reps, " ".join(open("/proc/loadavg").read().split()[:3]),
                                                             time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())))
 true_runs = []
 for name, args in commands:
     runs = {b: [] for b in a.builds}
     own_true = []
-    for b in a.builds:  # the cache entry stored before the timed runs (--cache hit)
+    for b in a.builds:  # a warm-up run each
         spawn([b] + args, environments[b])
     for rep in range(a.reps):
         order = a.builds if rep % 2 == 0 else a.builds[::-1]
@@ -132,4 +117,3 @@ for name, args in commands:
         print(line)
 wall = [r[0] * 1000 for r in true_runs]
 print("\n/bin/true: wall median %.2f ms (min %.2f), %d runs" % (statistics.median(wall), min(wall), len(wall)))
-shutil.rmtree(cache_root, ignore_errors=True)

@@ -99,10 +99,9 @@ TEST_CASE("cli/limits: --max-memory stops a program that needs more, exit 2, not
     CHECK(r.err == "qm-atms: error: memory limit 200M reached while running " + grow + "; raise it with --max-memory\n");
 }
 
-// The heap's reserve (cli/heap_setup.hpp, 128 MB of address space mapped before the limit is set)
-// must not let a smaller limit be overrun inside it: the process's peak resident memory, read for
-// exactly this child by wait4, stays under the limit.
-TEST_CASE("cli/limits: a --max-memory below the heap's reserve still bounds the process") {
+// A small limit bounds the whole process: its peak resident memory, read for exactly this child by
+// wait4, stays under the limit.
+TEST_CASE("cli/limits: a small --max-memory still bounds the process") {
     posix_spawn_file_actions_t io;
     posix_spawn_file_actions_init(&io);
     posix_spawn_file_actions_addopen(&io, 1, "/dev/null", O_WRONLY, 0);

@@ -33,7 +33,7 @@ struct RunIn {
     std::string folder;
 };
 
-// Runs the executable at `path` (e.g. QM_BINARY_DIR/cli/qm-atms-geometry) with `args`; `tag` keeps
+// Runs the executable at `path` (e.g. a copy of qm-atms) with `args`; `tag` keeps
 // the temporary files of different test programs apart.
 inline Run run_executable(const std::string& path, const std::string& args, const std::string& tag, const RunIn& how = {}) {
     static int counter = 0;
@@ -51,8 +51,7 @@ inline Run run_executable(const std::string& path, const std::string& args, cons
     return r;
 }
 
-// The qm-atms command as users run it: the light executable, which hands geometry commands to
-// qm-atms-geometry beside it (cli/geometry_dispatch.hpp).
+// The qm-atms command as users run it.
 inline Run qm_atms(const std::string& args, const std::string& tag, const RunIn& how = {}) {
     return run_executable(std::string(QM_BINARY_DIR) + "/cli/qm-atms", args, tag, how);
 }

@@ -170,36 +170,6 @@ TEST_CASE("cli/session: on a terminal: prompt, history with the Up arrow, a newl
     CHECK(t.keep_.find('\n') != std::string::npos);
 }
 
-// The light qm-atms is linked statically and has no line editing: a session on a terminal is handed
-// to qm-atms-geometry (cli/geometry_dispatch.hpp, interactive_on_terminal), which has it; the
-// process at the prompt is qm-atms-geometry. From a pipe, the session stays in qm-atms.
-TEST_CASE("cli/session: on a terminal the session runs in qm-atms-geometry; from a pipe in qm-atms") {
-    Terminal t({scene("gears.def"), "-i"});
-    CHECK(t.read_until("qm-atms[1]> ").find("Type help.") != std::string::npos);
-    std::error_code ec;
-    const auto exe = std::filesystem::read_symlink("/proc/" + std::to_string(t.pid()) + "/exe", ec);
-    CHECK(!ec);
-    CHECK(exe.filename() == "qm-atms-geometry");
-    CHECK(t.end_input() == 0);
-    // Without qm-atms-geometry beside it, the light one says so and runs the session itself, without
-    // line editing.
-    const std::string dir = std::string(QM_BINARY_DIR) + "/session_light_alone";
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    std::filesystem::copy_file(std::string(QM_BINARY_DIR) + "/cli/qm-atms", dir + "/qm-atms");
-    Terminal alone({scene("gears.def"), "-i"}, dir + "/qm-atms");
-    const std::string said = alone.read_until("qm-atms[1]> ");
-    CHECK(said.find("note: cannot run '" + dir + "/qm-atms-geometry' (No such file or directory)") != std::string::npos);
-    CHECK(said.find("Type help.") != std::string::npos);
-    CHECK(alone.end_input() == 0);
-    // The same copy reading a pipe runs the session itself.
-    const std::string in = dir + "/input";
-    std::ofstream(in) << "motions\n";
-    const auto piped = qm::test::run_executable(dir + "/qm-atms", scene("gears.def") + " -i <" + in, "session");
-    CHECK(piped.status == 0);
-    CHECK(piped.out.find("Motions: 6 consistent combinations") != std::string::npos);
-}
-
 // Issue 17 item 5: `with` answers from the labels already computed when what it adds is a contact of
 // another situation; the answer must be the one a fresh analysis gives (--with on the command line
 // analyses the larger scene afresh), in every part of the situation's JSON.
