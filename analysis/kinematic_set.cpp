@@ -27,7 +27,7 @@ std::string alternatives(const Dirs& ds) {
 }
 
 // A stable verdict that holds only because the forces select not moving among motions blocking and
-// pushing allow says so (issue 17 item 6): which objects the forces hold, and in which directions.
+// pushing allow says so: which objects the forces hold, and in which directions.
 void stability_note(SituationResult& r, const Scene& scene) {
     if (!r.stable || !r.kinematic_computed) return;
     std::map<ObjectId, std::pair<Dirs, Dirs>> moving;

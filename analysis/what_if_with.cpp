@@ -1,5 +1,5 @@
-// analysis/what_if_with.cpp: Analysis::what_if_with, a situation with contacts or forces added
-// (issue 17 item 5). The monotonic laws ran once over every assumption of the scene, so an added
+// analysis/what_if_with.cpp: Analysis::what_if_with, a situation with contacts or forces added.
+// The monotonic laws ran once over every assumption of the scene, so an added
 // item that is an assumption already (a contact or force of another situation) needs only a new
 // context over the same engine: its labels are reused and only the rules with `not` or an
 // aggregate run again, as for a smaller situation. A new item would be a new assumption, and a

@@ -12,7 +12,7 @@
 // Limit:      an optional bound on the number of environments (set_limit): interning one more
 //             throws qm::LimitReached (qm/limit_reached.hpp) before anything changes here; the
 //             caller (an Atms mid-update) must then be discarded. Without it a runaway program
-//             fills the machine's memory with environments (issue 19).
+//             fills the machine's memory with environments.
 // Knows nothing of justifications or rules.
 #pragma once
 #include "qm/assert.hpp"

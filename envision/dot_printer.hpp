@@ -1,5 +1,5 @@
 // envision/dot_printer.hpp
-// Provides:   write_dot(), the envisionment as a Graphviz digraph (issue 16 item 1, --dot), drawn as
+// Provides:   write_dot(), the envisionment as a Graphviz digraph (--dot), drawn as
 //             the thesis' Figures 9.21-9.24 group it: each behavioural cycle a cluster, terminal
 //             states doubled, transitions over an instant dashed, collisions red, changes of motion
 //             by force blue, changes of place black.

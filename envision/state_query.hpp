@@ -1,5 +1,5 @@
 // envision/state_query.hpp
-// Provides:   find_state(), a state named on the command line (item 6 of the envisioner's issue):
+// Provides:   find_state(), a state named on the command line:
 //             by its id (`12`, `#12`; `2:12` or `2:#12` for chain 2 when there are several chains) or
 //             by its name as the outputs print it (`scape-wheel/pallets-36 - -`: each pair's
 //             PAIR-PLACE, then one motion per object of the chain, in the chain's order).

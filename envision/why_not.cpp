@@ -1,4 +1,4 @@
-// envision/why_not.cpp: why there is no such transition, or no such state (issue 16 item 6).
+// envision/why_not.cpp: why there is no such transition, or no such state.
 #include "envision/why_not.hpp"
 #include "bridge/clock_vocabulary.hpp"
 #include "engine/why.hpp"

@@ -1,6 +1,6 @@
 // envision/why_not.hpp
 // Provides:   write_why_not(), the envisioner's answer to `--why-not 'STATE -> STATE'` (a question
-//             only an ATMS answers, issue 16 item 6): why the envisionment has no such transition.
+//             only an ATMS answers): why the envisionment has no such transition.
 //             - A side that is not a state: the minimal nogoods of the chain's state-space engine
 //               that exclude it, each with the laws (rule, file:line, binding) and premises that
 //               derive `false` (Law 2 at a place, a shaft, a fixed part, Def 34).

@@ -1,4 +1,4 @@
-// geometry/build_limits.cpp: the measures of a part that the build limits bound (issue 19 item 1).
+// geometry/build_limits.cpp: the measures of a part that the build limits bound.
 #include "geometry/build_limits.hpp"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 // geometry/build_limits.hpp
-// Provides:   the bounds on what the geometry builds for a metric scene (issue 19, item 1: "no
-//             crash, ever"), and the measures a scene is checked against them with, where it is
+// Provides:   the bounds on what the geometry builds for a metric scene (no crash, ever),
+//             and the measures a scene is checked against them with, where it is
 //             read (metric_scene_checker.hpp) and after its kinematic pairs are chosen:
 //             - a part's size: at least min_part_size, so that lengths, their squares and the
 //               tolerances taken relative to them stay normal doubles;

@@ -1,5 +1,5 @@
 // geometry/closed_form_pairs.hpp
-// Provides:   the closed-form test pairs of the accuracy study (issue item 6): a bar turning
+// Provides:   the closed-form test pairs of the accuracy study: a bar turning
 //             against a block, a circular disk cam against a flat follower, two eccentric disks,
 //             and a crank pin in a slotted yoke. Each pair comes as an AnalyticOracle (the exact
 //             contact function f, blocked iff f > 0, with its gradient), as polygons tessellated

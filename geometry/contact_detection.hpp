@@ -1,6 +1,6 @@
 // geometry/contact_detection.hpp
 // Provides:   detect_contacts(), the contacts of a kinematic pair at one configuration (thesis
-//             Def 19; issue item 2): FCL decides whether the parts are near (within the
+//             Def 19): FCL decides whether the parts are near (within the
 //             tolerance, relative to the smaller part's size) or overlap beyond it; the exact
 //             lines and arcs then give each contact's features: a surface (the point of a
 //             segment, with its outward normal) or a convex corner (Def 18, with the normals of

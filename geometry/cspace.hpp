@@ -33,7 +33,7 @@ struct CSpaceAxis {
     [[nodiscard]] double step() const noexcept { return periodic ? span() / samples : span() / (samples - 1); }
     // Sample i; on a translation axis the last sample is hi itself, on a periodic axis sample
     // `samples` (the first, one period on) is hi: not lo + i step, which can land an ulp beyond
-    // the limit (issue 19: a division running to the limit was then not cut at its top).
+    // the limit, and a division running to the limit would then not be cut at its top.
     [[nodiscard]] double sample(int i) const noexcept {
         return i == (periodic ? samples : samples - 1) ? hi : lo + i * step();
     }

@@ -1,6 +1,6 @@
 // geometry/fcl_pair_oracle.hpp
-// Provides:   FclPairOracle, the PairOracle of a kinematic pair of parts answered by FCL (issue
-//             item 3): blocked(q) is FCL's collision test on the two extruded meshes
+// Provides:   FclPairOracle, the PairOracle of a kinematic pair of parts answered by FCL:
+//             blocked(q) is FCL's collision test on the two extruded meshes
 //             (fcl_part_model.hpp) placed at the pair's configuration q = (q0, q1), i.e. the sign
 //             of their signed distance, so grid classification and boundary bisection both run
 //             on FCL; free_normal(q) is the gradient of the exact distance of the parts' lines and

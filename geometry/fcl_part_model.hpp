@@ -10,8 +10,8 @@
 //             thin triangles overlap everything; bench/geometry, docs/perf/geometry.md.)
 //             Every step of FCL's model build is checked: FCL reports a failure (out of memory
 //             for its arrays) by a status and a line on std::cerr, and a model left half built
-//             crashes fcl::collide later (issue 19: a gear of pitch radius 1e9 died of SIGSEGV in
-//             detect_contacts), so a failure is thrown as ModelBuildError instead.
+//             crashes fcl::collide later (e.g. a gear of pitch radius 1e9 in detect_contacts), so
+//             a failure is thrown as ModelBuildError instead.
 // Ownership:  owns its FCL geometry through a shared_ptr (FCL's convention); copies share it.
 // Invariants: chordal_tolerance() > 0; the mesh's vertices lie on the exact profiles; the model
 //             is complete (every FCL build step returned BVH_OK).

@@ -1,5 +1,5 @@
 // geometry/metric_scene_checker.cpp: raw metric scene AST -> Mechanism, with located errors
-// (docs/METRIC_SCENE_FORMAT.md, "Checks"; issue item 9): settings, linkages, pairs, forces and
+// (docs/METRIC_SCENE_FORMAT.md, "Checks"): settings, linkages, pairs, forces and
 // the whole; parts are checked in detail/metric_part_checker.cpp.
 #include "geometry/metric_scene_checker.hpp"
 

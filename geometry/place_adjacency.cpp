@@ -51,7 +51,7 @@ std::vector<Eigen::Vector2d> actual_directions(QualDirection d) {
 // along a CSEG (dot product 0) is no way into free space there. Where a dot product is ambiguous
 // the geometry must say (nullopt). Sampling alone decided before: at the bottom of a cam's curve,
 // a motion along its tangent went to a face or not as the tessellation's chords fell at the
-// sample a third of a cell out, which changed with the grid (issue 19).
+// sample a third of a cell out, which changed with the grid.
 std::optional<bool> leads_into_free_space(const Place& join, QualDirection d) {
     if (join.normals.empty() || (join.join_kind == JoinKind::normal_change && !join.concave)) return std::nullopt;
     bool all_pos = true, any_pos = false, all_closed = true, any_closed = false;

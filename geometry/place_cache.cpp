@@ -1,5 +1,5 @@
 // geometry/place_cache.cpp: a line-based file per vocabulary, doubles in hexfloat so they are exact,
-// ending in a checksum of the rest (issue 19 item 6: a well-formed edit is not served either).
+// ending in a checksum of the rest (a well-formed edit is not served either).
 #include "geometry/place_cache.hpp"
 
 #include <atomic>
@@ -16,20 +16,8 @@
 namespace qm::geometry {
 namespace {
 
-// /2: divisions on a periodic axis carry intermediate points (their direction); faces a gap flag.
-// /3: the builder changed (contradicting normals, joins at needle tips): vocabularies stored by /2
-// differ for the same geometry and settings (the escapement: 62 places, now 35).
-// /4: normals leading into blocked space are marked too (the escapement at grid 256: 92 places,
-// now 49).
-// /5: joins are moved onto the boundary along their mean normal itself, not along its
-// cell-scaled direction (the ratchet at its own grid 64x64: 100 places, now 90).
-// /6: two branches gave this number two meanings: the ends of a translation axis (or a window)
-// are stops, `stop` places (kind 5) with the stop's normal on the `limit` joins at their ends (the
-// cam follower could stay moving up for ever in the face at the top of its stroke); or a checksum
-// line ends the file.
-// /7: both, stops and the checksum line; files of /6 (either meaning) and before are stale. The
-// builder changed too (issue 19: joins at smooth extrema bisected, tangent divisions, divisions
-// ending on joins): the ratchet at its own grid 77 places, was 51; the Scotch yoke 46, was 52.
+// The format's number changes whenever the builder would give another vocabulary for the same
+// geometry and settings, so that a file of an older number is stale and recomputed, never served.
 constexpr std::string_view family = "qm-place-cache/";
 constexpr const char* magic = "qm-place-cache/7";
 constexpr std::uintmax_t largest_file = std::uintmax_t{1} << 30;

@@ -16,8 +16,8 @@ namespace qm::geometry::detail {
 
 // A point whose normal contradicted its crossing carries its neighbour's normal (adopt_neighbour_
 // normals), right for its class but not for its tangent: at a needle's tip it lies on the other
-// side, and the tangent through it with the adopted normal crossed the sound side's tangent off
-// the tip (the ratchet's apex at 192 x 768 was put on the needle's side, 63 places, issue 19).
+// side, and the tangent through it with the adopted normal would cross the sound side's tangent
+// off the tip, on the needle's side.
 // The corner is taken from the nearest sound points of the two runs instead (up to 4 points out).
 std::size_t Builder::sound_node(const std::vector<ChainNode>& nodes, std::size_t k, int step, bool is_closed) const {
     const std::size_t n = nodes.size();
@@ -59,8 +59,8 @@ Eigen::Vector2d Builder::corner(const std::vector<ChainNode>& nodes, std::size_t
                (off.lpNorm<Eigen::Infinity>() < 4 && on_tangents(a.q, na, x) && on_tangents(pb, nb, x));
     };
     // Normals less than a right angle apart (in cells: angles in configuration units change with a
-    // translation axis' length, and a scene scaled by 100 took a cam's smooth top for a corner,
-    // issue 19): the change of class is found along the boundary, at a smooth extremum or a corner
+    // translation axis' length, and a scene scaled by 100 would take a cam's smooth top for a
+    // corner): the change of class is found along the boundary, at a smooth extremum or a corner
     // alike. Sharper corners from the tangents' crossing.
     if (in_cells(a.normal).dot(in_cells(b.normal)) > 0) return normal_change(a, pb, b.normal);
     if (std::abs(cross(in_cells(a.normal), in_cells(b.normal))) > 0.2) {
@@ -95,7 +95,7 @@ Eigen::Vector2d Builder::corner(const std::vector<ChainNode>& nodes, std::size_t
 // CSEG beyond it lies in the open half plane of a's normal, i.e. (b - q) . n_a > 0. Where the two
 // normals are nearly parallel (a smooth extremum, a shallow corner) b lies off the tangent line by
 // the curve's rise over half a cell, which the tessellation's chordal error can exceed (the
-// bottom of a cam's curve came out convex at some grids, issue 19); the turn of the normals from
+// bottom of a cam's curve would come out convex at some grids); the turn of the normals from
 // a to b, which come from the exact geometry, says the same thing there: the boundary bends
 // towards free space (concave) when the normal turns the way that free space lies from the
 // direction of travel.
@@ -112,9 +112,9 @@ bool Builder::concave(const ChainNode& a, const ChainNode& b, const Eigen::Vecto
 // Where the normal of a smooth CSEG (or of a shallow corner) passes from a's qualitative class to
 // the next point's, which lies at pb with normal nb: bisection along the boundary between them on
 // the class of the geometry's normal, to a ten-millionth of a cell. The top of a cam's curve is
-// where its normal passes (0 +); the midpoint of the two points, used before, lay up to half a cell
-// from it, below the top, and the divisions from the join then depended on where the grid's
-// columns fell (issue 19: 9 to 47 places for one pair at grids 40 to 160).
+// where its normal passes (0 +); the midpoint of the two points would lie up to half a cell from
+// it, below the top, and the divisions from the join would depend on where the grid's columns
+// fell.
 Eigen::Vector2d Builder::normal_change(const ChainNode& a, const Eigen::Vector2d& pb, const Eigen::Vector2d& nb) {
     const Eigen::Vector2d along = a.normal + nb;
     Eigen::Vector2d lo = a.q, hi = pb;  // the class at lo is a's, at hi not

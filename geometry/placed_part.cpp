@@ -154,7 +154,7 @@ ContactDirection contact_direction(const PlacedPart& a, const PlacedPart& b, dou
     // One lens whose two crossings lie on different segments: its middle, as for a chord crossing
     // one segment. A circle's two half arcs meet at a smooth vertex; where that vertex lay in the
     // lens it was taken for the deepest point, on the far side of the lens' middle from the
-    // pivot at the bottom of a cam's curve, and the normal's sign flipped there (issue 19).
+    // pivot at the bottom of a cam's curve, and the normal's sign flipped there.
     if (crossings.size() == 2) {
         const Eigen::Vector2d mid = 0.5 * (crossings[0] + crossings[1]);
         auto nearest = [&](const PlacedPart& p) {

@@ -1,5 +1,5 @@
-// geometry/profile_check.cpp: closed, simple profiles (issue item 9: open or self-intersecting
-// profiles are bad input).
+// geometry/profile_check.cpp: closed, simple profiles (open or self-intersecting profiles are
+// bad input).
 #include "geometry/profile_check.hpp"
 
 #include "geometry/segment_queries.hpp"

@@ -1,6 +1,6 @@
 // geometry/profile_check.hpp
 // Provides:   check_profile(), which finds what makes a drawn profile unusable as the boundary of
-//             a solid (issue item 9): too few segments, a segment of zero length, an arc whose
+//             a solid: too few segments, a segment of zero length, an arc whose
 //             ends are not on one circle, a gap (the profile is open), or two segments that
 //             cross, touch or double back (the profile intersects itself); and
 //             check_profiles_apart(), which finds two profiles of one part that overlap.

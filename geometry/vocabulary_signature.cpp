@@ -1,5 +1,5 @@
 // geometry/vocabulary_signature.cpp: a relabelling-invariant signature of a place vocabulary by
-// colour refinement over its adjacency (issue 19 item 5).
+// colour refinement over its adjacency.
 #include "geometry/vocabulary_signature.hpp"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 // geometry/vocabulary_signature.hpp
 // Provides:   vocabulary_signature(), a text that two place vocabularies share when they are the
-//             same up to the numbering of their places, adjacency included (issue 19 item 5: a
+//             same up to the numbering of their places, adjacency included (a
 //             vocabulary must not change with the grid, nor when the scene is moved, turned or
 //             scaled). Each place starts from its own description (kind, join kind, normals as a
 //             set, concavity, axis, label, gap flag); colour refinement (Weisfeiler-Leman) then

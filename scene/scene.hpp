@@ -153,7 +153,7 @@ struct Scene {
     SourceLocation where;
 
     // The first entry of that name, by hash (a scan per lookup made reading a scene quadratic in
-    // its size, issue 19). Pre: an entry's name is not changed once it is in the table (the
+    // its size). Pre: an entry's name is not changed once it is in the table (the
     // index learns entries as they are added).
     [[nodiscard]] std::optional<ObjectId> find_object(std::string_view name) const;
     [[nodiscard]] std::optional<SurfaceId> find_surface(std::string_view name) const;

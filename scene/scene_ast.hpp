@@ -34,8 +34,8 @@ namespace x3 = boost::spirit::x3;
 
 struct Name : x3::position_tagged { std::string text; };
 // "+", "0", "-", "?x" or a bad token: where it starts (its position tag) and its length; its text
-// is the source's (text_of). Signs are most of a scene's tokens: as a std::string each, the
-// directions were an eighth of the peak memory of reading a large scene (issue 19 item 4).
+// is the source's (text_of). Signs are most of a scene's tokens, so a std::string each would
+// weigh on the peak memory of reading a large scene.
 struct SignToken : x3::position_tagged { std::uint32_t length = 0; };
 struct Direction : x3::position_tagged { std::vector<SignToken> parts; };
 

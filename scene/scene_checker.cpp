@@ -43,7 +43,7 @@ std::optional<Scene> SceneChecker::run(const ast::Scenario& s) {
 
 // The tables are sized from the AST before they are filled: grown by doubling, the objects' and
 // surfaces' tables and their name indexes held up to twice what they used, a sixth of the peak
-// memory of reading a large scene (issue 19 item 4), which is reached while the AST is alive.
+// memory of reading a large scene, which is reached while the AST is alive.
 void SceneChecker::reserve_tables() {
     std::size_t surfaces = 0;
     for (const auto* d : surfaces_)

@@ -64,7 +64,7 @@ void replace_given_motions(Scene& scene, std::span<const Motion> given, std::spa
 // situation s has none of the items.
 [[nodiscard]] std::string what_if_note(const Scene& scene, std::size_t s, std::span<const QueryFact> without);
 
-// What a what-if adds to a situation: contacts and forces (issue 17 item 5).
+// What a what-if adds to a situation: contacts and forces.
 struct Additions {
     std::vector<Contact> contacts;
     std::vector<AddedForce> forces;

@@ -6,9 +6,8 @@
 //             bounded and the cost should grow with the theory;
 //      deep   a layered window theory whose derivation depth grows with its size (antecedents from
 //             the 30 nodes before the consequent), so labels grow combinatorially: the sizes listed
-//             are the ones that finish (from 6x the smallest on, a run takes minutes; at 8x a single
-//             clause takes 142 s and leaves labels of 13,000 envs, which any ATMS keeping labels
-//             complete must compute; docs/PERFORMANCE.md);
+//             are the ones that finish (from 6x the smallest on, a run takes minutes: labels any
+//             ATMS keeping them complete must compute);
 //      clauses are given in random order, so labels are revised, not built bottom-up;
 //   2. N-queens as ATMS interpretations, N = 4 ... 14: one choice set per row (assumption = column),
 //      attacks as pairwise nogoods ("pw") or as one at-most-one constraint per column and diagonal

@@ -1,5 +1,5 @@
 // bench/atms/base_queries.hpp: interpretations on a base environment, the query an envisioner
-// makes thousands of times (issue 16: choice sets {place of each pair} x {motion of each object}
+// makes thousands of times (choice sets {place of each pair} x {motion of each object}
 // under nogoods, often on top of the facts of a state). Public ATMS API only, so the same workload
 // runs against any version of the library. Shared by atms_bench.
 //

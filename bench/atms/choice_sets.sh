@@ -1,6 +1,6 @@
 #!/bin/sh
-# bench/atms/choice_sets.sh: how `qm-atms run` scales with the size of one choice set (issue 15,
-# item 3). Prints numbers, passes or fails nothing; docs/PERFORMANCE.md ("Choice sets") records them.
+# bench/atms/choice_sets.sh: how `qm-atms run` scales with the size of one choice set.
+# Prints numbers, passes or fails nothing; docs/PERFORMANCE.md records them.
 #
 # The program for S states (also written alone by --program S): S transition facts (next i i+1,
 # the last back to 1), one rule declaring the choice set "exactly one state" over (range 1 S), and

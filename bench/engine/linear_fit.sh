@@ -3,7 +3,7 @@
 # For the generated stack of N blocks and train of N gears (bench/alex/generated_scenes.hpp) it
 # counts the instructions of the whole process with callgrind (repeatable, unlike wall time on a
 # shared machine), fits I(N) = a + b N + c N^2 by least squares, and prints the coefficients and the
-# share of the N^2 term in I at the largest N (issue 15 item 2: below 5% at N = 400), for the whole
+# share of the N^2 term in I at the largest N (the budget: below 5% at N = 400), for the whole
 # run and for the instructions spent in each module (engine, ATMS, Alex driver). It also
 # prints each run's wall time and peak memory, measured without valgrind (one run each: for
 # figures to quote, take medians of several runs, e.g. with bench/alex/interleave.py or alex_bench).

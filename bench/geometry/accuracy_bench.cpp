@@ -1,5 +1,5 @@
-// bench/geometry/accuracy_bench.cpp: speed against error on the closed-form pairs (issue item 6,
-// docs/ACCURACY.md). Each row builds the whole place vocabulary of one pair and measures:
+// bench/geometry/accuracy_bench.cpp: speed against error on the closed-form pairs
+// (docs/ACCURACY.md). Each row builds the whole place vocabulary of one pair and measures:
 // the largest boundary error against the closed form (normal distance |f| / |grad f|, and along
 // the bracketing axis), how many boundary points got a qualitative normal other than the closed
 // form's (sign errors), the wall time (median of `repeats` runs), and the place counts.

@@ -1,6 +1,6 @@
 // bench/geometry/vocabulary_stability_bench.cpp: is a metric scene's place vocabulary the same,
 // adjacency included, at every grid from a coarsest one to k times finer, and with the scene moved,
-// turned by quarter turns and scaled 1e-3..1e3 (issue 19 item 5; docs/ACCURACY.md)? Prints, per
+// turned by quarter turns and scaled 1e-3..1e3 (docs/ACCURACY.md)? Prints, per
 // kinematic pair, each distinct vocabulary (geometry/vocabulary_signature.hpp) with the grids or
 // drawings that gave it. Not a test: the exhaustive sweep takes minutes (scripts/vocabulary_sweep).
 //

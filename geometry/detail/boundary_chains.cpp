@@ -26,10 +26,9 @@ void Builder::make_chains(const std::vector<BoundaryChain>& traced) {
 
 // A point whose normal contradicts its own crossing (BoundaryPoint::normal_contradicts_edge)
 // takes the normal of the nearest point before it along the chain that has a sound one (after
-// it, at a chain's open start). Flipping such normals instead made things worse where the far
-// surface is not parallel to the near one (the escapement's pallet corner at grid 256: 92 places
-// became 135); left alone, each started a CSEG of a cell or less and two joins, the more of
-// them the finer the grid (the ratchet: 63 to 143 places).
+// it, at a chain's open start). Flipping such normals instead is wrong where the far surface is
+// not parallel to the near one; left alone, each would start a CSEG of a cell or less and two
+// joins, the more of them the finer the grid (docs/ACCURACY.md, "Place count against grid").
 void Builder::adopt_neighbour_normals(std::vector<ChainNode>& nodes, const std::vector<int>& points, bool is_closed) {
     const std::size_t n = nodes.size();
     auto sound = [&](std::size_t k) { return !space.boundary[static_cast<std::size_t>(points[k])].normal_contradicts_edge; };
@@ -87,9 +86,8 @@ void Builder::absorb_short_runs(std::vector<ChainNode>& nodes, bool is_closed) {
 // What the grid cannot resolve: a run of one normal class less than half a cell long (a single
 // boundary point, or two close together) between two runs of one other class is a feature
 // narrower than a cell, seen at some grids and not at others: it takes its neighbours' class.
-// At the tip of the ratchet's blocked needle the normals of the few points near the apex
-// alternated at some grids (three joins within 1e-4 rad at 100 x 400, 122 places; 67 at the
-// grids around it), issue 19. A run of a class with a zero component between two different
+// At the tip of the ratchet's blocked needle the normals of the few points near the apex can
+// alternate so. A run of a class with a zero component between two different
 // classes is the other case, a normal passing an axis direction (collapse_point_runs).
 void Builder::absorb_unresolved_runs(std::vector<ChainNode>& nodes, bool is_closed) {
     const std::size_t n = nodes.size();
@@ -119,7 +117,7 @@ void Builder::absorb_unresolved_runs(std::vector<ChainNode>& nodes, bool is_clos
 // A blocked island of a cell or two next to a normal-change join of another chain is that
 // feature's tip, thinner than a cell, whose samples the grid saw apart from the rest (the
 // ratchet's needle at 100 x 400: one blocked sample two columns from the needle, its own CSEG and
-// joins; issue 19). Its chain is dropped after the other chains' joins are placed (the apex join
+// joins). Its chain is dropped after the other chains' joins are placed (the apex join
 // is found on the needle's tangents beyond it, corner()); its samples stay blocked (8.1.6: blocked
 // space is never eliminated). Islands elsewhere keep their places.
 void Builder::insert_joins_and_drop_tip_islands() {

@@ -66,7 +66,7 @@ void Builder::grow_fsds() {
                 Division d{PlaceKind::fsd, axis, dir, origin, 0.0, {}, {{0.0, PlaceId{static_cast<std::uint32_t>(jp)}}}};
                 // The join's normals first: a direction they close (along the tangent at the
                 // bottom of a concave curve, into a corner) starts no division, whatever the
-                // tessellation's chords leave free a twentieth of a cell out (issue 19).
+                // tessellation's chords leave free a twentieth of a cell out.
                 QualDirection along;
                 along.s[static_cast<std::size_t>(axis)] = static_cast<std::int8_t>(dir);
                 const std::optional<bool> opens = leads_into_free_space(j, along);
@@ -75,7 +75,7 @@ void Builder::grow_fsds() {
                 // bulge where it is parallel to the axis) runs, for a cell or so, within the
                 // tessellation's error of the boundary found on the meshes: probes on the line
                 // through the join met the meshes by chance (the ratchet's bulge at 128 x 1024 lost
-                // both its divisions, issue 19). It runs a twentieth of a cell off the join, into
+                // both its divisions). It runs a twentieth of a cell off the join, into
                 // free space, instead.
                 const Eigen::Vector2d m = in_cells(mean_normal[jp]);
                 const int other = 1 - axis;
@@ -146,7 +146,7 @@ void Builder::end_on_boundary(Division& d, double t, JoinKind kind) {
         }
     // Ending on a join already there (to a thousandth of a cell, or the bisection's tolerance), it
     // ends at that join: a second join beside it, 2e-9 away, went before or after it along the
-    // chain by rounding (the Scotch yoke's divisions between its two joins at q0 = 0, issue 19).
+    // chain by rounding (the Scotch yoke's divisions between its two joins at q0 = 0).
     const double same = std::max(1e-3, 8 * r.boundary_tolerance * scale.maxCoeff());
     for (const auto& nodes : chains)
         for (const auto& node : nodes)
@@ -264,7 +264,7 @@ void Builder::cross_divisions() {
             const double tb = param(db, da.start[db.axis]);
             // Within a tenth of a cell of an end is at the end: a tangent division runs a twentieth
             // of a cell off its join (grow_fsds), and the division ending at that join crossed it
-            // there or not by rounding (the Scotch yoke at odd grids, issue 19).
+            // there or not by rounding (the Scotch yoke at odd grids).
             const double ea = std::max(4 * r.boundary_tolerance, 0.1 * r.axes[static_cast<std::size_t>(da.axis)].step());
             const double eb = std::max(4 * r.boundary_tolerance, 0.1 * r.axes[static_cast<std::size_t>(db.axis)].step());
             if (ta <= ea || ta >= da.length - ea || tb <= eb || tb >= db.length - eb) continue;

@@ -76,7 +76,7 @@ FaceLocator::FaceLocator(const CSpaceResult& space, const std::vector<Division>&
 // one of those segments passes through the blocked tip, even when both its samples are free (the
 // tip thinner than a cell): it does not connect. The tip of the ratchet's needle between two
 // samples at 80 x 320 joined the faces either side of it; the top of a cam's curve between two
-// columns, under the division rising from it, the faces either side of that (issue 19).
+// columns, under the division rising from it, the faces either side of that.
 void FaceLocator::cut_along(const std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>>& barriers) {
     const auto& r = space_.request;
     for (const auto& [from, delta] : barriers)

@@ -1,5 +1,5 @@
 // geometry/detail/metric_limits_checker.cpp: a metric scene's parts against the build limits
-// (geometry/build_limits.hpp; issue 19 items 1 and 2): sizes, precision and chords, checked where
+// (geometry/build_limits.hpp): sizes, precision and chords, checked where
 // the scene is read, each error located at the part and naming the setting to change.
 #include "geometry/build_limits.hpp"
 #include "geometry/detail/metric_checker.hpp"

@@ -1,5 +1,5 @@
 // geometry/detail/metric_part_checker.cpp: a metric scene's parts, drawn or generated, placed,
-// with their degree of freedom and symmetry (docs/METRIC_SCENE_FORMAT.md, "Parts"; issue item 9).
+// with their degree of freedom and symmetry (docs/METRIC_SCENE_FORMAT.md, "Parts").
 #include "geometry/detail/metric_checker.hpp"
 #include "geometry/part_generators.hpp"
 #include "geometry/profile_check.hpp"

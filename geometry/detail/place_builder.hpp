@@ -72,11 +72,9 @@ struct Builder {
 
     // Move q onto the boundary along direction n, if the boundary is within a cell diagonal (the
     // reach is measured in cells, the direction is n's own). Scaling the direction by the cell
-    // tilted it on cells that are not square: at the tip of a thin blocked needle (the ratchet's
-    // pawl tip past a tooth tip) the tilted line left the needle's axis and met its side, a
-    // thousandth of a radian below the tip, at grids 64x512 and 128x1024 (their apex FSDs were
-    // not started: 33 and 44 places instead of 51). Along the sides' mean normal, the needle's
-    // axis, it meets the tip itself.
+    // would tilt it on cells that are not square: at the tip of a thin blocked needle (the
+    // ratchet's pawl tip past a tooth tip) the tilted line leaves the needle's axis and meets its
+    // side below the tip. Along the sides' mean normal, the needle's axis, it meets the tip itself.
     Eigen::Vector2d project(const Eigen::Vector2d& q, Eigen::Vector2d n) {
         const double scaled = n.cwiseQuotient(cell()).norm();
         if (!(scaled > 0)) return q;

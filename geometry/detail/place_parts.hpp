@@ -38,7 +38,7 @@ struct LineInfo {
     bool two_sided = false;  // divisions have free space on both sides
 };
 
-// Which side of a division a configuration lies on must not depend on rounding (issue 19 item 5):
+// Which side of a division a configuration lies on must not depend on rounding:
 // one within this many cells of a division's line counts as on it (a grid sample there belongs to
 // no face; another point to the lower side: the line passes just above it), and a division's ends
 // reach this much further.

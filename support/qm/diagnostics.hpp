@@ -5,8 +5,8 @@
 // Ownership:  value types. Library code reports into a Diagnostics& and never prints or exits;
 //             only main() picks the exit status (2 for bad input).
 // Bounds:     what a diagnostic keeps of its source line, and what print() writes, is bounded
-//             whatever the input (issue 19: a 3.25 KB scene with a surface duplicated 200 times
-//             wrote 1 MB in 332,330 write() calls): a line is kept only around the error
+//             whatever the input (a small scene with a surface duplicated many times must not
+//             write megabytes): a line is kept only around the error
 //             (excerpt_bytes, cut ends shown as `...`), control characters are shown as `?`, at
 //             most PrintLimits::max_shown diagnostics are printed and then a count of the rest, and
 //             print() writes everything in one call of the stream's write().

@@ -2,8 +2,8 @@
 // Provides:   read_file_text(), the whole text of a file for the project's readers (Alex scenes,
 //             metric scenes, rule files), or why it cannot be had, in words a user can act on:
 //             `no such file`, `it is a directory, not a file`, `permission denied`, ... (an input
-//             that cannot be read is bad input, exit 2; issue 19: a directory given as a scene was
-//             reported as `empty input`, since an ifstream opens a directory and reads nothing).
+//             that cannot be read is bad input, exit 2; an ifstream opens a directory and reads
+//             nothing, so a directory is named as such, not as `empty input`).
 // Ownership:  returns values.
 #pragma once
 #include <cerrno>

@@ -1,7 +1,7 @@
 // support/qm/limit_reached.hpp
 // Provides:   LimitReached, the exception a module throws when a resource limit its driver set is
 //             reached (the ATMS' environment limit, the engine's fact limit): a runaway program or
-//             scene stops there instead of running until the machine's memory is gone (issue 19).
+//             scene stops there instead of running until the machine's memory is gone.
 //             It is bad input, not a bug: the command line reports it as
 //             `error: fact limit 500000 reached while firing rule 'grow'; raise it with --max-facts`
 //             and exits with 2 (cli/resource_limits.hpp).

@@ -5,8 +5,8 @@
 //             metric scene readers (the rule reader stores offsets in the tags directly).
 // Ownership:  a value filled by one parse.
 // Memory:     a tag below 2^30 is the offset itself, so the table costs nothing per node (a table
-//             entry per node was a tenth of a large scene's peak memory, issue 19 item 4; X3 also
-//             tags nodes that backtracking later drops). Only offsets at or beyond 1 GiB, which a
+//             entry per node would be a tenth of a large scene's peak memory; X3 also tags nodes
+//             that backtracking later drops). Only offsets at or beyond 1 GiB, which a
 //             tag cannot hold directly, are kept in a table, indexed from 2^30 on.
 #pragma once
 #include <boost/spirit/home/x3/support/ast/position_tagged.hpp>

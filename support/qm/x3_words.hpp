@@ -3,7 +3,7 @@
 //             not a rule or a literal. X3 describes a parser through get_info<Parser>, whose default
 //             is typeid(Parser).name(): an expectation on `+name` said
 //             `expected N5boost6spirit2x34plusINS1_4ruleIN2qm8geometry7mparser10name_class...`
-//             (issue 19). Here every composite parser is described by its parts, down to the rules
+//             Here every composite parser is described by its parts, down to the rules
 //             (their names) and literals (quoted):
 //               +p, *p, -p, p % sep, p - q, &p, p[action], lexeme[p], raw[p], ... -> what(p)
 //               a >> b                                                        -> what(a)
