@@ -7,10 +7,11 @@
 //               grow.rules:2:1: error: fact limit 500000 reached while firing rule 'grow'; raise it with --max-facts
 //               qm-atms: error: memory limit 11.7 GB reached while running grow.rules; raise it with --max-memory
 //             (exit 2: a program or scene that needs more is bad input at these settings; nothing
-//             is written to standard output, issue 19 item 3).
-// Defaults:   chosen so that the runaway programs of issue 19 stop within seconds while the
-//             bundled scenes, rule programs and benchmarks stay far below them (docs/PERFORMANCE.md
-//             "Resource limits" has the measurements); memory: half the machine's.
+//             is written to standard output).
+// Defaults:   chosen so that runaway programs (a rule that counts up for ever) stop within
+//             seconds while the bundled scenes, rule programs and benchmarks stay far below them
+//             (docs/PERFORMANCE.md, "resource limits at their defaults"); memory: half the
+//             machine's.
 // Ownership:  values; apply_memory_limit() changes the process (call it once, from main's commands).
 #pragma once
 #include "engine/run_options.hpp"

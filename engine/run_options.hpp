@@ -7,7 +7,7 @@
 //             elements, which needs a nogood for each of its 5 * 10^9 pairs).
 //             EngineLimits, bounds for the whole life of an Engine (Engine::set_limits): the facts it
 //             may hold and the environments its ATMS may intern, so that a runaway program stops
-//             with qm::LimitReached (qm/limit_reached.hpp) instead of filling the memory (issue 19).
+//             with qm::LimitReached (qm/limit_reached.hpp) instead of filling the memory.
 // Ownership:  value types; the engine copies them.
 // Invariants: the defaults ask for nothing: no limit (the command line sets its own,
 //             cli/resource_limits.hpp).

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Compares two qm-atms builds on every bundled scene, byte for byte (standard output, standard error
-and exit status), for a change that must not change behaviour (issue 14 item 1: the nearness
-preference as a `prefer` declaration). The commands:
+and exit status), for a change that must not change behaviour (docs/PERFORMANCE.md, "Same
+outputs"). The commands:
   - every command of bench/bridge/compare_outputs.py (scenarios/alex/*.def text and --json; every
     metric scene as drawn and at one configuration per place, --emit-def, text and --json);
   - scenarios/alex/*.def with --kinematic, text and --json;

@@ -5,7 +5,7 @@ status of
   - for every metric scene (scenarios/metric/*.def, scenarios/clock/*.def): --emit-def and the text
     and --json analysis as drawn, and --emit-def, text and --json analysis at one configuration per
     place of every kinematic pair (bench/bridge/configurations.py, from the BEFORE build's --places).
-Used for the bridge (issue 14 items 3 and 5); docs/PERFORMANCE.md records its result.
+bench/alex/compare_outputs.py runs these commands and more (docs/PERFORMANCE.md, "Same outputs").
 
 usage: compare_outputs.py BEFORE-QM-ATMS BEFORE-RULES AFTER-QM-ATMS AFTER-RULES OUT-DIR [--every K]
   Run from the source tree's root: paths in the outputs are relative to it. --every K keeps every

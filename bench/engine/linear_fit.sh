@@ -33,7 +33,7 @@ trap 'rm -rf "$work"' EXIT
 
 # Self instructions by module from callgrind_annotate: a function belongs to the first qm module
 # its name mentions (std::function handlers and hash tables of a module's types included; "alex"
-# is the scene reader and the driver: qm::scene and qm::analysis, once qm::alex); __popcountdi2 is the ATMS' (environment sizes),
+# is the scene reader and the driver: qm::scene and qm::analysis); __popcountdi2 is the ATMS' (environment sizes),
 # malloc/free/new/delete are "alloc", the rest (libc, whose memcpy/memset the ATMS' bitset pool
 # calls, the loader, libstdc++) "other".
 by_module() {

@@ -1,8 +1,9 @@
 #!/bin/sh
-# bench/geometry/vocabulary_sweep.sh BUILD-DIR [OUT]: the exhaustive sweep of vocabulary stability, recorded
-# in docs/ACCURACY.md ("Topology against grid and drawing"). For each scene, every grid from the
-# coarsest that resolves its parts to 4 times finer (both axes scaled together), then 56 drawings
-# (scaled 1e-3..1e3, turned by quarter turns, moved). One thread: minutes, not to be run in CI.
+# bench/geometry/vocabulary_sweep.sh BUILD-DIR [OUT]: the exhaustive sweep of vocabulary stability
+# whose method docs/ACCURACY.md describes ("Topology against grid and drawing"). For each scene,
+# every grid from the coarsest that resolves its parts to 4 times finer (both axes scaled
+# together), then 56 drawings (scaled 1e-3..1e3, turned by quarter turns, moved). One thread:
+# minutes, not to be run in CI.
 set -eu
 build=${1:?usage: vocabulary_sweep.sh BUILD-DIR [OUT]}
 out=${2:-/dev/stdout}

@@ -175,7 +175,8 @@ TEST_CASE("analysis/api: why a motion is ruled out by case analysis lists the ar
     CHECK(w->responsible_sets ==
           Sets{{"Contact (s-w-1 p-1)", "Contact (s-w-b-3 gear-top-3)", "Motion (pallet (0 0) (+))"}});
 
-    // Figure 7.14 with the driver given (-): 3 reasons (before: 11, 8 of them the driver's pins).
+    // Figure 7.14 with the driver given (-): 3 reasons, the contact's and the given motion's, not
+    // the driver's pins.
     const scene::Scene g = scene_file("gears.def");
     auto o = default_options();
     auto given = scene::parse_given(g, "driver (0 0) (-)", d, "--given");
@@ -325,7 +326,7 @@ TEST_CASE("analysis/api: a given motion replaces the situation's motion of the s
     REQUIRE(m);
     auto r = a->with_given(2, std::span<const scene::Motion>(&*m, 1), d);
     REQUIRE(r);
-    // Before: both (+) and (-) were given, and no combination was consistent.
+    // The given (-) replaces the scene's (+): with both given, no combination would be consistent.
     CHECK(r->combination_count() > 0);
     CHECK(predicted(*r, *s.find_object("pallet"), false, {scene::Sign::minus}));
     bool said = false;

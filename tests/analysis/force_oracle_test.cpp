@@ -21,9 +21,8 @@
 // - a pushed force (a torque passed on one contact) makes its object driven, like any force;
 // - Def 38 lists v and -v apart from the half planes that also hold them: v is nearest, -v furthest;
 // - what is pushed along (Table 3.2) by something a given motion pushes is exempt from its forces'
-//   threshold too, and linked objects share every force, pushed ones included. (The product first
-//   read both more narrowly; this oracle found it, and the rules were changed: the two cases
-//   below keep the scenes.)
+//   threshold too, and linked objects share every force, pushed ones included (the two cases
+//   below are scenes where a narrower reading of either would differ).
 // - section 8.3.4's threshold ends the order: every motion past zero ranks alike (so a pushed
 //   object's force does not choose among the ways it is pushed);
 // - section 2.3's branching: along an axis where exactly two causes act, oppositely, the answer to

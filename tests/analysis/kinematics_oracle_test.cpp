@@ -995,7 +995,7 @@ TEST_CASE("analysis/kinematics_oracle: the product agrees with the oracle on the
     }
 }
 
-// The kinematically consistent combinations (SituationResult::kinematic, `--kinematic`; issue 17) are
+// The kinematically consistent combinations (SituationResult::kinematic, `--kinematic`) are
 // what blocking and pushing alone allow, before the forces choose: on scenes with forces they must be
 // exactly the oracle's consistent combinations, which know no force. The thesis' scenes get gravity
 // on every movable object; the crate on a shim on an incline is scenarios/alex/crate_shim.def.
@@ -1048,9 +1048,9 @@ TEST_CASE("analysis/kinematics_oracle: the product agrees with the oracle on see
     // `per_pack` groups side by side (no contact joins two groups, so their chains stay apart),
     // because loading the rule files costs more than analysing a small group. A group with a chain
     // of more than `chain_limit` consistent combinations is replaced by another: it would test
-    // nothing new and cost most of the time budget. The product needs 30-60 ms per situation of a
-    // group in a Debug+ASan build and about 25 times less in Release, so the optimised build checks
-    // 1,200 scenes and the others 80; QM_ORACLE_PACKS=N in the environment runs N packs (soak runs).
+    // nothing new and cost most of the time budget. A Debug+ASan build analyses far more slowly
+    // than Release, so the optimised build checks 1,200 scenes and the others 80;
+    // QM_ORACLE_PACKS=N in the environment runs N packs (soak runs).
     // Must agree exactly: every free-direction list, the chains, and the combinations of every chain
     // without a given motion. In a chain with a given motion the product may list fewer (never
     // other) combinations than the oracle: that known disagreement is counted and shown, and
@@ -1178,9 +1178,8 @@ TEST_CASE("analysis/kinematics_oracle: the product agrees with the oracle on see
 // forces acting on objects" does it prefer some motions to others. Here there is no force, so every
 // consistent combination must be listed: the boulder may go right, up right or down right, or turn
 // clockwise about its centre down right of the contact, or both (9 combinations; it may not go left
-// or turn counter-clockwise, which would push the block back, Table 3.2 the other way). (An earlier
-// product turned the given motion into a force on the boulder and kept only the motion nearest to
-// it; this case caught that.)
+// or turn counter-clockwise, which would push the block back, Table 3.2 the other way). Reading the
+// given motion as a force on the boulder would keep only the motion nearest to it.
 TEST_CASE("analysis/kinematics_oracle: without forces a given motion selects nothing: Figure 3.4") {
     const Scene s = read_ok(R"((Defscenario 2 block-boulder-no-forces
   Individuals (block boulder)

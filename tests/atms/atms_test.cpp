@@ -237,7 +237,7 @@ TEST_CASE("atms/atms: every precondition violation is an InternalError") {
     CHECK_THROWS_AS((void)atms.env(EnvId{12345}), qm::InternalError);
     CHECK_THROWS_AS((void)atms.environment({AssumptionId{77}}), qm::InternalError);
     CHECK_THROWS_AS((void)atms.explain(bad, atms.empty_environment()), qm::InternalError);
-    // The three misuses the issue names say what went wrong.
+    // Three misuses say what went wrong.
     CHECK_THROWS_WITH_AS(atms.justify(InformantId{0}, {t.a}, bad), doctest::Contains("unknown node id"), qm::InternalError);
     CHECK_THROWS_WITH_AS(atms.justify(InformantId{0}, {t.a}, p), doctest::Contains("premise"), qm::InternalError);
     const std::vector<std::vector<AssumptionId>> twice{{t.aa, t.ab}, {t.ab, t.ac}};

@@ -53,7 +53,7 @@ TEST_CASE("atms/nogood_database: subsumes, subsumes_with and minimal agree with 
                 CHECK(db.subsumes(e) == subsumed_by(e));
                 // The same question on a window of e's words (as weave asks it).
                 CHECK(db.subsumes_words(e.window(), e.first_word()) == subsumed_by(e));
-                // And on its listed words (as weave asks it now).
+                // And on its listed words (the other way weave asks it).
                 std::vector<std::uint64_t> sw;
                 std::vector<std::uint64_t> si;
                 CHECK(db.subsumes_sparse(sparse(e, q % 2 == 0, sw, si)) == subsumed_by(e));

@@ -1,5 +1,5 @@
-// tests/bridge/metric_symbolic_agreement_test.cpp: the metric and the symbolic routes agree (issue
-// 14 item 5). At sampled configurations on every CSEG and join of every bundled metric scene, the
+// tests/bridge/metric_symbolic_agreement_test.cpp: the metric and the symbolic routes agree.
+// At sampled configurations on every CSEG and join of every bundled metric scene, the
 // motions the symbolic analysis allows (the Alex laws in rules/ on the scene the bridge builds at
 // that configuration: bridge/scene_at_config.hpp, its kinematically consistent combinations) are
 // compared, pair by pair, with the motions the place vocabulary's adjacency leaves unconstrained at
@@ -210,7 +210,7 @@ TEST_CASE("bridge: the symbolic analysis at a configuration and the place vocabu
 }
 
 TEST_CASE("bridge: the escapement's tooth corner on a CSEG of normal (- -) pushes the pallets as the adjacency says (issue 14 item 5)") {
-    // The configuration of the issue: the tip of a tooth (a corner) on the pallets' face. The
+    // The tip of a tooth (a corner) on the pallets' face. The
     // wheel's origin direction there is (+ -) and the contact's normal (+ -) / (- +): qualitatively
     // the wheel's turn across the normal is ambiguous, and the liberal bias (7.3) read it as no
     // push, allowing the wheel (+) with the pallets (0). The bridge resolves the origin direction

@@ -67,7 +67,7 @@ TEST_CASE("engine/builtin_registry: range generates a set; errors are reported, 
 
 TEST_CASE("engine/builtin_registry: range is exact at both ends of the 64-bit integers, and capped") {
     ValueTable v;
-    // Stepping up to INT64_MAX used to overflow ++i (undefined; in practice a loop that never ends).
+    // Stepping up to INT64_MAX must not overflow ++i (undefined; in practice an endless loop).
     auto top = apply(v, "range", {v.integer(INT64_MAX - 2), v.integer(INT64_MAX)});
     REQUIRE(top.value.has_value());
     CHECK(v.print(*top.value) == "{9223372036854775805 9223372036854775806 9223372036854775807}");
@@ -90,8 +90,8 @@ TEST_CASE("engine/builtin_registry: range is exact at both ends of the 64-bit in
 }
 
 TEST_CASE("engine/builtin_registry: a result longer than max_value_text is an error, not a runaway") {
-    // (set-add ?s ?s) doubles the printed text at each application (issue 19: a rule doing so
-    // filled the memory).
+    // (set-add ?s ?s) doubles the printed text at each application (a rule doing so would fill
+    // the memory).
     ValueTable v;
     auto start = apply(v, "range", {v.integer(1), v.integer(1000)});
     REQUIRE(start.value.has_value());

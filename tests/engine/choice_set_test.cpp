@@ -89,7 +89,7 @@ std::string range_set(int members) {
 }  // namespace
 
 TEST_CASE("engine/engine: a choice set is one ATMS constraint, whose pairs the report lists up to 64 members") {
-    // 64 members: every pair listed, as when each pair was a nogood of its own.
+    // 64 members: every pair listed, as if each pair were a nogood of its own.
     auto small = run(range_set(64));
     CHECK(small->atms().justifications(small->atms().contradiction()).empty());
     const RunReport r = make_report(*small);

@@ -1,5 +1,5 @@
 // tests/engine/engine_limits_test.cpp: EngineLimits (engine/run_options.hpp) bound the facts an
-// engine holds and the environments its ATMS interns (issue 19 item 3). A program that would count
+// engine holds and the environments its ATMS interns. A program that would count
 // for ever stops with qm::LimitReached naming the rule being fired and its location; the bounds
 // are exact (a program that holds N facts, or needs E environments, runs at a limit of N or E and
 // stops at N - 1 or E - 1), measured against the same program run without limits.

@@ -1,6 +1,6 @@
 // tests/engine/match_plan_test.cpp: plan_matching() (engine/match_plan.hpp). Which conditions
 // repeat an earlier one, on hand-made rules; which may be seeded first, against the definition
-// checked condition by condition (quadratic, as the matcher once did per seed) on seeded random rules.
+// checked condition by condition (quadratic) on seeded random rules.
 #include "compiled_program_builder.hpp"
 #include "engine/match_plan.hpp"
 #include <doctest/doctest.h>

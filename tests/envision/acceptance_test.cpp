@@ -1,5 +1,5 @@
 // tests/envision/acceptance_test.cpp: the thesis' own results on the bundled mechanisms of
-// scenarios/clock/ (issue 16, item 8), each asked as the graph questions of
+// scenarios/clock/, each asked as the graph questions of
 // envision/behaviour_query.hpp ask it (described behaviours, 9.1.5, 11.2.2):
 // - the whole clock has two kinematic chains, the ratchet's apart from the train (9.1.3);
 // - a gear pair abstracts to one place, so a train of any length has one place vector (8.1.6);

@@ -13,7 +13,7 @@ namespace {
 using testing::bundled;
 using testing::envisioned_once;
 
-// The oracle: the successor step's filters as the C++ applied them before they were laws.
+// The oracle: the successor step's filters written directly in C++, apart from the laws.
 bool oracle(std::uint8_t allowed, std::int8_t now, std::optional<std::int8_t> fix, std::int8_t next) {
     if (fix) return next == *fix;
     const bool must = (allowed >> (now + 1) & 1U) == 0;

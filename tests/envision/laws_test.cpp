@@ -1,5 +1,5 @@
-// tests/envision/laws_test.cpp: the laws live in rule files, and the envisionment follows them
-// (issue 16 item 5): the laws' folder read as a program; a copy of rules/clock/ without the
+// tests/envision/laws_test.cpp: the laws live in rule files, and the envisionment follows them:
+// the laws' folder read as a program; a copy of rules/clock/ without the
 // collision law (collision.rules) gives the escapement's envisionment without its collisions and
 // changes nothing else; without the metric diagram's constraint (metric_constraint.rules) states the
 // geometry blocks come back; a folder with no laws, or a law with an error, is a located error.
@@ -101,7 +101,7 @@ TEST_CASE("envision/laws: an empty folder or a broken law is a located error") {
     CHECK(printed(d2).find("zz_broken.rules:3:11: error: expected a term or ')' to close the '(' at 2:8") != std::string::npos);
 
     // Laws that leave a pair without a choice of place: said, not a crash. The rule checker
-    // (engine/predicate_check.hpp) finds it first: the laws use `at`, which nothing concludes now.
+    // (engine/predicate_check.hpp) finds it first: the laws use `at`, which no law left concludes.
     o.rules = laws_without("no-states", {"states.rules"});
     Diagnostics d3;
     CHECK(!qm::envision::envision(m, o, d3).has_value());

@@ -116,9 +116,9 @@ TEST_CASE("envision/motion_constraint: Law 2 from the normals agrees with the me
     }
     MESSAGE("places " << places << ", blocked by the normals " << by_normals << ", by the normals only " << normals_only);
     for (const auto& [why, n] : reasons) MESSAGE("blocked by the geometry only (" << why << "): " << n);
-    // Since the place builder decides joins independently of rounding (issue 19 item 5), no bundled
-    // place has the normals blocking more than the geometry (before: scotch_yoke.def places 12 and
-    // 19); any that appears must be of the kind explained above. The comparison itself must run.
+    // The place builder decides joins independently of rounding, so no bundled place has the
+    // normals blocking more than the geometry; any that appears must be of the kind explained
+    // above. The comparison itself must run.
     CHECK(by_normals > 0);
     CHECK(places > 0);
 }

@@ -1,5 +1,5 @@
 // tests/geometry/build_limits_test.cpp: the bounds on what the geometry builds (geometry/
-// build_limits.hpp, issue 19 item 1): the measures against independent computations, the scene
+// build_limits.hpp): the measures against independent computations, the scene
 // checker refusing what exceeds them before anything is built (the 1e9 gear), the grid limit of
 // --places, and FCL model builds that run out of memory reported, never a crash (a child process
 // under an address-space limit).
@@ -107,7 +107,7 @@ TEST_CASE("geometry/build_limits: the suggested chordal tolerance is just enough
 }
 
 TEST_CASE("geometry/build_limits: a gear of pitch radius 1e9 is refused where the scene is read, at the suggested tolerance not") {
-    // The case of issue 19: FCL ran out of memory for its BVH and the process died in fcl::collide.
+    // Built, it would exhaust FCL's memory for its BVH, after which fcl::collide crashes.
     auto train = [](const std::string& settings) {
         return "(Defmechanism gear-train Settings (" + settings +
                ") Parts ((gear-1 (spur-gear (teeth 12) (pitch-radius 1e9) (play 0.02)) (rotation))"

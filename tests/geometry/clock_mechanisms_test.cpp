@@ -1,5 +1,5 @@
-// tests/geometry/clock_mechanisms_test.cpp: the bundled mechanisms of scenarios/clock/ (issue 16
-// item 7) read, and their place vocabularies have the properties their comments promise and the
+// tests/geometry/clock_mechanisms_test.cpp: the bundled mechanisms of scenarios/clock/ read, and
+// their place vocabularies have the properties their comments promise and the
 // envisioner relies on: each gear pair is one place (8.1.6), the escapement's pallets turn all
 // the way round with a free-spinning channel (Figure 9.23), inverted regions (9.22, 9.24) and a
 // way from one pallet to the other; the ratchet's straight-down division lies in blocked space
@@ -30,9 +30,9 @@ namespace {
 constexpr double pi = std::numbers::pi;
 constexpr double degree = pi / 180;
 
-// The six gear pairs at chordal 1e-7 take 2.3 s of the test's 5 s in Release and most of its
-// four minutes under ASan+UBSan (Debug): there, the gear train is checked on its first two pairs
-// (a 10/30 and the 10/40 pair, each kind of pair but the 12/36 once), the rest in Release.
+// The six gear pairs at chordal 1e-7 are most of this test's work, and slow under ASan+UBSan
+// (Debug): there, the gear train is checked on its first two pairs (a 10/30 and the 10/40 pair,
+// each kind of pair but the 12/36 once), the rest in Release.
 #if defined(NDEBUG) && !defined(QM_SANITIZED_BUILD)
 constexpr std::size_t gear_pairs_checked = 6;
 #else
@@ -268,7 +268,7 @@ TEST_CASE("geometry/clock_mechanisms: the cam's follower stops at the top of its
             CHECK(p.normals.front() == dir(0, -1));
             CHECK(constrained(v, p.id, dir(0, 1)));
         }
-    // No face lets the follower move for ever (before stops, the faces under the top did).
+    // No face lets the follower move for ever: the stops end its axis (docs/PLACES.md, "Stops").
     for (const auto& a : v.adjacency)
         if (a.from == a.to && v.at(a.from).kind == PlaceKind::face) CHECK(a.motion.s[1] == 0);
     // The follower rides on the cam: its two CSEGs (rising (+ +) and falling (- +) under the

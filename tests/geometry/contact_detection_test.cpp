@@ -1,5 +1,5 @@
 // tests/geometry/contact_detection_test.cpp: contacts at a configuration (geometry/contact_detection.hpp)
-// on the hard cases of issue item 7: tangent contact, edges lying and sliding on each other, a
+// on the hard cases: tangent contact, edges lying and sliding on each other, a
 // corner on a surface, corner against corner (Defs 25-26), a corner in a concave notch, normals
 // within tolerance of an axis (sign 0, no flicker), scales 1e-3 to 1e3, and overlap beyond the
 // tolerance refused.

@@ -1,6 +1,6 @@
 // tests/geometry/cspace_region_test.cpp: the blocked region from the bisected boundary agrees with
 // the oracle at random points farther than a small fraction of a cell from the exact boundary
-// (whole grid cells, as pictures used to shade, disagree up to half a cell away), across a
+// (whole grid cells shaded round blocked samples would disagree up to half a cell away), across a
 // periodic seam and at saddle cells; its pieces are counter-clockwise and do not overlap (their
 // areas add up to the exact area).
 #include "geometry/closed_form_pairs.hpp"

@@ -73,7 +73,7 @@ PlaceResult built(const PairOracle& oracle, const std::array<CSpaceAxis, 2>& axe
 TEST_CASE("geometry/cspace_svg: the blocked region is filled from the bisected boundary, not grid cells") {
     // A box obstacle with sides off the grid: its filled area is the box's up to the four corner
     // cells (marching squares cuts each corner by at most half a cell); shading whole cells round
-    // every blocked sample, as the pictures did before, is off by about half a cell all round.
+    // every blocked sample would be off by about half a cell all round.
     const Box box(0.1013, 0.2987, 0.1511, 0.4489);
     const std::array<CSpaceAxis, 2> axes{CSpaceAxis{0, 1, false, 41}, CSpaceAxis{0, 1, false, 41}};
     const auto res = built(box, axes);
@@ -237,10 +237,9 @@ Coverage fsd_coverage(const SvgElement& svg, const PlaceVocabulary& v, const Fra
 }  // namespace
 
 TEST_CASE("geometry/cspace_svg: every division is drawn its whole length, the right way round a periodic axis") {
-    // Regression: a division piece was drawn from its two ends the short way round, so a piece
-    // of half the period or more (the disk cam's FSD around the whole wheel angle, split into
-    // two halves) was drawn over the wrong half or, on a translation axis, longer than half the
-    // span, not at all.
+    // A division piece drawn from its two ends the short way round would put a piece of half the
+    // period or more (the disk cam's FSD around the whole wheel angle, split into two halves) over
+    // the wrong half or, on a translation axis, one longer than half the span nowhere.
     {
         // Disk cam, h = 0.5 + 0.2 sin q0, q0 in [-pi, pi), q1 in [0.2, 1]: the FSD from the top
         // (pi/2, 0.7) runs around the whole q0 axis, across the seam; verticals go up from the

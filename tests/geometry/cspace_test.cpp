@@ -139,8 +139,9 @@ TEST_CASE("geometry/cspace: bad requests are reported in the result, not thrown"
 }
 
 TEST_CASE("geometry/cspace: bisection ends at a bracket one ulp wide, whatever the tolerance") {
-    // A tolerance finer than a double can resolve used to loop for ever once the midpoint equalled
-    // an end; the scene checker refuses such settings, but the algorithm must not rely on it.
+    // With a tolerance finer than a double can resolve, the midpoint comes to equal an end and a
+    // loop on the tolerance alone never ends; the scene checker refuses such settings, but the
+    // algorithm must not rely on it.
     const Band band(0.3, 0.6);
     std::uint64_t calls = 0;
     const Eigen::Vector2d q = bisect_contact(band, {0.5, 0.25}, false, {0.5, 0.35}, 1e-300, calls);

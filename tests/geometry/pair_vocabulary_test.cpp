@@ -1,6 +1,6 @@
 // tests/geometry/pair_vocabulary_test.cpp: place vocabularies of metric scenes end to end, with FCL in
 // the loop (geometry/kinematic_pairs.hpp -> fcl_pair_oracle.hpp -> place_vocabulary_builder.hpp):
-// FCL against the exact lines-and-arcs oracle, and the hard cases of issue item 7 (tangent
+// FCL against the exact lines-and-arcs oracle, and the hard cases (tangent
 // contact, edges sliding on each other, zero play, corner against corner, normals along an axis,
 // scales 1e-3 to 1e3, the scene moved, turned by 90 degrees and scaled, an all-free space, CSEGs
 // spanning the space parallel to an axis), and the ratchet's and the escapement's vocabularies
@@ -262,14 +262,11 @@ TEST_CASE("geometry/pair_vocabulary: an all-free space is one face; CSEGs spanni
 TEST_CASE("geometry/pair_vocabulary: the ratchet's place vocabulary settles as the grid is refined") {
     // scenarios/metric/ratchet.def. The pawl's slanted tip passing a tooth's tip makes a blocked
     // needle in configuration space, thinner than a cell near its apex, and the exact normals of
-    // configurations found on the meshes near it could name the far side of the surface. Each
-    // such flicker started a CSEG and two joins (more of them the finer the grid: 63 to 143
-    // places between grids 64x64 and 256x2048), and the needle's apex was placed a cell short
-    // of its tip, losing its FSDs at some grids; at 64x512 and 128x1024 the apex join was then
-    // moved onto the needle's side, not its tip (33 and 44 places), by a projection tilted by the
-    // cells' shape. These grids all give one vocabulary, 77 places (docs/ACCURACY.md: so do most
-    // grids from 64x256 to 256x1024; 51 before issue 19, when the joins at the bulge's rightmost
-    // point and at the blocked band's lowest point lost their tangent divisions).
+    // configurations found on the meshes near it can name the far side of the surface; each such
+    // flicker would start a CSEG and two joins, more of them the finer the grid. The builder gives
+    // such points a sound neighbour's normal and moves the apex join onto the needle's tip along
+    // its own normal (docs/ACCURACY.md, "Place count against grid"), so these grids all give one
+    // vocabulary, 77 places.
     auto ratchet = [](int n0, int n1) {
         return "(Defmechanism ratchet Settings ((grid 64 64))"
                " Parts ((ratchet-wheel (ratchet-wheel (teeth 12) (root-radius 0.8) (tip-radius 1.0)) (rotation))"

@@ -1,5 +1,5 @@
 // tests/geometry/place_cache_test.cpp: vocabularies round-trip exactly through the disk cache,
-// any change of geometry or setting changes the key, and under faults (issue 19 item 6) the cache
+// any change of geometry or setting changes the key, and under faults the cache
 // never serves a wrong vocabulary and says what it did: truncated, corrupted, edited (a flipped
 // normal, a changed adjacency target), stale and foreign files, a folder it cannot write, and
 // processes filling one cache at once.

@@ -1,6 +1,6 @@
 // tests/geometry/place_vocabulary_builder_test.cpp: place vocabularies (geometry/place_vocabulary_builder.hpp)
-// on hand-made configuration spaces whose places can be counted by hand, and the stability
-// properties of issue item 7.
+// on hand-made configuration spaces whose places can be counted by hand, and their stability
+// when the space is moved, scaled or turned.
 #include "geometry/closed_form_pairs.hpp"
 #include "geometry/place_vocabulary_builder.hpp"
 
@@ -254,8 +254,8 @@ TEST_CASE("geometry/place_vocabulary_builder: external divisions are ignored in 
 
 TEST_CASE("geometry/place_vocabulary_builder: an external division free at an axis limit runs from that limit") {
     // On a non-periodic q1 axis [0, 1] with a band blocked at (y0, y1), the division line q0 = 0.5
-    // has two free runs, one from each limit to the band; the run from the low limit used to be lost
-    // (a run was only started at a blocked-to-free change). Mirrored bands must give the same.
+    // has two free runs, one from each limit to the band; the run from the low limit starts at the
+    // limit, not at a blocked-to-free change. Mirrored bands must give the same.
     for (const auto& [y0, y1] : {std::pair{0.3, 0.6}, std::pair{0.4, 0.7}}) {
         CAPTURE(y0);
         Band band(y0, y1);

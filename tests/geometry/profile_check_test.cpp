@@ -1,5 +1,5 @@
 // tests/geometry/profile_check_test.cpp: closed simple profiles (geometry/profile_check.hpp, profile.hpp):
-// the problems of issue item 9 are found and named, good profiles pass, exact areas and
+// the problems of a drawn profile are found and named, good profiles pass, exact areas and
 // tessellation within the chordal tolerance, and the exact inside test against the polygon one.
 #include "geometry/profile_check.hpp"
 #include "geometry/segment_queries.hpp"

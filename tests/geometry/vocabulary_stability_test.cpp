@@ -1,9 +1,9 @@
-// tests/geometry/vocabulary_stability_test.cpp: a place vocabulary must not depend on rounding
-// (issue 19 item 5): the same vocabulary, adjacency included (geometry/vocabulary_signature.hpp),
-// at grids from the coarsest that resolves the parts to four times finer, and with the scene
-// moved, turned by quarter turns and scaled 1e-3..1e3 (geometry/mechanism_transform.hpp): on
-// closed-form pairs whose places are counted by hand (a cam against a follower on a tilted axis,
-// the case the issue reports, and a cam against a tilted follower) and on the bundled scenes.
+// tests/geometry/vocabulary_stability_test.cpp: a place vocabulary must not depend on rounding:
+// the same vocabulary, adjacency included (geometry/vocabulary_signature.hpp), at grids from the
+// coarsest that resolves the parts to four times finer, and with the scene moved, turned by
+// quarter turns and scaled 1e-3..1e3 (geometry/mechanism_transform.hpp): on closed-form pairs
+// whose places are counted by hand (a cam against a follower on a tilted axis and a cam against a
+// tilted follower) and on the bundled scenes.
 // A sample of grids runs here; bench/geometry/vocabulary_sweep.sh runs every grid (docs/ACCURACY.md).
 #include "mechanism_text.hpp"
 #include "geometry/kinematic_pairs.hpp"
@@ -66,7 +66,7 @@ Mechanism tilted_cam(double face_deg, const std::string& axis, int grid) {
 // upper limit; from the bottom one up, crossing the loop, to the limit: 2 CSEGs, 5 joins (2
 // normal-change, 2 limit, 1 crossing), 5 division pieces, 4 faces; and the upper limit, where
 // free space reaches it, is 2 stops between its 2 limit joins (the lower one is blocked all
-// along): 18 places (16 before stops, docs/PLACES.md "Stops").
+// along): 18 places (docs/PLACES.md "Stops").
 void check_hand_count(const PlaceVocabulary& v) {
     CHECK(v.places.size() == 18);
     CHECK(v.count(PlaceKind::stop) == 2);
@@ -88,18 +88,19 @@ TEST_CASE("geometry/vocabulary_stability: the last sample of a translation axis 
         const CSpaceAxis a{lo, hi, false, n};
         CHECK(a.sample(n - 1) == hi);
         CHECK(a.sample(0) == lo);
-        beyond_before += lo + (n - 1) * a.step() > hi;  // what the old sample() gave
+        beyond_before += lo + (n - 1) * a.step() > hi;  // stepping from lo can land beyond hi
         const CSpaceAxis p{lo, hi, true, n};
         CHECK(p.sample(n) == hi);
         CHECK(p.unwrapped_sample(-1) == doctest::Approx(p.sample(n - 1) - p.span()));
     }
-    CHECK(beyond_before > 0);  // the case of the issue occurs among these
+    CHECK(beyond_before > 0);  // such axes occur among these
 }
 
 TEST_CASE("geometry/vocabulary_stability: a division running to a translation limit cuts up to the limit") {
     // A box obstacle on [0,1] x [0.2,1]; its corners' divisions run to the limits. The grids on
-    // q1 are those where lo + (n - 1) step lands an ulp beyond 1: the top row was then not cut
-    // by the two divisions running up to it, and the faces either side of each merged (6, not 8).
+    // q1 are those where lo + (n - 1) step lands an ulp beyond 1: a top row sampled there would not
+    // be cut by the two divisions running up to it, and the faces either side of each would merge
+    // (6, not 8).
     class Box final : public PairOracle {
     public:
         bool blocked(const Eigen::Vector2d& q) const override { return q[0] > 0.31 && q[0] < 0.62 && q[1] > 0.43 && q[1] < 0.71; }
@@ -179,9 +180,10 @@ TEST_CASE("geometry/vocabulary_stability: a transformed scene has the same confi
 }
 
 TEST_CASE("geometry/vocabulary_stability: a cam against a follower on a tilted axis: 18 places at every grid (the issue's case)") {
-    // The issue's report: 15 places at grids 40-49, 52 and 64, 16 (by hand) at 50 and 56. The
-    // joins at the curve's top and bottom were placed at the middle of two boundary points, up to
-    // half a cell from the extremum, and the divisions from them depended on where the columns fell.
+    // The joins at the curve's top and bottom are found on the exact normal (docs/ACCURACY.md,
+    // "Topology against grid and drawing", rule 1): a join at the middle of two boundary points
+    // would lie up to half a cell from the extremum, and the divisions from it would depend on
+    // where the columns fell.
     const auto base = build(tilted_cam(0, "0.2 1", 40));
     check_hand_count(base);
     for (int g : {41, 44, 47, 50, 52, 56, 64, 113, 160}) {

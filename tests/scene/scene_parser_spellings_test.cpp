@@ -448,7 +448,7 @@ TEST_CASE("scene/scene_parser: a closing CONTACT list (Figures 7.12, 7.16) is th
           "5:1 expected end of input (a CONTACT list ends the scene; more situations are written 'Situation : ...') "
           "but found 'Situation'");
     CHECK(first_error(kw + "CONTACT (p x)") == "4:12 unknown surface 'x'");
-    // Other descriptors are not figure spellings: still rejected as before.
+    // Other descriptors are not figure spellings: rejected.
     CHECK(first_error(kw + "FORCE (a (0 -) (0 0))") ==
           "4:1 expected a section keyword (Individuals, Descriptions, Surfaces, Corners, Translational-Constraints, "
           "Rotational-Constraints, Forces, Linkages, Situation) followed by ':' but found 'FORCE'");

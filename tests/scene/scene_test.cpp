@@ -86,7 +86,7 @@ TEST_CASE("scene/scene: equality compares content, never source locations") {
 }
 
 TEST_CASE("scene/scene: find_* by hash agree with a scan, also for entries added after a lookup") {
-    // The index learns entries as they are added (issue 19: a scan per lookup made reading quadratic).
+    // The index learns entries as they are added (a scan per lookup would make reading quadratic).
     Scene s;
     auto scan = [&](const std::string& name) -> std::optional<ObjectId> {
         for (std::uint32_t i = 0; i < s.objects.size(); ++i)
