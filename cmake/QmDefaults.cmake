@@ -37,14 +37,32 @@ if(QM_SANITIZE)
   add_compile_options(-g1 -O1)
   # -O1 turns on GCC 12's flow analysis for -Wmaybe-uninitialized, which the sanitizers' instrumentation
   # makes report false positives (first in Boost.PropertyTree's optional<unsigned>); -O0 never ran it,
-  # and the Release build (-O3) still does.
-  list(APPEND QM_WARNINGS -Wno-maybe-uninitialized)
+  # and the Release build (-O3) still does. Clang has no such warning.
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+    list(APPEND QM_WARNINGS -Wno-maybe-uninitialized)
+  endif()
   add_link_options(-fsanitize=address,undefined)
   add_compile_definitions(QM_ENABLE_ASSERTS=1)
   # Tests that do a Release-sized amount of geometry check a smaller sample under the sanitizers
   # (they run 30x slower there); they ask this, not the compiler's own macros. The CLI asks it too:
   # there it frees at exit what a release build leaves to the operating system (cli/exit_owned.hpp).
   add_compile_definitions(QM_SANITIZED_BUILD=1)
+endif()
+
+if(QM_BUILD_FUZZ)
+  # Every object carries libFuzzer's coverage hooks and the sanitizers, so a fuzz target is guided by,
+  # and checks, the library code it calls; only the fuzz targets link libFuzzer itself (tests/fuzz).
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "QM_BUILD_FUZZ needs clang (CXX=clang++)")
+  endif()
+  add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=address,undefined)
+  # Assertions on whatever the build type: BOOST_ASSERT guards Spirit's preconditions, QM_ASSERT
+  # the models'; a fuzzer should stop at the first broken one.
+  add_compile_options(-UNDEBUG)
+  if(NOT QM_SANITIZE)  # which defines it already
+    add_compile_definitions(QM_ENABLE_ASSERTS=1)
+  endif()
 endif()
 
 function(qm_defaults target)

@@ -18,7 +18,7 @@ run_packages=(
   libbenchmark-dev                     # bench/ (small; the configure step looks for it)
 )
 test_packages=(
-  clang libclang-rt-14-dev             # libFuzzer targets and sanitizer runtimes
+  clang-16 libclang-rt-16-dev          # the sanitizer and libFuzzer tree (clang 16: C++20 lambdas may capture structured bindings)
   chromium chromium-driver python3-selenium  # the explorer page's test in a headless browser
 )
 

@@ -4,14 +4,9 @@
 // error was reported; every error is located on line 1 within the text (or one past its end) and
 // names what was expected in words (no mangled X3 type name); a JSON spelling's result is thesis
 // text that reads back to itself.
-// Assertions on, whatever the build type: BOOST_ASSERT guards Spirit's preconditions.
-#undef NDEBUG
-#ifndef QM_ENABLE_ASSERTS
-#define QM_ENABLE_ASSERTS 1
-#endif
+// Assertions are on in every object of a fuzz build, whatever its type (cmake/QmDefaults.cmake):
+// BOOST_ASSERT guards Spirit's preconditions, QM_ASSERT the model's.
 #include "query_text.hpp"
-// Instrument the reader itself (the fuzz build instruments only this translation unit).
-#include "query_text.cpp"
 
 #include <cstdint>
 #include <cstdlib>

@@ -17,13 +17,8 @@
 // Includes are resolved in a sandbox directory made at start-up (a.rules, b.rules including a.rules,
 // c.rules including itself); inputs naming an absolute path or `..` are skipped, so the fuzzer never
 // opens files outside it.
-// Assertions on, whatever the build type (the fuzz build may define NDEBUG): BOOST_ASSERT guards
-// Spirit's preconditions (x3's character classes abort on bytes >= 0x80, which the readers avoid
-// through qm/x3_ascii.hpp), and QM_ASSERT the model's. Before any include, so that all see it.
-#undef NDEBUG
-#ifndef QM_ENABLE_ASSERTS
-#define QM_ENABLE_ASSERTS 1
-#endif
+// Assertions are on in every object of a fuzz build, whatever its type (cmake/QmDefaults.cmake):
+// BOOST_ASSERT guards Spirit's preconditions, QM_ASSERT the model's.
 #include "engine/builtin_registry.hpp"
 #include "engine/engine.hpp"
 #include "engine/ground_atom_text.hpp"
@@ -35,35 +30,7 @@
 #include "engine/run_report.hpp"
 #include "engine/why.hpp"
 
-// The fuzz build instruments only this target, not the qm_engine library it links, so libFuzzer
-// would be blind to the engine's branches. Compiling the engine's sources into this TU
-// instruments them; the linker then takes no object from libqm_engine.a for these symbols.
-#include "engine/ground_atom_text.cpp"
-#include "engine/rule_checker.cpp"
-#include "engine/rule_compiler.cpp"
-#include "engine/rule_parser.cpp"
-#include "engine/rule_parser_error_handler.cpp"
-#include "engine/rule_parser_to_spec.cpp"
-#include "engine/rule_printer.cpp"
-#include "engine/rule_spec_reader.cpp"
-#include "engine/stratify_rules.cpp"
 // The runtime: the engine, its matcher and agenda, the builtins, explanations and reports.
-#include "engine/agenda.cpp"
-#include "engine/binding.cpp"
-#include "engine/builtin_registry.cpp"
-#include "engine/builtins_comparison.cpp"
-#include "engine/builtins_integer.cpp"
-#include "engine/builtins_qualitative.cpp"
-#include "engine/engine.cpp"
-#include "engine/engine_closed_world.cpp"
-#include "engine/engine_consequents.cpp"
-#include "engine/engine_run.cpp"
-#include "engine/fact_store.cpp"
-#include "engine/json_writer.cpp"
-#include "engine/matcher.cpp"
-#include "engine/run_report.cpp"
-#include "engine/value_table.cpp"
-#include "engine/why.cpp"
 
 #include <cstdint>
 #include <cstdlib>

@@ -1,5 +1,5 @@
 #!/bin/sh
-# tests/fuzz/fuzz_record.sh: the fuzzing record (issue 19 item 7; docs/FUZZING.md). Runs every
+# tests/fuzz/fuzz_record.sh: the fuzzing record (docs/FUZZING.md). Runs every
 # libFuzzer target of tests/fuzz/ for SECONDS of wall time each, JOBS at a time, each from a copy of
 # its seed corpus in WORK (the seeds in the tree stay as they are unless --merge is given), and
 # prints one Markdown table row per target: executions, executions per second, coverage (libFuzzer's
@@ -8,7 +8,7 @@
 # to hours of machine time; docs/FUZZING.md says how the recorded runs were made.
 #
 # Usage: tests/fuzz/fuzz_record.sh BUILD-FUZZ SECONDS [--jobs N] [--work DIR] [--merge] [TARGET...]
-#   BUILD-FUZZ  a fuzz build: CC=clang CXX=clang++ cmake -S . -B build-fuzz -DQM_BUILD_FUZZ=ON
+#   BUILD-FUZZ  a fuzz build: CC=clang-16 CXX=clang++-16 cmake -S . -B build-fuzz -DQM_BUILD_FUZZ=ON
 #               -DQM_BUILD_TESTS=OFF -DQM_BUILD_BENCH=OFF && cmake --build build-fuzz
 #   SECONDS     wall time per target (libFuzzer's -max_total_time)
 #   --jobs N    targets run at once (default 1: the machines here are shared)

@@ -4,27 +4,10 @@
 // Properties checked (abort on violation): no exception escapes; a result exists exactly when no
 // error was reported; every diagnostic points inside the input; every part of a checked scene
 // has closed counter-clockwise profiles and a positive size.
-// Assertions on, whatever the build type (the fuzz build may define NDEBUG): BOOST_ASSERT guards
-// Spirit's preconditions (x3's character classes abort on bytes >= 0x80, which the readers avoid
-// through qm/x3_ascii.hpp), and QM_ASSERT the model's. Before any include, so that all see it.
-#undef NDEBUG
-#ifndef QM_ENABLE_ASSERTS
-#define QM_ENABLE_ASSERTS 1
-#endif
+// Assertions are on in every object of a fuzz build, whatever its type (cmake/QmDefaults.cmake):
+// BOOST_ASSERT guards Spirit's preconditions, QM_ASSERT the model's.
 #include "geometry/kinematic_pairs.hpp"
 #include "geometry/metric_scene_parser.hpp"
-
-// The fuzz build instruments only this target, not the qm_geometry library it links, so the
-// reader's sources are compiled into this TU (as tests/fuzz/scene_text_fuzz.cpp does).
-#include "geometry/detail/metric_part_checker.cpp"
-#include "geometry/mechanism.cpp"
-#include "geometry/metric_scene_checker.cpp"
-#include "geometry/metric_scene_parser.cpp"
-#include "geometry/part.cpp"
-#include "geometry/part_generators.cpp"
-#include "geometry/profile.cpp"
-#include "geometry/profile_check.cpp"
-#include "geometry/segment_queries.cpp"
 
 #include <cstdint>
 #include <cstdlib>

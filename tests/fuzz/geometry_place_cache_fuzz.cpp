@@ -5,16 +5,9 @@
 // checksum of the rest), so that the parser behind the checksum is fuzzed too; without it the
 // checksum refuses nearly every mutation. The material (the key text) is the file's first line,
 // so matching and foreign material both occur.
-// Assertions on, whatever the build type (as in the other fuzz targets). Before any include.
-#undef NDEBUG
-#ifndef QM_ENABLE_ASSERTS
-#define QM_ENABLE_ASSERTS 1
-#endif
+// Assertions are on in every object of a fuzz build, whatever its type (cmake/QmDefaults.cmake):
+// BOOST_ASSERT guards Spirit's preconditions, QM_ASSERT the model's.
 #include "geometry/place_cache.hpp"
-
-// The fuzz build instruments only this target, not the qm_geometry library it links, so the
-// cache's sources are compiled into this TU (as geometry_metric_scene_fuzz.cpp does).
-#include "geometry/place_cache.cpp"
 
 #include <cstddef>
 #include <cstdint>

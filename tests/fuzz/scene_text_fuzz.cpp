@@ -4,27 +4,10 @@
 // error was reported; a syntax error's "expected X" names X in words (no mangled X3 type name);
 // a checked scene (with its corners and linkages) re-read from either printed notation is equal
 // to itself.
-// Assertions on, whatever the build type (RelWithDebInfo defines NDEBUG): BOOST_ASSERT guards
-// Spirit's preconditions (a 2026-11-23 replay of the corpus in a debug build found any byte >= 0x80
-// aborting the parser), and QM_ASSERT the scene model's. Before any include, so that all see it.
-#undef NDEBUG
-#ifndef QM_ENABLE_ASSERTS
-#define QM_ENABLE_ASSERTS 1
-#endif
+// Assertions are on in every object of a fuzz build, whatever its type (cmake/QmDefaults.cmake):
+// BOOST_ASSERT guards Spirit's preconditions, QM_ASSERT the model's.
 #include "scene/scene_parser.hpp"
 #include "scene/scene_printer.hpp"
-
-// The fuzz build instruments only this target, not the qm_scene library it links, so libFuzzer
-// would be blind to the parser's branches. Compiling the reader's sources into this TU
-// instruments them; the linker then takes no object from libqm_scene.a for these symbols.
-#include "scene/scene.cpp"
-#include "scene/scene_checker.cpp"
-#include "scene/scene_checker_constraints.cpp"
-#include "scene/scene_checker_directions.cpp"
-#include "scene/scene_checker_situations.cpp"
-#include "scene/scene_checker_surfaces.cpp"
-#include "scene/scene_parser.cpp"
-#include "scene/scene_printer.cpp"
 
 #include <cstdint>
 #include <cstdlib>

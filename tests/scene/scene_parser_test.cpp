@@ -148,7 +148,7 @@ TEST_CASE("scene/scene_parser: surface normals of the bundled scenes point out o
                 }
                 ++corner_contacts;
                 if (a.is_corner() != b.is_corner()) {
-                    CHECK(a.is_corner() ? can_contact(s, c.first, c.second) : can_contact(s, c.second, c.first));
+                    CHECK((a.is_corner() ? can_contact(s, c.first, c.second) : can_contact(s, c.second, c.first)));
                     continue;
                 }
                 auto some_side_touches = [&](SurfaceId corner, SurfaceId other) {
