@@ -4,9 +4,9 @@
 #include "analysis/branches.hpp"
 #include "analysis/detail/analysis_state.hpp"
 #include "scene/direction_text.hpp"
-#include "analysis/kinematic_chains.hpp"
+#include "scene/kinematic_chains.hpp"
 #include "engine/preferences.hpp"
-#include "engine/rule_compiler.hpp"
+#include "engine/rule_folder.hpp"
 #include "scene/vocabulary.hpp"
 #include "scene/what_if.hpp"
 #include "qm/assert.hpp"
@@ -22,9 +22,9 @@ namespace {
 // Every *.rules file directly in dir, in name order, checked as laws for a scene of this many dimensions.
 std::optional<engine::LoadedProgram> load_rules(const std::filesystem::path& dir, const Scene& scene,
                                                 Diagnostics& diagnostics) {
-    const std::vector<std::string> files = law_files(dir, diagnostics);
-    if (files.empty()) return std::nullopt;
-    return engine::load_programs(files, diagnostics, law_check_options(scene.translation_arity(), "scene '" + scene.name + "'"));
+    auto laws = engine::load_rule_folder(dir, diagnostics, law_check_options(scene.translation_arity(), "scene '" + scene.name + "'"));
+    if (!laws) return std::nullopt;
+    return std::move(laws->compiled);
 }
 
 // Law 1's choice sets, by object: which assumption stands for which motion.
@@ -60,29 +60,6 @@ std::optional<IdVector<ObjectId, ObjectChoices>> read_choices(const Scene& scene
 }
 
 }  // namespace
-
-std::vector<std::string> law_files(const std::filesystem::path& dir, Diagnostics& diagnostics) {
-    std::error_code ec;
-    std::vector<std::string> files;
-    // Why the folder gives no laws, in words a user can act on.
-    auto refuse = [&](const std::string& why) {
-        diagnostics.error({dir.string(), 1, 1}, "expected a folder of .rules files (the laws), but " + why);
-        return std::vector<std::string>{};
-    };
-    const std::filesystem::file_status st = std::filesystem::status(dir, ec);
-    if (ec && ec != std::errc::no_such_file_or_directory) return refuse("it cannot be read: " + ec.message());
-    if (!std::filesystem::exists(st)) return refuse("there is no such folder");
-    if (!std::filesystem::is_directory(st)) return refuse("it is a file, not a folder");
-    std::filesystem::directory_iterator it(dir, ec), end;
-    if (ec) return refuse("it cannot be read: " + ec.message());
-    for (; it != end; it.increment(ec)) {
-        if (ec) return refuse("it cannot be read: " + ec.message());
-        if (it->is_regular_file(ec) && it->path().extension() == ".rules") files.push_back(it->path().string());
-    }
-    if (files.empty()) return refuse("it holds none");
-    std::sort(files.begin(), files.end());
-    return files;
-}
 
 engine::LawCheckOptions law_check_options(std::optional<std::size_t> dimensions, const std::string& what) {
     engine::LawCheckOptions o;
@@ -185,7 +162,7 @@ SituationResult Analysis::State::read(std::size_t s, atms::EnvId env,
 
     bool stable = true;
     // Kinematic chains (Def 22), grouped where a branching choice set reaches several (docs/ANALYSIS.md).
-    const auto chains = kinematic_chains(scene.objects.size(), pairs(s, env));
+    const auto chains = scene::kinematic_chains(scene.objects.size(), pairs(s, env));
     std::vector<std::vector<atms::NodeId>> read_nodes(chains.size());
     if (!branches.empty())
         for (std::size_t c = 0; c < chains.size(); ++c)

@@ -191,9 +191,6 @@ private:
 // beside an analysis that succeeds.
 [[nodiscard]] std::optional<Analysis> analyse(const Scene& scene, const AnalysisOptions& options, Diagnostics& diagnostics);
 
-// The law files of a rules folder: every *.rules file directly in it, in name order (an error in
-// diagnostics, and nothing, when there is none).
-[[nodiscard]] std::vector<std::string> law_files(const std::filesystem::path& dir, Diagnostics& diagnostics);
 // How the laws are checked for a scene of this many dimensions (none: no arity check), `what` naming
 // the scene in the warning: citations required, direction literals of its arities.
 [[nodiscard]] engine::LawCheckOptions law_check_options(std::optional<std::size_t> dimensions, const std::string& what);

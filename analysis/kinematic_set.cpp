@@ -5,7 +5,7 @@
 // force taken away, with no nearness preference: the driver takes the forces away as a what-if
 // does, and knows no law.
 #include "analysis/detail/analysis_state.hpp"
-#include "analysis/kinematic_chains.hpp"
+#include "scene/kinematic_chains.hpp"
 #include "scene/direction_text.hpp"
 #include <algorithm>
 #include <map>
@@ -108,7 +108,7 @@ void Analysis::State::kinematic_set(SituationResult& r, std::size_t s, std::span
     }
     const std::size_t limit =
         options.kinematic ? options.combination_limit : std::min(options.combination_limit, AnalysisOptions::kinematic_count_cap);
-    for (const std::vector<ObjectId>& chain : kinematic_chains(scene.objects.size(), pairs(s, context->environment))) {
+    for (const std::vector<ObjectId>& chain : scene::kinematic_chains(scene.objects.size(), pairs(s, context->environment))) {
         std::vector<ObjectChoices> members;
         for (ObjectId o : chain) members.push_back(choices[o]);
         ChainOutcome outcome = consistent_combinations(engine->atms(), members, context->environment, limit);

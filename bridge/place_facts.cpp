@@ -55,8 +55,6 @@ void place_facts(Facts& f, const PairPlaces& pair, const g::Place& place, bool k
 
 }  // namespace
 
-std::string pair_symbol(std::string_view a, std::string_view b) { return std::string(a) + "/" + std::string(b); }
-
 std::string sign_text(int sign) { return std::string(1, sign_char(sign)); }
 std::string direction_text(g::QualDirection d) { return std::string{sign_char(d.s[0]), sign_char(d.s[1])}; }
 
@@ -65,7 +63,7 @@ void assert_pair(engine::Engine& e, const g::Mechanism& m, const PairPlaces& pai
     const ValueId p = f.sym(pair.name);
     f.premise(clock::pair, {p, f.sym(m.parts[pair.spec.a].name), f.sym(m.parts[pair.spec.b].name)}, pair.spec.where);
     for (int k = 0; k < 2; ++k)
-        f.premise(clock::axis, {p, f.num(k + 1), f.sym(pair.axes[static_cast<std::size_t>(k)].periodic ? "periodic" : "bounded")});
+        f.premise(clock::axis, {p, f.num(k + 1), f.sym(pair.request.cspace.axes[static_cast<std::size_t>(k)].periodic ? "periodic" : "bounded")});
     if (options.choice) {
         std::vector<ValueId> ids;
         for (const auto& place : pair.vocabulary.places) ids.push_back(f.num(place.id.value));
@@ -93,8 +91,8 @@ void assert_correlation(engine::Engine& e, const g::Mechanism& m, const PairPlac
     for (int i = 0; i < 2; ++i)
         for (int j = 0; j < 2; ++j) {
             if (!m.same_shaft(pp[i], qq[j]) || m.parts[pp[i]].fixed()) continue;
-            for (const auto& [x, y] : places_apart(p.vocabulary, i, p.axes[static_cast<std::size_t>(i)], q.vocabulary, j,
-                                                   q.axes[static_cast<std::size_t>(j)]))
+            for (const auto& [x, y] : places_apart(p.vocabulary, i, p.request.cspace.axes[static_cast<std::size_t>(i)], q.vocabulary, j,
+                                                   q.request.cspace.axes[static_cast<std::size_t>(j)]))
                 f.premise(clock::places_apart, {f.sym(p.name), f.num(x.value), f.sym(q.name), f.num(y.value)});
         }
 }

@@ -1,7 +1,6 @@
 // bridge/place_facts.hpp
-// Provides:   the place-vocabulary half of the bridge from geometry to the engine: PairPlaces (one
-//             kinematic pair's place vocabulary with what the envisioner needs beside it) and the
-//             functions that assert it, the chain's parts and the current state as facts for the
+// Provides:   the place-vocabulary half of the bridge from geometry to the engine: the functions
+//             that assert a pair's places (PairPlaces, pair_places.hpp), the chain's parts and the current state as facts for the
 //             laws of rules/clock/. Which geometric fact becomes which premise or assumption:
 //
 //   geometry                                         fact (premise unless said)
@@ -37,12 +36,12 @@
 //
 //             Signs and directions are the rule language's: (+) counter-clockwise or along the
 //             axis. A place id is the place's index in the vocabulary, as `--places` prints it.
-// Ownership:  PairPlaces is a value type owning its vocabulary; the functions add facts to the
-//             engine given and keep nothing.
+// Ownership:  the functions add facts to the engine given and keep nothing.
 // Pre:        every function is called before the engine first runs a rule with `not` or an
 //             aggregate (engine/engine.hpp: a closed world must not grow).
 // Knows nothing of any law: rules/clock/ decides what the facts mean.
 #pragma once
+#include "bridge/pair_places.hpp"
 #include "bridge/place_forces.hpp"
 #include "geometry/cspace.hpp"
 #include "engine/engine.hpp"
@@ -57,18 +56,6 @@
 #include <vector>
 
 namespace qm::bridge {
-
-struct PairPlaces {
-    std::string name;                       // "A/B": the pair's symbol in facts and output
-    geometry::PairSpec spec;                // its parts (a: axis q0, b: axis q1) and declaration
-    geometry::PlaceVocabulary vocabulary;
-    std::array<geometry::CSpaceAxis, 2> axes{};  // its configuration space's axes (q0, q1)
-    PairForces forces;                      // position-dependent forces by place
-    bool from_cache = false;
-};
-
-// The symbol of a pair of parts.
-[[nodiscard]] std::string pair_symbol(std::string_view a, std::string_view b);
 
 // Which of a pair's places to describe, and which adjacency.
 struct PlaceFactOptions {

@@ -1,7 +1,7 @@
 // cli/check_command.cpp: `qm-atms check` (cli/check_command.hpp).
 #include "check_command.hpp"
 #include "analysis/analysis.hpp"
-#include "engine/rule_compiler.hpp"
+#include "engine/rule_folder.hpp"
 #include "rules_location.hpp"
 #include <algorithm>
 #include <filesystem>
@@ -51,16 +51,16 @@ int check_command(std::span<const std::string> args, std::ostream& out, std::ost
         std::error_code ec;
         if (std::filesystem::is_directory(p, ec)) {
             laws = true;
-            for (std::string& f : analysis::law_files(p, d)) files.push_back(std::move(f));
+            for (std::string& f : engine::rule_folder_files(p, d)) files.push_back(std::move(f));
         } else {
             files.push_back(p);
         }
     }
-    std::optional<engine::LoadedProgram> program;
+    std::optional<engine::CheckedProgram> program;
     if (!d.has_errors()) {
         engine::LawCheckOptions options = analysis::law_check_options(dimensions, "the scene (--dimensions " + (dimensions ? std::to_string(*dimensions) : std::string()) + ")");
         options.require_citations = laws;
-        program = engine::load_programs(files, d, options);
+        program = engine::load_rule_files(files, d, options);
     }
     d.print(err);
     const std::size_t errors = static_cast<std::size_t>(std::count_if(d.items().begin(), d.items().end(), [](const Diagnostic& x) {
@@ -70,7 +70,7 @@ int check_command(std::span<const std::string> args, std::ostream& out, std::ost
         return x.severity == Severity::warning;
     }));
     out << "checked " << plural(files.size(), "file");
-    if (program) out << ", " << plural(program->program.rules.size(), "rule");
+    if (program) out << ", " << plural(program->compiled.program.rules.size(), "rule");
     out << ": " << (errors ? plural(errors, "error") : std::string("no errors")) << ", "
         << (warnings ? plural(warnings, "warning") : std::string("no warnings")) << '\n';
     return errors ? 2 : 0;

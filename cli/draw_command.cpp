@@ -2,7 +2,7 @@
 #include "draw_command.hpp"
 #include "geometry_usage.hpp"
 
-#include "pair_places.hpp"
+#include "bridge/pair_places.hpp"
 #include "state_drawing.hpp"
 
 #include "geometry/mechanism_drawing.hpp"
@@ -95,10 +95,11 @@ std::string place_text(const g::Place& p) {
 // The pair's parts at the sample configuration of place `text` ("A--B:ID").
 int draw_place(const g::Mechanism& m, const DrawArgs& a, std::ostream& os, std::ostream& err, std::string& title) {
     const auto colon = a.place.rfind(':');
-    const auto pair = colon == std::string::npos ? std::nullopt : find_pair(m, std::string_view(a.place).substr(0, colon));
+    const auto pair = colon == std::string::npos ? std::nullopt : bridge::find_pair(m, std::string_view(a.place).substr(0, colon));
     if (!pair) return usage_error(err, "--place takes PAIR:ID with PAIR a kinematic pair of " + a.scene + " written A--B (as --places names it), not '" + a.place + "'");
     Diagnostics diags;
-    const auto found = pair_places(m, *pair, open_place_cache(a.use_cache, a.cache_dir), false, diags);
+    const auto cache = bridge::open_place_cache(a.use_cache, a.cache_dir);
+    const auto found = bridge::pair_places(m, *pair, {.cache = cache ? &*cache : nullptr, .oracle = true}, diags);
     diags.print(err);
     if (!found) return 2;
     const auto& places = *found;

@@ -1,7 +1,7 @@
 // cli/envision_command.cpp: `qm-atms envision` (docs/ENVISION.md).
 #include "envision_command.hpp"
 #include "geometry_usage.hpp"
-#include "pair_places.hpp"
+#include "bridge/pair_places.hpp"
 #include "rules_location.hpp"
 
 #include "envision/envisionment.hpp"
@@ -228,7 +228,7 @@ int envision_command(std::span<const std::string> args, std::ostream& out, std::
     } else {
         return usage_error(err, "cannot find the laws (rules/clock): give --rules DIR or set QM_ATMS_RULES");
     }
-    const std::optional<g::PlaceCache> cache = open_place_cache(o.use_cache, o.cache);
+    const std::optional<g::PlaceCache> cache = bridge::open_place_cache(o.use_cache, o.cache);
     options.cache = cache ? &*cache : nullptr;
     options.max_states = o.max_states;
     std::optional<ev::Envisionment> e;

@@ -48,7 +48,7 @@ int explore_command(std::span<const std::string> args, std::ostream& out, std::o
         diags.print(err);
         return 2;
     }
-    const auto cache = open_place_cache(use_cache, cache_dir);
+    const auto cache = bridge::open_place_cache(use_cache, cache_dir);
     const auto selection = g::kinematic_pairs(*m);
     std::vector<ExplorePair> pairs;
     if (!g::check_grid_limit(*m, selection, diags)) {
@@ -56,7 +56,7 @@ int explore_command(std::span<const std::string> args, std::ostream& out, std::o
         return 2;
     }
     for (const auto& pair : selection.modelled) {
-        auto places = pair_places(*m, pair, cache, true, diags);
+        auto places = bridge::pair_places(*m, pair, {.cache = cache ? &*cache : nullptr, .space = true, .oracle = true}, diags);
         if (!places) {
             diags.print(err);
             return 2;

@@ -78,10 +78,10 @@ void write_pair(std::ostream& os, const g::Mechanism& m, const ExplorePair& e) {
     os << ',';
     json_string(os, b.name);
     os << "],\"units\":[\"" << unit_of(a) << "\",\"" << unit_of(b) << "\"],\n\"vocabulary\":";
-    const auto svg = cspace_svg_options(m, e.pair, 720, 540);
+    const auto svg = bridge::cspace_svg_options(m, e.pair, 720, 540);
     g::write_place_json(os, e.places.request.cspace, e.places.vocabulary, {svg.axes[0].unit, svg.axes[1].unit});
     std::ostringstream cspace;
-    g::write_cspace_svg(cspace, *e.places.oracle, *e.places.space, e.places.vocabulary, cspace_svg_options(m, e.pair, 720, 540));
+    g::write_cspace_svg(cspace, *e.places.oracle, *e.places.space, e.places.vocabulary, bridge::cspace_svg_options(m, e.pair, 720, 540));
     os << ",\"cspace_svg\":";
     json_string(os, cspace.str());
     const PairDrawing drawing(m, e);

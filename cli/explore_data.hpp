@@ -13,7 +13,7 @@
 // Invariants: the text holds no "</" (written "<\/" inside strings), so it can sit inside an
 //             HTML <script> element.
 #pragma once
-#include "pair_places.hpp"
+#include "bridge/pair_places.hpp"
 
 #include "envision/envisionment.hpp"
 #include "geometry/kinematic_pairs.hpp"
@@ -25,7 +25,7 @@ namespace qm::cli {
 
 struct ExplorePair {
     qm::geometry::PairSpec pair;
-    PairPlaces places;  // built with the sampled space
+    qm::bridge::PairPlaces places;  // built with the sampled space and the oracle
 };
 
 // A described behaviour's answer (envision/behaviour_query.hpp), a history the page can play.

@@ -3,7 +3,7 @@
 #include "metric_command.hpp"
 #include "geometry_usage.hpp"
 
-#include "pair_places.hpp"
+#include "bridge/pair_places.hpp"
 
 #include "bridge/scene_at_config.hpp"
 #include "scene/scene_printer.hpp"
@@ -86,7 +86,7 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
         diags.print(err);
         return 2;
     }
-    const std::optional<g::PlaceCache> cache = open_place_cache(use_cache, cache_dir);
+    const std::optional<g::PlaceCache> cache = bridge::open_place_cache(use_cache, cache_dir);
     if (svg_dir) {
         std::error_code ec;
         std::filesystem::create_directories(*svg_dir, ec);
@@ -104,7 +104,7 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
     js << ",\"pairs\":[";
     for (std::size_t k = 0; k < selection.modelled.size(); ++k) {
         const auto& pair = selection.modelled[k];
-        auto found = pair_places(*m, pair, cache, svg_dir.has_value(), diags);
+        auto found = bridge::pair_places(*m, pair, {.cache = cache ? &*cache : nullptr, .space = svg_dir.has_value(), .oracle = svg_dir.has_value()}, diags);
         if (!found) {
             diags.print(err);
             return 2;
@@ -113,7 +113,7 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
         if (svg_dir) {  // the picture needs the sampled space, which the cache does not keep
             const std::string name = m->parts[pair.a].name + "--" + m->parts[pair.b].name + ".svg";
             std::ofstream os(*svg_dir / name);
-            g::write_cspace_svg(os, *places.oracle, *places.space, places.vocabulary, cspace_svg_options(*m, pair, 720, 540));
+            g::write_cspace_svg(os, *places.oracle, *places.space, places.vocabulary, bridge::cspace_svg_options(*m, pair, 720, 540));
             if (!os) return usage_error(err, "cannot write '" + (*svg_dir / name).string() + "'");
         }
         if (places.no_place)
@@ -125,7 +125,7 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
         const bool from_cache = places.from_cache;
         text << "pair " << m->parts[pair.a].name << ' ' << m->parts[pair.b].name << " (q0 = " << axis_text(*m, pair.a, request.cspace.axes[0])
              << "; q1 = " << axis_text(*m, pair.b, request.cspace.axes[1]) << ")" << (from_cache ? " from cache" : "") << '\n';
-        const auto svg = cspace_svg_options(*m, pair, 720, 540);
+        const auto svg = bridge::cspace_svg_options(*m, pair, 720, 540);
         const std::array<g::AxisUnit, 2> units{svg.axes[0].unit, svg.axes[1].unit};
         g::write_place_text(text, vocabulary, units);
         js << (k ? "," : "") << "{\"parts\":[";

@@ -1,7 +1,7 @@
 // cli/state_drawing.cpp
 #include "state_drawing.hpp"
 
-#include "pair_places.hpp"
+#include "bridge/pair_places.hpp"
 #include "rules_location.hpp"
 
 #include "envision/state_query.hpp"
@@ -49,7 +49,7 @@ std::optional<ev::Envisionment> envision_for_drawing(const g::Mechanism& m, bool
         diags.error({"qm-atms", 1, 1}, "cannot find the laws (rules/clock): set QM_ATMS_RULES");
         return std::nullopt;
     }
-    const std::optional<g::PlaceCache> cache = open_place_cache(use_cache, cache_dir);
+    const std::optional<g::PlaceCache> cache = bridge::open_place_cache(use_cache, cache_dir);
     ev::EnvisionOptions options;
     options.rules = *rules / "clock";
     options.cache = cache ? &*cache : nullptr;
@@ -71,7 +71,7 @@ g::Configuration state_configuration(const g::Mechanism& m, const ev::Envisionme
     for (std::size_t k = 0; k < c.chain.pairs.size(); ++k) {
         const auto& pair = e.pairs[c.chain.pairs[k]];
         const g::Place& place = pair.vocabulary.places[state.places[k].value];
-        const Eigen::Vector2d sample = g::sample_configuration(g::CSpaceRequest{pair.axes}, place);
+        const Eigen::Vector2d sample = g::sample_configuration(pair.request.cspace, place);
         for (int i = 0; i < 2; ++i) {
             const g::PartId p = i == 0 ? pair.spec.a : pair.spec.b;
             if (placed[p.value] || m.parts[p].fixed()) continue;  // a fixed part's axis is a dummy

@@ -15,7 +15,7 @@
 //                 predicate (docs/RULES.md "Preferences"); a warning where no `exactly one`
 //                 assumes the chosen predicate (the preference chooses nothing);
 //             (Where facts come from, unknown predicates and rules that never fire are
-//             predicate_check.hpp's, which load_programs() runs after these.)
+//             predicate_check.hpp's, which load_rule_files() (rule_folder.hpp) runs after these.)
 //             Each finding is a located error in diagnostics; several are reported in one run.
 // Errors:     only into diagnostics; never throws for bad input.
 // Knows nothing of the ATMS.

@@ -301,40 +301,13 @@ std::optional<LoadedProgram> compile_program(const ProgramSpec& spec, Diagnostic
 
 }  // namespace qm::engine
 
-// Loading: the front end (rule_spec_reader.hpp), then the checker and the compiler.
-#include "engine/rule_checker.hpp"
-#include "engine/rule_spec_reader.hpp"
+// One file: the loader of rule_folder.hpp, which reads, checks and compiles.
+#include "engine/rule_folder.hpp"
 
 namespace qm::engine {
 std::optional<LoadedProgram> load_program(const std::string& path, Diagnostics& diagnostics) {
-    return load_programs(std::span<const std::string>(&path, 1), diagnostics);
-}
-
-std::optional<LoadedProgram> load_programs(std::span<const std::string> paths, Diagnostics& diagnostics,
-                                           const LawCheckOptions& laws) {
-    SourceTexts sources;
-    return load_programs(paths, diagnostics, laws, sources);
-}
-
-std::optional<LoadedProgram> load_programs(std::span<const std::string> paths, Diagnostics& diagnostics,
-                                           const LawCheckOptions& laws, SourceTexts& sources) {
-    ProgramSpec spec;
-    Diagnostics read;
-    read_rule_files(paths, spec, read, default_builtins(), &sources);
-    // A syntax error drops only its own item, so the items that were read are still checked and
-    // compiled: one run reports the syntax errors and the semantic errors of everything else, each
-    // with the source line it points at.
-    Diagnostics found;
-    bool checked = check_program(spec, found);
-    // Where predicates come from is checked only on a whole program: an item a syntax error dropped
-    // may be the one that states a predicate, which would make every use of it look misspelt.
-    if (!read.has_errors()) checked = check_predicates(spec, found) && checked;
-    auto program = compile_program(spec, found);
-    check_laws(spec, laws, found);
-    if (program) program->citations = citations(spec);
-    sources.attach_lines(read, diagnostics);
-    sources.attach_lines(found, diagnostics);
-    if (read.has_errors() || !checked || found.has_errors()) return std::nullopt;
-    return program;
+    auto checked = load_rule_files(std::span<const std::string>(&path, 1), diagnostics);
+    if (!checked) return std::nullopt;
+    return std::move(checked->compiled);
 }
 }  // namespace qm::engine

@@ -1,10 +1,11 @@
-// envision/chain.cpp: kinematic chains as connected components (thesis 8.1.4, Def 22).
+// envision/chain.cpp: the kinematic chains of Def 22 (scene/kinematic_chains.hpp), their pairs in
+// the order 8.2.3 traverses them.
 #include "envision/chain.hpp"
 #include "qm/assert.hpp"
 
+#include "scene/kinematic_chains.hpp"
+
 #include <algorithm>
-#include <boost/graph/adjacency_list.hpp>
-#include <boost/graph/connected_components.hpp>
 #include <deque>
 
 namespace qm::envision {
@@ -17,22 +18,23 @@ std::size_t Chain::object_index(g::PartId p) const {
 }
 
 std::vector<Chain> kinematic_chains(const g::Mechanism& m, std::span<const bridge::PairPlaces> pairs) {
-    using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
-    Graph graph(m.parts.size());
-    for (const auto& p : pairs) boost::add_edge(p.spec.a.value, p.spec.b.value, graph);
+    std::vector<std::pair<g::PartId, g::PartId>> links;
+    for (const auto& p : pairs) links.emplace_back(p.spec.a, p.spec.b);
     for (const auto& l : m.linkages)
-        for (std::size_t i = 1; i < l.parts.size(); ++i) boost::add_edge(l.parts[0].value, l.parts[i].value, graph);
-    std::vector<int> component(m.parts.size());
-    boost::connected_components(graph, component.data());
+        for (std::size_t i = 1; i < l.parts.size(); ++i) links.emplace_back(l.parts[0], l.parts[i]);
+    std::vector<std::size_t> component(m.parts.size());
+    const auto components = scene::kinematic_chains(m.parts.size(), links);
+    for (std::size_t c = 0; c < components.size(); ++c)
+        for (const g::PartId p : components[c]) component[p.value] = c;
 
     std::vector<Chain> chains;
     std::vector<int> chain_of_component(m.parts.size(), -1);
     std::vector<bool> placed(pairs.size(), false);
     for (std::size_t first = 0; first < pairs.size(); ++first) {
         if (placed[first]) continue;
-        const int c = component[pairs[first].spec.a.value];
-        QM_ASSERT(chain_of_component[static_cast<std::size_t>(c)] < 0, "a component's first pair is met once");
-        chain_of_component[static_cast<std::size_t>(c)] = static_cast<int>(chains.size());
+        const std::size_t c = component[pairs[first].spec.a.value];
+        QM_ASSERT(chain_of_component[c] < 0, "a component's first pair is met once");
+        chain_of_component[c] = static_cast<int>(chains.size());
         Chain chain;
         chain.index = chains.size();
         auto add_object = [&](g::PartId p) {
@@ -43,7 +45,7 @@ std::vector<Chain> kinematic_chains(const g::Mechanism& m, std::span<const bridg
             if (const auto s = m.shaft_of(p))
                 for (const g::PartId mate : m.linkages[*s].parts) add(mate);
         };
-        // Breadth-first over pairs that share a part or a shaft.
+        // The chain's pairs, breadth-first over pairs that share a part or a shaft (8.2.3).
         std::deque<std::size_t> queue{first};
         placed[first] = true;
         while (!queue.empty()) {
@@ -53,7 +55,7 @@ std::vector<Chain> kinematic_chains(const g::Mechanism& m, std::span<const bridg
             add_object(pairs[k].spec.a);
             add_object(pairs[k].spec.b);
             for (std::size_t j = 0; j < pairs.size(); ++j) {
-                if (placed[j]) continue;
+                if (placed[j] || component[pairs[j].spec.a.value] != c) continue;
                 const auto& x = pairs[k].spec;
                 const auto& y = pairs[j].spec;
                 if (m.same_shaft(x.a, y.a) || m.same_shaft(x.a, y.b) || m.same_shaft(x.b, y.a) || m.same_shaft(x.b, y.b)) {
@@ -65,7 +67,7 @@ std::vector<Chain> kinematic_chains(const g::Mechanism& m, std::span<const bridg
         QM_ASSERT(std::none_of(pairs.begin(), pairs.end(), [&](const bridge::PairPlaces& p) {
                       return component[p.spec.a.value] == c && !placed[static_cast<std::size_t>(&p - pairs.data())];
                   }),
-                  "pairs of one component share parts or shafts pairwise along the component");
+                  "the pairs of a chain are reached along shared parts and shafts");
         chains.push_back(std::move(chain));
     }
     return chains;

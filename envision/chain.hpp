@@ -1,10 +1,10 @@
 // envision/chain.hpp
 // Provides:   Chain and kinematic_chains(): the kinematic chains of a mechanism (thesis 8.1.4: "the
-//             transitive closure of kinematic pairs and common links"; Def 22), found as the
-//             connected components (Boost.Graph) of the graph whose vertices are the parts and whose
-//             edges are the modelled pairs and the shafts (linkages). Each chain is envisioned on its
-//             own (9.1.3: the clock's ratchet apart from its train); a part in no pair and on no
-//             shaft with a paired part is in no chain.
+//             transitive closure of kinematic pairs and common links"; Def 22), those of
+//             scene/kinematic_chains.hpp over the parts with the modelled pairs and the shafts
+//             (linkages) as links, each with its pairs. Each chain is envisioned on its own (9.1.3:
+//             the clock's ratchet apart from its train); a part in no pair and on no shaft with a
+//             paired part is in no chain.
 // Ownership:  value types.
 // Invariants: every modelled pair is in exactly one chain; chains are ordered by their first pair
 //             (declaration order); within a chain the pairs are in breadth-first order from its

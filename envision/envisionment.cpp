@@ -1,7 +1,7 @@
 // envision/envisionment.cpp: the envisioner's pipeline (thesis Figures 8.1, 8.4, 8.5).
 #include "envision/envisionment.hpp"
 #include "envision/behaviour_query.hpp"
-#include "envision/pair_places.hpp"
+#include "bridge/pair_places.hpp"
 #include "envision/state_dynamics.hpp"
 #include "envision/state_space.hpp"
 #include "envision/successors.hpp"
@@ -73,7 +73,7 @@ std::optional<Envisionment> envision(const geometry::Mechanism& m, const Envisio
     for (const auto& part : m.parts) e.parts.push_back(part.name);
     auto t0 = std::chrono::steady_clock::now();
     if (options.progress) options.progress({"place vocabularies", 0, 0});
-    auto pairs = load_pair_places(m, options.cache, diagnostics);
+    auto pairs = bridge::mechanism_places(m, {.cache = options.cache, .forces = true}, diagnostics);
     if (!pairs) return std::nullopt;
     e.pairs = std::move(*pairs);
     e.seconds_places = seconds_since(t0);

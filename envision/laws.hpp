@@ -1,17 +1,18 @@
 // envision/laws.hpp
 // Provides:   Laws, the envisioner's rule program (every *.rules file directly in a folder, by
-//             default rules/clock/, in name order), read and compiled once, and fresh engines over
-//             it: one for a chain's state space, one per state for its transitions. Each of these
-//             two gets only the rules that can matter for it (engine/program_slice.hpp, with the
-//             facts the bridge gives it and the conclusions the driver reads,
+//             default rules/clock/, in name order), read, checked and compiled once
+//             (engine/rule_folder.hpp), and fresh engines over it: one for a chain's state
+//             space, one per state for its transitions. Each of these two gets only the rules
+//             that can matter for it (a slice, engine/program_slice.hpp, of the one spec read,
+//             with the facts the bridge gives it and the conclusions the driver reads,
 //             bridge/clock_vocabulary.hpp): a state's engine is small, and it is made hundreds
 //             of times.
 // Ownership:  Laws holds the compiled programs (engine/shared_program.hpp) and their pristine value
 //             tables (ValueTable::share), both read only: each engine made shares the program and
 //             gets a copy of the table that owns only the values the engine adds, so engines are
 //             independent (and may run in different threads) and cheap to make.
-// Errors:     a folder with no .rules file, or rule files with errors: located diagnostics, and
-//             load() returns nothing.
+// Errors:     a folder that gives no .rules file, or rule files with errors: located diagnostics
+//             (engine/rule_folder.hpp), and load() returns nothing.
 // Knows nothing of any law: which laws there are is the folder's business.
 #pragma once
 #include "engine/engine.hpp"

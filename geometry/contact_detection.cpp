@@ -162,6 +162,13 @@ bool can_contact(const ContactFeature& corner, const Eigen::Vector2d& n, double 
     return (-corner.sides[0]).dot(n) >= -zero_tolerance && (-corner.sides[1]).dot(n) >= -zero_tolerance;
 }
 
+bool apart_beyond_contact(const Part& a, const Part& b, const Eigen::Vector2d& q, const ContactRequest& request, double chordal_tolerance) {
+    // A mesh's vertices lie on the exact profiles and its chords within the chordal tolerance of
+    // them, so FCL's distance is at most two chordal errors short of the exact one.
+    const double tol = request.tolerance * std::min(a.size(), b.size());
+    return placed_distance(place(a, q[0]), place(b, q[1])) > tol + 4 * chordal_tolerance;
+}
+
 ContactResult detect_contacts(const FclPairOracle& pair, const Eigen::Vector2d& q, const ContactRequest& request) {
     QM_REQUIRE(request.tolerance > 0 && request.normal_zero_tolerance > 0, "contact tolerances must be positive");
     ContactResult out;

@@ -62,6 +62,11 @@ struct ContactResult {
 
 // Pre: request tolerances positive.
 [[nodiscard]] ContactResult detect_contacts(const FclPairOracle& pair, const Eigen::Vector2d& q, const ContactRequest& request);
+// True when the exact profiles of parts a and b at q are farther apart than the contact tolerance
+// plus both meshes' chordal error: detect_contacts() would find them apart (no contact, no
+// overlap), so its FCL models need not be built to know it. False says nothing.
+[[nodiscard]] bool apart_beyond_contact(const Part& a, const Part& b, const Eigen::Vector2d& q, const ContactRequest& request,
+                                        double chordal_tolerance);
 
 // Def 17: the direction from `point` to the centre of rotation of `part` at coordinate q, each
 // component 0 within `zero_length`; all zero when the part does not rotate.

@@ -18,6 +18,7 @@ struct Configuration;
 struct ExternalForce;
 struct ParsedMechanism;
 class PairOracle;
+class FclPairOracle;
 struct ContactRequest;
 struct ContactResult;
 struct CSpaceRequest;

@@ -100,6 +100,10 @@ std::unique_ptr<FclPairOracle> pair_oracle(const Mechanism& m, const PairSpec& p
     return std::make_unique<FclPairOracle>(m.parts[pair.a], m.parts[pair.b], pair_chordal_tolerance(m, pair));
 }
 
+std::string pair_fingerprint(const Mechanism& m, const PairSpec& pair) {
+    return FclPairOracle::fingerprint_of(m.parts[pair.a], m.parts[pair.b], pair_chordal_tolerance(m, pair));
+}
+
 PlaceRequest place_request(const Mechanism& m, const PairSpec& pair) {
     PlaceRequest r;
     const auto grid = pair.grid.value_or(m.settings.grid);

@@ -41,6 +41,8 @@ struct PairSelection {
 [[nodiscard]] double pair_chordal_tolerance(const Mechanism& m, const PairSpec& pair);
 // Pre: the pair's parts have profiles.
 [[nodiscard]] std::unique_ptr<FclPairOracle> pair_oracle(const Mechanism& m, const PairSpec& pair);
+// pair_oracle(m, pair)'s fingerprint, without building its meshes (a place cache key).
+[[nodiscard]] std::string pair_fingerprint(const Mechanism& m, const PairSpec& pair);
 [[nodiscard]] PlaceRequest place_request(const Mechanism& m, const PairSpec& pair);
 
 }  // namespace qm::geometry

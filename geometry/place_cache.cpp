@@ -145,9 +145,11 @@ const char* to_string(CacheStatus s) noexcept {
     return "?";
 }
 
-std::string place_cache_material(const PairOracle& oracle, const PlaceRequest& r) {
+std::string place_cache_material(const PairOracle& oracle, const PlaceRequest& r) { return place_cache_material(oracle.fingerprint(), r); }
+
+std::string place_cache_material(std::string_view fingerprint, const PlaceRequest& r) {
     std::ostringstream os;
-    os << std::hexfloat << magic << '\n' << oracle.fingerprint() << '\n';
+    os << std::hexfloat << magic << '\n' << fingerprint << '\n';
     for (const auto& a : r.cspace.axes) os << "axis " << a.lo << ' ' << a.hi << ' ' << a.periodic << ' ' << a.samples << ' ' << a.stops << '\n';
     os << "tol " << r.cspace.boundary_tolerance << ' ' << r.cspace.normal_zero_tolerance << " merge " << r.merge_epsilon << " gap " << r.gap_epsilon << '\n';
     for (const auto& x : r.external) {

@@ -26,6 +26,8 @@ namespace qm::geometry {
 
 // The text that identifies a computation: geometry fingerprint plus all settings, exactly.
 [[nodiscard]] std::string place_cache_material(const PairOracle& oracle, const PlaceRequest& request);
+// The same from the oracle's fingerprint alone (FclPairOracle::fingerprint_of: no meshes built).
+[[nodiscard]] std::string place_cache_material(std::string_view fingerprint, const PlaceRequest& request);
 // 16 hex digits (FNV-1a, 64 bit) of the material.
 [[nodiscard]] std::string place_cache_key(const std::string& material);
 // The checksum a cache file ends with (`checksum <16 hex digits>`): FNV-1a 64 of the text before it.

@@ -4,7 +4,7 @@
 // rule checker (engine/predicate_check.hpp) knows every fact the driver gives the laws and every
 // conclusion it reads; and the bundled laws load with no warning at all.
 #include "analysis/analysis.hpp"
-#include "engine/rule_compiler.hpp"
+#include "engine/rule_folder.hpp"
 #include "engine/rule_spec_reader.hpp"
 #include "scene/vocabulary.hpp"
 #include <doctest/doctest.h>
@@ -41,13 +41,13 @@ TEST_CASE("analysis/scene_vocabulary: the bundled laws load with no error and no
     for (std::size_t dims : {2, 3}) {
         CAPTURE(dims);
         qm::Diagnostics d;
-        const auto files = qm::analysis::law_files(std::string(QM_SOURCE_DIR) + "/rules", d);
-        auto program = qm::engine::load_programs(files, d, qm::analysis::law_check_options(dims, "a scene"));
+        const auto files = qm::engine::rule_folder_files(std::string(QM_SOURCE_DIR) + "/rules", d);
+        auto program = qm::engine::load_rule_files(files, d, qm::analysis::law_check_options(dims, "a scene"));
         std::ostringstream shown;
         d.print(shown);
         CHECK_MESSAGE(d.items().empty(), shown.str());
         REQUIRE(program.has_value());
         // Every law file with a rule cites the thesis; the driver's declaration file too.
-        CHECK(program->citations.size() == files.size());
+        CHECK(program->compiled.citations.size() == files.size());
     }
 }

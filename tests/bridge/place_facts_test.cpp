@@ -29,9 +29,8 @@ bridge::PairPlaces pair_of(const g::Mechanism& m) {
     bridge::PairPlaces p;
     p.name = bridge::pair_symbol(m.parts[spec.a].name, m.parts[spec.b].name);
     p.spec = spec;
-    const auto request = g::place_request(m, spec);
-    p.axes = request.cspace.axes;
-    p.vocabulary = g::build_place_vocabulary(*g::pair_oracle(m, spec), request).vocabulary;
+    p.request = g::place_request(m, spec);
+    p.vocabulary = g::build_place_vocabulary(*g::pair_oracle(m, spec), p.request).vocabulary;
     p.forces = bridge::pair_forces(m, spec, p.vocabulary);
     return p;
 }

@@ -2,7 +2,8 @@
 // built executable (cli/metric_command.hpp): the Alex scene of a metric scene at a configuration
 // (contacts with their surfaces' normals and origin directions, corners, linkages as one body,
 // constraints of sliding parts, the forces acting there), located errors with exit status 2,
-// and place vocabularies as text, JSON and SVG, reused from the on-disk cache.
+// and place vocabularies as text, JSON and SVG, reused from the on-disk cache; parts that overlap as
+// drawn are refused alike by every command that takes places.
 #include "qm_atms_run.hpp"
 #include <cstdio>
 #include <cstdlib>
@@ -143,6 +144,29 @@ TEST_CASE("cli/metric_command: parts on one shaft are one Alex object; undeclare
         CHECK((first || second));
     }
     CHECK(contacts >= 1);
+}
+
+TEST_CASE("cli/metric_command: parts that overlap as drawn are refused by every command that takes places, as by --emit-def") {
+    // One error, the golden tests/cli/overlap/cam_overlap.err, from the place service
+    // (bridge/pair_places.hpp) that --places, draw --place, draw --history, explore and envision share.
+    const std::string folder = std::string(QM_SOURCE_DIR) + "/tests/cli/overlap";
+    const std::string golden = slurp(folder + "/cam_overlap.err");
+    REQUIRE(!golden.empty());
+    const std::string out = std::string(QM_BINARY_DIR) + "/overlap_test";
+    for (const std::string& args : std::vector<std::string>{"--emit-def cam_overlap.def", "--places cam_overlap.def --no-cache",
+                                   "draw cam_overlap.def --place cam--follower:0 --svg " + out + ".svg --no-cache",
+                                   "draw cam_overlap.def --history '#1' --svg " + out + ".svg --no-cache",
+                                   "explore cam_overlap.def -o " + out + " --no-cache", "envision cam_overlap.def --no-cache"}) {
+        CAPTURE(args);
+        const Result r = qm::test::qm_atms(args, "metric_test", {std::nullopt, folder});
+        CHECK(r.status == 2);
+        CHECK(r.out.empty());
+        CHECK(r.err == golden);
+    }
+    // Drawn as drawn, the overlap is what the picture shows: a warning.
+    const Result drawn = qm::test::qm_atms("draw cam_overlap.def --svg " + out + ".svg", "metric_test", {std::nullopt, folder});
+    CHECK(drawn.status == 0);
+    CHECK(drawn.err.find("cam_overlap.def:7:10: warning: 'cam' and 'follower' overlap at the drawn configuration") == 0);
 }
 
 TEST_CASE("cli/metric_command: bad input is located, exit status 2") {

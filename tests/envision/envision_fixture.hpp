@@ -2,7 +2,7 @@
 // (cached in the build tree), and the envisioner's laws, for the envisioner's tests.
 #pragma once
 #include "envision/envisionment.hpp"
-#include "envision/pair_places.hpp"
+#include "bridge/pair_places.hpp"
 #include "geometry/metric_scene_parser.hpp"
 #include <doctest/doctest.h>
 #include <filesystem>
@@ -34,7 +34,7 @@ inline geometry::Mechanism mechanism(const std::string& relative) {
 
 inline std::vector<bridge::PairPlaces> pairs_of(const geometry::Mechanism& m) {
     Diagnostics d;
-    auto p = load_pair_places(m, &test_cache(), d);
+    auto p = bridge::mechanism_places(m, {.cache = &test_cache(), .forces = true}, d);
     REQUIRE_MESSAGE(p.has_value(), printed(d));
     return std::move(*p);
 }

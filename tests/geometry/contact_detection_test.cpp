@@ -224,6 +224,32 @@ TEST_CASE("geometry/contact_detection: overlap beyond the tolerance is refused; 
     CHECK(far.fcl_distance == doctest::Approx(0.5));
 }
 
+TEST_CASE("geometry/contact_detection: parts apart beyond the contact tolerance are found so without FCL") {
+    // A disk above a table, lowered through touching into overlap: wherever the exact profiles say
+    // "apart", FCL finds no contact and no overlap; near and inside they say nothing.
+    const Part table = make({rect(-2, -1, 2, 0)}, PolygonDof::Kind::fixed);
+    const Part disk = make({circle_profile({0, 0.5}, 0.5)}, PolygonDof::Kind::translation, V(0, 1));
+    const double chordal = 1e-3;
+    const FclPairOracle pair(disk, table, chordal);
+    const double reach = request.tolerance * std::min(disk.size(), table.size()) + 4 * chordal;
+    int apart = 0, undecided = 0;
+    for (double y = 0.2; y > -0.1; y -= 0.001) {
+        const V q(y, 0.0);
+        if (apart_beyond_contact(disk, table, q, request, chordal)) {
+            ++apart;
+            const auto r = detect_contacts(pair, q, request);
+            CHECK(r.status == ContactStatus::ok);
+            CHECK(r.contacts.empty());
+        } else {
+            ++undecided;
+            CHECK(y < reach + 1e-9);  // the disk's lowest point is at y
+        }
+    }
+    CHECK(apart > 0);
+    CHECK(undecided > 0);
+    CHECK_FALSE(apart_beyond_contact(disk, table, {-0.05, 0.0}, request, chordal));
+}
+
 TEST_CASE("geometry/contact_detection: the origin direction resolved against a contact's normal (7.3, Def 17)") {
     // A part turning about (0 0), touched at (-0.8 0.5): its origin direction is (+ -). Against a
     // normal (0.6 -0.8), also (+ -), the turn across the normal is qualitatively ambiguous

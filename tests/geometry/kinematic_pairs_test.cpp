@@ -67,6 +67,16 @@ TEST_CASE("geometry/kinematic_pairs: a declared pair that can never touch is ski
     CHECK(sel.skipped[0].where.line == 1);
 }
 
+TEST_CASE("geometry/kinematic_pairs: a pair's fingerprint is its oracle's, and changes with the chordal tolerance") {
+    const std::string text = "(Defmechanism d Settings ((chordal-tolerance %)) Parts ((a (disk-cam (radius 0.5) (eccentricity 0.2)) (rotation))"
+                             " (b (follower (width 2) (height 0.5)) (at 0 0.5) (translation (0 1) (limits -0.3 0.5)))))";
+    auto with = [&](const std::string& tolerance) { return read(std::string(text).replace(text.find('%'), 1, tolerance)); };
+    const auto m = with("1e-4"), finer = with("1e-5");
+    const auto pair = kinematic_pairs(m).modelled.at(0);
+    CHECK(pair_fingerprint(m, pair) == pair_oracle(m, pair)->fingerprint());
+    CHECK(pair_fingerprint(finer, kinematic_pairs(finer).modelled.at(0)) != pair_fingerprint(m, pair));
+}
+
 TEST_CASE("geometry/kinematic_pairs: axes follow the degrees of freedom, symmetry and windows") {
     const auto m = read(
         "(Defmechanism d Settings ((grid 40 30) (boundary-tolerance 1e-7))"

@@ -95,6 +95,8 @@ TEST_CASE("geometry/place_cache: the key covers geometry and every setting") {
     CHECK(changed([](PlaceRequest& r) { r.external.push_back({1, 0.0, "g"}); }));
     CHECK(place_cache_key(place_cache_material(c.tessellated(1e-3), req)) != place_cache_key(place_cache_material(c.tessellated(2e-3), req)));
     CHECK(place_cache_key(base).size() == 16);
+    // The material is the oracle's fingerprint and the request: the fingerprint alone gives it.
+    CHECK(place_cache_material(c.exact.fingerprint(), req) == base);
 }
 
 TEST_CASE("geometry/place_cache: a truncated file is never served, at any length") {
