@@ -16,6 +16,7 @@
 
 // The fuzz build instruments only this target, not the qm_geometry library it links, so the
 // reader's sources are compiled into this TU (as tests/fuzz/scene_text_fuzz.cpp does).
+#include "geometry/detail/metric_keywords.cpp"
 #include "geometry/detail/metric_part_checker.cpp"
 #include "geometry/mechanism.cpp"
 #include "geometry/metric_scene_checker.cpp"
