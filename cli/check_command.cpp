@@ -1,5 +1,6 @@
 // cli/check_command.cpp: `qm-atms check` (cli/check_command.hpp).
 #include "check_command.hpp"
+#include "command_options.hpp"
 #include "analysis/analysis.hpp"
 #include "engine/rule_folder.hpp"
 #include "rules_location.hpp"
@@ -25,19 +26,14 @@ const char* check_usage() noexcept {
 int check_command(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
     std::vector<std::string> paths;
     std::optional<std::size_t> dimensions;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        if (args[i] == "--dimensions") {
-            if (i + 1 >= args.size() || (args[i + 1] != "2" && args[i + 1] != "3")) {
-                err << "qm-atms: error: --dimensions expects 2 or 3\n" << check_usage();
-                return 2;
-            }
-            dimensions = static_cast<std::size_t>(args[++i][0] - '0');
-        } else if (!args[i].empty() && args[i][0] == '-') {
-            err << "qm-atms: error: unknown option '" << args[i] << "' of check\n" << check_usage();
-            return 2;
-        } else {
-            paths.push_back(args[i]);
-        }
+    {
+        CommandOptions cl(check_usage());
+        std::optional<std::string> given;
+        cl.positionals(paths);
+        cl.single("--dimensions", "2 or 3", given);
+        if (auto status = cl.parse(args, out, err)) return *status;
+        if (given && *given != "2" && *given != "3") return cl.bad_value(err, "--dimensions", *given);
+        if (given) dimensions = static_cast<std::size_t>((*given)[0] - '0');
     }
     Diagnostics d;
     if (paths.empty()) {

@@ -1,5 +1,6 @@
 // cli/draw_command.cpp: `qm-atms draw` (thesis Figures 9.11-9.13: the parts drawn at a place).
 #include "draw_command.hpp"
+#include "command_options.hpp"
 #include "geometry_usage.hpp"
 
 #include "bridge/pair_places.hpp"
@@ -46,31 +47,48 @@ bool parse_size(const std::string& text, int& width, int& height) {
     return number(std::string_view(text).substr(0, x), width) && number(std::string_view(text).substr(x + 1), height);
 }
 
-std::optional<std::string> parse_args(std::span<const std::string> args, DrawArgs& a) {
-    if (args.empty()) return "draw takes a metric scene";
-    a.scene = args[0];
-    for (std::size_t i = 1; i < args.size(); ++i) {
-        const std::string& o = args[i];
-        const bool has_value = i + 1 < args.size();
-        if (o == "--no-cache") a.use_cache = false;
-        else if (o == "--config" && has_value) a.config = args[++i], a.has_config = true;
-        else if (o == "--place" && has_value) a.place = args[++i];
-        else if (o == "--history" && has_value) a.history = args[++i], a.has_history = true;
-        else if (o == "--columns" && has_value) {
-            const std::string& n = args[++i];
-            if (n.empty() || n.size() > 2 || n.find_first_not_of("0123456789") != std::string::npos || std::stoi(n) < 1)
-                return "--columns takes a number of drawings a row, 1 to 99, not '" + n + "'";
-            a.columns = static_cast<std::size_t>(std::stoi(n));
-        }
-        else if (o == "--svg" && has_value) a.svg = args[++i];
-        else if (o == "--cache" && has_value) a.cache_dir = args[++i];
-        else if (o == "--size" && has_value) {
-            if (!parse_size(args[++i], a.width, a.height)) return "--size takes WIDTHxHEIGHT, each 100 to 4000 pixels, not '" + args[i] + "'";
-            a.has_size = true;
-        } else return "unknown or incomplete option '" + o + "' for draw";
+// The command line (usage in cli/geometry_usage.cpp). nullopt: `a` read; otherwise the exit status
+// to return (0 after --help or --version). An option that would change nothing is refused.
+std::optional<int> parse_args(std::span<const std::string> args, DrawArgs& a, std::ostream& out, std::ostream& err) {
+    CommandOptions cl(draw_usage());
+    std::vector<std::string> scenes;
+    std::optional<std::string> config, place, history, columns, svg, cache, size;
+    bool no_cache = false;
+    cl.positionals(scenes);
+    cl.single("--config", "a configuration, e.g. --config 'cam=30, follower=0.1'", config);
+    cl.single("--place", "a place PAIR:ID, e.g. --place cam--follower:3", place);
+    cl.single("--history", "states one after another, e.g. --history '#0 #1 #2'", history);
+    cl.single("--columns", "a number of drawings a row, 1 to 99", columns);
+    cl.single("--svg", "a file to write the drawing to", svg);
+    cl.single("--size", "WIDTHxHEIGHT, each 100 to 4000 pixels", size);
+    cl.single("--cache", "a folder for the place vocabularies", cache);
+    cl.flag("--no-cache", no_cache);
+    if (auto status = cl.parse(args, out, err)) return status;
+    if (scenes.empty()) return cl.error(err, "draw takes a metric scene");
+    if (scenes.size() > 1) return cl.error(err, "draw takes one metric scene, not '" + scenes[0] + "' and '" + scenes[1] + "'");
+    a.scene = scenes[0];
+    if (columns) {
+        const std::string& n = *columns;
+        if (n.empty() || n.size() > 2 || n.find_first_not_of("0123456789") != std::string::npos || std::stoi(n) < 1)
+            return cl.bad_value(err, "--columns", n);
+        a.columns = static_cast<std::size_t>(std::stoi(n));
     }
-    if (a.svg.empty()) return "draw needs --svg FILE";
-    if (int(a.has_config) + int(!a.place.empty()) + int(a.has_history) > 1) return "draw takes one of --config, --place and --history";
+    if (size && !parse_size(*size, a.width, a.height)) return cl.bad_value(err, "--size", *size);
+    if (!svg) return cl.error(err, "draw needs --svg FILE");
+    if (int(config.has_value()) + int(place.has_value()) + int(history.has_value()) > 1)
+        return cl.error(err, "draw takes one of --config, --place and --history");
+    if (columns && !history) return cl.error(err, "--columns lays out the drawings of a --history: give it with --history");
+    if (cache && no_cache) return cl.error(err, "--cache DIR and --no-cache contradict each other: give one");
+    if ((cache || no_cache) && !place && !history)
+        return cl.error(err, std::string(cache ? "--cache" : "--no-cache") +
+                                 " chooses where the place vocabularies of --place or --history come from; a drawing at a configuration needs none");
+    a.config = config.value_or(""), a.has_config = config.has_value();
+    a.place = place.value_or("");
+    a.history = history.value_or(""), a.has_history = history.has_value();
+    a.svg = *svg;
+    a.use_cache = !no_cache;
+    if (cache) a.cache_dir = *cache;
+    a.has_size = size.has_value();
     if (a.has_history && !a.has_size) a.width = 340, a.height = 300;  // one drawing of a strip
     return std::nullopt;
 }
@@ -144,9 +162,8 @@ int draw_history(const g::Mechanism& m, const DrawArgs& a, std::ostream& os, std
 }  // namespace
 
 int draw_command(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
-    (void)out;
     DrawArgs a;
-    if (auto why = parse_args(args, a)) return usage_error(err, *why);
+    if (auto status = parse_args(args, a, out, err)) return *status;
     Diagnostics diags;
     const auto m = g::read_mechanism_file(a.scene, diags);
     if (!m) {

@@ -1,7 +1,9 @@
 // cli/envision_command.cpp: `qm-atms envision` (docs/ENVISION.md).
 #include "envision_command.hpp"
+#include "command_options.hpp"
 #include "geometry_usage.hpp"
 #include "bridge/pair_places.hpp"
+#include "graph_svg.hpp"
 #include "rules_location.hpp"
 
 #include "envision/envisionment.hpp"
@@ -16,7 +18,6 @@
 #include "geometry/metric_scene_parser.hpp"
 
 #include <chrono>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <cstdio>
@@ -130,26 +131,76 @@ bool write_whole(const std::filesystem::path& path, const std::string& text, std
     return !ec;
 }
 
-// The graph rendered by Graphviz's `dot`, when it is installed.
+// The graph laid out and drawn by Graphviz's library (cli/graph_svg.hpp), written whole.
 bool render_svg(const std::filesystem::path& path, const std::string& graph, std::ostream& err) {
-    if (std::system("command -v dot >/dev/null 2>&1") != 0) {
-        err << "qm-atms: --svg needs Graphviz's `dot`, which is not installed: write the graph with --dot FILE and render it with "
-               "`dot -Tsvg FILE -o OUT.svg` where Graphviz is\n";
+    const GraphSvg drawn = graph_svg(graph);
+    if (!drawn.svg) {
+        err << "qm-atms: cannot draw '" << path.string() << "': " << drawn.why_not << '\n';
         return false;
     }
-    const std::filesystem::path input = path.string() + ".dot.part", output = path.string() + ".part";
-    if (!write_whole(input, graph, err)) return false;
-    const std::string command = "dot -Tsvg '" + input.string() + "' -o '" + output.string() + "'";
-    const int status = std::system(command.c_str());
-    std::filesystem::remove(input);
-    if (status != 0) {
-        err << "qm-atms: `dot` failed to render '" << path.string() << "'\n";
-        std::filesystem::remove(output);
-        return false;
+    return write_whole(path, *drawn.svg, err);
+}
+
+// The command line (usage in cli/geometry_usage.cpp). nullopt: `o` read; otherwise the exit status
+// to return (0 after --help or --version). An option that would change nothing is refused.
+std::optional<int> parse_options(std::span<const std::string> args, Options& o, std::ostream& out, std::ostream& err) {
+    CommandOptions cl(envision_usage());
+    std::vector<std::string> scenes;
+    std::optional<std::string> max_states, cache, rules, dot, svg;
+    bool no_cache = false;
+    cl.positionals(scenes);
+    cl.flag("--table", o.table);
+    cl.flag("--json", o.json);
+    cl.flag("--stats", o.stats);
+    cl.flag("--no-cache", no_cache);
+    cl.single("--max-states", "a positive whole number", max_states);
+    cl.repeated("--without", "an external force to take away, e.g. --without 'Force follower' or --without 'Force follower spring'",
+                o.without);
+    cl.single("--from", "a state, e.g. --from '#3'", o.from);
+    cl.single("--next", "a state, e.g. --next '#3' or --next 'cam/follower-1 + 0'", o.next, "ask one at a time");
+    cl.single("--previous", "a state, e.g. --previous '#3'", o.previous, "ask one at a time");
+    cl.single("--path", "a behaviour, e.g. --path 'follower=+; follower=-'", o.path, "ask one at a time");
+    cl.repeated("--avoid", "a state description to avoid, e.g. --avoid 'cam=0'", o.avoid);
+    cl.single("--why-not", "a transition, e.g. --why-not '#3 -> #4'", o.why_not, "ask one at a time");
+    cl.single("--dot", "a file to write the graph to", dot);
+    cl.single("--svg", "a file to draw the graph in (SVG)", svg);
+    cl.single("--cache", "a folder for the place vocabularies", cache);
+    cl.single("--rules", "a folder of .rules files (the Clock laws)", rules);
+    if (auto status = cl.parse(args, out, err)) return status;
+    if (scenes.empty()) return cl.error(err, "envision takes a metric scene");
+    if (scenes.size() > 1) return cl.error(err, "envision takes one metric scene, not '" + scenes[0] + "' and '" + scenes[1] + "'");
+    o.scene = scenes[0];
+    if (max_states) {
+        const auto n = count_of(*max_states);
+        if (!n || *n == 0) return cl.bad_value(err, "--max-states", *max_states);
+        o.max_states = *n;
     }
-    std::error_code ec;
-    std::filesystem::rename(output, path, ec);
-    return !ec;
+    if (cache && no_cache) return cl.error(err, "--cache DIR and --no-cache contradict each other: give one");
+    o.use_cache = !no_cache;
+    if (cache) o.cache = *cache;
+    if (rules) o.rules = *rules;
+    if (dot) o.dot = *dot;
+    if (svg) o.svg = *svg;
+    if (o.table && o.json) return cl.error(err, "--table and --json are two different outputs: give one");
+    if (!o.avoid.empty() && !o.path) return cl.error(err, "--avoid goes with --path");
+    // A question is answered in text about the whole envisionment: the options that shape the
+    // envisionment printed without one would change nothing.
+    const char* question = o.next ? "--next" : o.previous ? "--previous" : o.path ? "--path" : o.why_not ? "--why-not" : nullptr;
+    if (question)
+        for (const auto& [given, option] : {std::pair{o.json, "--json"}, std::pair{o.table, "--table"}, std::pair{o.from.has_value(), "--from"},
+                                            std::pair{dot.has_value(), "--dot"}, std::pair{svg.has_value(), "--svg"}})
+            if (given)
+                return cl.error(err, std::string(question) + " answers a question in text, and " + option +
+                                         " shapes only the envisionment printed without one: give one or the other");
+    return std::nullopt;
+}
+
+// --stats: where the time went, on standard error.
+void print_stats(const ev::Envisionment& e, std::ostream& err) {
+    err << "places: " << e.seconds_places << " s\n";
+    for (const auto& c : e.chains)
+        err << "chain " << c.chain.index + 1 << ": states " << c.seconds_states << " s, transitions " << c.seconds_transitions
+            << " s, nogoods " << c.nogoods << '\n';
 }
 
 // --next, --previous, --path, --why-not: each answered in turn; 2 after a bad question.
@@ -177,37 +228,8 @@ int answer_questions(const Options& o, const g::Mechanism& m, const ev::Envision
 }  // namespace
 
 int envision_command(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
-    if (args.empty()) return usage_error(err, "envision takes a metric scene");
     Options o;
-    o.scene = args[0];
-    for (std::size_t i = 1; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        const bool has_value = i + 1 < args.size();
-        if (a == "--table") o.table = true;
-        else if (a == "--json") o.json = true;
-        else if (a == "--stats") o.stats = true;
-        else if (a == "--no-cache") o.use_cache = false;
-        else if (a == "--cache" && has_value) o.cache = args[++i];
-        else if (a == "--rules" && has_value) o.rules = args[++i];
-        else if (a == "--without" && has_value) o.without.push_back(args[++i]);
-        else if (a == "--next" && has_value) o.next = args[++i];
-        else if (a == "--previous" && has_value) o.previous = args[++i];
-        else if (a == "--from" && has_value) o.from = args[++i];
-        else if (a == "--path" && has_value) o.path = args[++i];
-        else if (a == "--avoid" && has_value) o.avoid.push_back(args[++i]);
-        else if (a == "--why-not" && has_value) o.why_not = args[++i];
-        else if (a == "--dot" && has_value) o.dot = args[++i];
-        else if (a == "--svg" && has_value) o.svg = args[++i];
-        else if (a == "--max-states" && has_value) {
-            const auto n = count_of(args[++i]);
-            if (!n || *n == 0) return usage_error(err, "--max-states takes a positive whole number, not '" + args[i] + "'");
-            o.max_states = *n;
-        } else {
-            return usage_error(err, "unknown or incomplete option '" + a + "' for envision");
-        }
-    }
-    if (o.table && o.json) return usage_error(err, "--table and --json are two different outputs: give one");
-    if (!o.avoid.empty() && !o.path) return usage_error(err, "--avoid goes with --path");
+    if (auto status = parse_options(args, o, out, err)) return *status;
     Diagnostics diags;
     const auto m = g::read_mechanism_file(o.scene, diags);
     if (!m) {
@@ -245,6 +267,7 @@ int envision_command(std::span<const std::string> args, std::ostream& out, std::
         diags.print(err);
         if (status != 0) return status;
         out << text.str();
+        if (o.stats) print_stats(*e, err);
         return 0;
     }
     if (o.from) {
@@ -265,12 +288,7 @@ int envision_command(std::span<const std::string> args, std::ostream& out, std::
     else if (o.table) ev::write_table(text, *m, *e);
     else ev::write_text(text, *m, *e);
     out << text.str();
-    if (o.stats) {
-        err << "places: " << e->seconds_places << " s\n";
-        for (const auto& c : e->chains)
-            err << "chain " << c.chain.index + 1 << ": states " << c.seconds_states << " s, transitions " << c.seconds_transitions
-                << " s, nogoods " << c.nogoods << '\n';
-    }
+    if (o.stats) print_stats(*e, err);
     return 0;
 }
 

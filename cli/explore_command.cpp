@@ -1,5 +1,6 @@
 // cli/explore_command.cpp: `qm-atms explore`, the explorer page (docs/EXPLORER.md).
 #include "explore_command.hpp"
+#include "command_options.hpp"
 #include "geometry_usage.hpp"
 
 #include "explore_assets.hpp"
@@ -28,22 +29,30 @@ int usage_error(std::ostream& err, const std::string& what) {
 }  // namespace
 
 int explore_command(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
-    if (args.empty()) return usage_error(err, "explore takes a metric scene");
-    std::optional<std::filesystem::path> dir, cache_dir;
-    bool use_cache = true, envisioned = true;
-    std::vector<std::string> path_texts, avoid;
-    for (std::size_t i = 1; i < args.size(); ++i) {
-        if (args[i] == "--no-cache") use_cache = false;
-        else if (args[i] == "--no-envision") envisioned = false;
-        else if ((args[i] == "--path" || args[i] == "--avoid") && i + 1 < args.size()) (args[i] == "--path" ? path_texts : avoid).push_back(args[i + 1]), ++i;
-        else if ((args[i] == "-o" || args[i] == "--cache") && i + 1 < args.size()) (args[i] == "-o" ? dir : cache_dir) = args[i + 1], ++i;
-        else return usage_error(err, "unknown or incomplete option '" + args[i] + "' for explore");
-    }
-    if (!dir) return usage_error(err, "explore needs -o DIR");
-    if (!envisioned && !path_texts.empty()) return usage_error(err, "--path plays a path of the envisionment, which --no-envision leaves out");
-    if (!avoid.empty() && path_texts.empty()) return usage_error(err, "--avoid goes with --path");
+    CommandOptions cl(explore_usage());
+    std::vector<std::string> scenes, path_texts, avoid;
+    std::optional<std::string> folder, cache_text;
+    bool no_cache = false, no_envision = false;
+    cl.positionals(scenes);
+    cl.single("-o", "a folder to write the page to", folder);
+    cl.flag("--no-envision", no_envision);
+    cl.repeated("--path", "a behaviour to play, e.g. --path 'follower=+; follower=-'", path_texts);
+    cl.repeated("--avoid", "a state description to avoid, e.g. --avoid 'cam=0'", avoid);
+    cl.single("--cache", "a folder for the place vocabularies", cache_text);
+    cl.flag("--no-cache", no_cache);
+    if (auto status = cl.parse(args, out, err)) return *status;
+    if (scenes.empty()) return cl.error(err, "explore takes a metric scene");
+    if (scenes.size() > 1) return cl.error(err, "explore takes one metric scene, not '" + scenes[0] + "' and '" + scenes[1] + "'");
+    if (!folder) return cl.error(err, "explore needs -o DIR");
+    if (no_envision && !path_texts.empty()) return cl.error(err, "--path plays a path of the envisionment, which --no-envision leaves out");
+    if (!avoid.empty() && path_texts.empty()) return cl.error(err, "--avoid goes with --path");
+    if (cache_text && no_cache) return cl.error(err, "--cache DIR and --no-cache contradict each other: give one");
+    const std::optional<std::filesystem::path> dir = *folder;
+    std::optional<std::filesystem::path> cache_dir;
+    if (cache_text) cache_dir = *cache_text;
+    const bool use_cache = !no_cache, envisioned = !no_envision;
     Diagnostics diags;
-    const auto m = g::read_mechanism_file(args[0], diags);
+    const auto m = g::read_mechanism_file(scenes[0], diags);
     if (!m) {
         diags.print(err);
         return 2;

@@ -2,6 +2,7 @@
 // status: 0 success, 2 bad input, 1 internal error (STYLE.md section 6).
 #include "qm/assert.hpp"
 #include "check_command.hpp"
+#include "command_options.hpp"
 #include "draw_command.hpp"
 #include "envision_command.hpp"
 #include "explore_command.hpp"
@@ -10,10 +11,14 @@
 #include "resource_limits.hpp"
 #include "run_command.hpp"
 #include "scene_command.hpp"
+#include "qm/spelling.hpp"
+#include <array>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <new>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace {
@@ -23,7 +28,10 @@ constexpr const char* usage =
     "       qm-atms run PROGRAM.rules [--why 'FACT'] [--json] [--max-facts N] [--max-environments N] [--max-memory SIZE]\n"
     "       qm-atms envision METRIC-SCENE [options]    the envisionment of a mechanism (thesis chapters 8-9)\n"
     "       qm-atms check [RULES-DIR | FILE.rules]... [--dimensions 2|3]\n"
-    "       qm-atms --help\n";
+    "       qm-atms --help | --version    (COMMAND --help: that command's usage alone)\n";
+
+// The commands named by a word (the others are options: --places, --emit-def).
+constexpr std::array<std::string_view, 5> commands = {"run", "check", "envision", "draw", "explore"};
 
 }  // namespace
 
@@ -41,6 +49,18 @@ int main(int argc, char** argv) {
                       << qm::cli::check_usage();
             return 0;
         }
+        if (args[0] == "--version") {
+            std::cout << qm::cli::version_text() << '\n';
+            return 0;
+        }
+        // A misspelt command would be read as a scene file of that name: named instead, unless
+        // such a file is there.
+        std::error_code ec;
+        if (args[0].find_first_of("./") == std::string::npos && !std::filesystem::exists(args[0], ec))
+            if (auto near = qm::nearest_spelling(args[0], commands)) {
+                std::cerr << "qm-atms: error: unknown command '" << args[0] << "'; did you mean '" << *near << "'?\n" << usage;
+                return 2;
+            }
         if (args[0] == "run") {
             doing = "running " + (args.size() > 1 ? args[1] : std::string("a rule program"));
             return qm::cli::run_command(std::span<const std::string>(args).subspan(1), std::cout, std::cerr);

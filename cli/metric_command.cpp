@@ -1,6 +1,7 @@
 // cli/metric_command.cpp: metric scenes at the command line: the Alex scene at a configuration
 // (built by bridge/scene_at_config, printed here) and the place vocabularies of the pairs.
 #include "metric_command.hpp"
+#include "command_options.hpp"
 #include "geometry_usage.hpp"
 
 #include "bridge/pair_places.hpp"
@@ -60,28 +61,40 @@ std::string emitted_scene_comment(const std::string& path, const std::string& co
 }  // namespace
 
 int emit_def_command(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
-    if (args.empty() || args.size() > 2) return usage_error(err, "--emit-def takes a metric scene and an optional CONFIG");
+    CommandOptions cl(metric_usage());
+    std::vector<std::string> given;
+    cl.positionals(given);
+    if (auto status = cl.parse(args, out, err)) return *status;
+    if (given.empty() || given.size() > 2) return cl.error(err, "--emit-def takes a metric scene and an optional CONFIG");
     Diagnostics diags;
-    const std::string config = args.size() > 1 ? args[1] : std::string();
-    const auto scene = bridge::read_scene_at_config(args[0], config, diags);
+    const std::string config = given.size() > 1 ? given[1] : std::string();
+    const auto scene = bridge::read_scene_at_config(given[0], config, diags);
     diags.print(err);
     if (!scene || diags.has_errors()) return 2;
-    out << emitted_scene_comment(args[0], config) << scene::print_scene(*scene);
+    out << emitted_scene_comment(given[0], config) << scene::print_scene(*scene);
     return 0;
 }
 
 int places_command(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
-    if (args.empty()) return usage_error(err, "--places takes a metric scene");
-    bool json = false, use_cache = true;
+    CommandOptions cl(metric_usage());
+    std::vector<std::string> scenes;
+    std::optional<std::string> svg, cache_text;
+    bool json = false, no_cache = false;
+    cl.positionals(scenes);
+    cl.flag("--json", json);
+    cl.single("--svg", "a folder to draw each pair's configuration space in", svg);
+    cl.single("--cache", "a folder for the place vocabularies", cache_text);
+    cl.flag("--no-cache", no_cache);
+    if (auto status = cl.parse(args, out, err)) return *status;
+    if (scenes.empty()) return cl.error(err, "--places takes a metric scene");
+    if (scenes.size() > 1) return cl.error(err, "--places takes one metric scene, not '" + scenes[0] + "' and '" + scenes[1] + "'");
+    if (cache_text && no_cache) return cl.error(err, "--cache DIR and --no-cache contradict each other: give one");
+    const bool use_cache = !no_cache;
     std::optional<std::filesystem::path> svg_dir, cache_dir;
-    for (std::size_t i = 1; i < args.size(); ++i) {
-        if (args[i] == "--json") json = true;
-        else if (args[i] == "--no-cache") use_cache = false;
-        else if ((args[i] == "--svg" || args[i] == "--cache") && i + 1 < args.size()) (args[i] == "--svg" ? svg_dir : cache_dir) = args[i + 1], ++i;
-        else return usage_error(err, "unknown or incomplete option '" + args[i] + "' for --places");
-    }
+    if (svg) svg_dir = *svg;
+    if (cache_text) cache_dir = *cache_text;
     Diagnostics diags;
-    const auto m = g::read_mechanism_file(args[0], diags);
+    const auto m = g::read_mechanism_file(scenes[0], diags);
     if (!m) {
         diags.print(err);
         return 2;

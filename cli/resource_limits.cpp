@@ -7,6 +7,7 @@
 #include <exception>
 #include <new>
 #include <sys/resource.h>
+#include <tuple>
 #include <unistd.h>
 
 #include "qm/address_sanitizer.hpp"
@@ -65,26 +66,31 @@ std::uint64_t ResourceLimits::default_max_memory() {
     return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page) / 2;
 }
 
-std::optional<bool> read_limit_option(CommandLine& cl, ResourceLimits& limits) {
-    const std::string& a = cl.arg();
-    if (a != "--max-facts" && a != "--max-environments" && a != "--max-memory") return std::nullopt;
-    std::optional<std::string> text;
-    if (a == "--max-memory") {
-        constexpr const char* what = "a size like 4G, 512M or 2000000000 (bytes)";
-        if (!cl.single(limits.given.memory, what)) return false;
-        auto n = size_of(*limits.given.memory);
-        if (!n) return cl.bad_value(what, *limits.given.memory);
-        limits.max_memory = *n;
-        return true;
+namespace {
+constexpr const char* count_what = "a positive number";
+constexpr const char* size_what = "a size like 4G, 512M or 2000000000 (bytes)";
+}  // namespace
+
+void declare_limit_options(CommandOptions& options, ResourceLimits& limits) {
+    options.single("--max-facts", count_what, limits.given.facts);
+    options.single("--max-environments", count_what, limits.given.environments);
+    options.single("--max-memory", size_what, limits.given.memory);
+}
+
+std::optional<int> read_limit_options(const CommandOptions& options, ResourceLimits& limits, std::ostream& err) {
+    for (auto [name, given, target] : {std::tuple{"--max-facts", &limits.given.facts, &limits.max_facts},
+                                       std::tuple{"--max-environments", &limits.given.environments, &limits.max_environments}}) {
+        if (!*given) continue;
+        auto n = positive(**given);
+        if (!n) return options.bad_value(err, name, **given);
+        *target = *n;
     }
-    const bool facts = a == "--max-facts";
-    std::optional<std::string>& seen = facts ? limits.given.facts : limits.given.environments;
-    constexpr const char* what = "a positive number";
-    if (!cl.single(seen, what)) return false;
-    auto n = positive(*seen);
-    if (!n) return cl.bad_value(what, *seen);
-    (facts ? limits.max_facts : limits.max_environments) = *n;
-    return true;
+    if (limits.given.memory) {
+        auto n = size_of(*limits.given.memory);
+        if (!n) return options.bad_value(err, "--max-memory", *limits.given.memory);
+        limits.max_memory = *n;
+    }
+    return std::nullopt;
 }
 
 const char* limits_usage() noexcept {

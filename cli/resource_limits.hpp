@@ -1,8 +1,9 @@
 // cli/resource_limits.hpp
 // Provides:   the resource limits of the commands that run laws or rule programs (`qm-atms
 //             SCENE.def`, `qm-atms run`; an envisioner command takes the same): ResourceLimits, the
-//             options that set them (--max-facts N, --max-environments N, --max-memory SIZE) read
-//             by read_limit_option(), their usage text, apply_memory_limit() (the process' address
+//             options that set them (--max-facts N, --max-environments N, --max-memory SIZE),
+//             declared by declare_limit_options() and checked by read_limit_options(), their usage
+//             text, apply_memory_limit() (the process' address
 //             space, RLIMIT_AS), and the message a reached limit ends a run with:
 //               grow.rules:2:1: error: fact limit 500000 reached while firing rule 'grow'; raise it with --max-facts
 //               qm-atms: error: memory limit 11.7 GB reached while running grow.rules; raise it with --max-memory
@@ -16,7 +17,7 @@
 #pragma once
 #include "engine/run_options.hpp"
 #include "qm/limit_reached.hpp"
-#include "command_line.hpp"
+#include "command_options.hpp"
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -38,9 +39,10 @@ struct ResourceLimits {
     [[nodiscard]] engine::EngineLimits engine_limits() const { return {max_facts, max_environments}; }
 };
 
-// Reads one of the limit options at the command line's current argument. Returns nullopt when the
-// argument is not one of them, false after reporting a bad or repeated value, true when read.
-[[nodiscard]] std::optional<bool> read_limit_option(CommandLine& cl, ResourceLimits& limits);
+// Declares the limit options on a command's line, into limits.given.
+void declare_limit_options(CommandOptions& options, ResourceLimits& limits);
+// After options.parse(): the values given, checked, into limits; nullopt, or 2 after reporting a bad one.
+[[nodiscard]] std::optional<int> read_limit_options(const CommandOptions& options, ResourceLimits& limits, std::ostream& err);
 
 // The options' lines for a usage text.
 [[nodiscard]] const char* limits_usage() noexcept;

@@ -24,33 +24,21 @@ struct RunOptions {
     ResourceLimits limits;  // --max-facts, --max-environments, --max-memory
 };
 
-std::optional<RunOptions> parse(std::span<const std::string> args, std::ostream& err) {
-    RunOptions o;
-    CommandLine cl(args, err);
-    while (cl.next()) {
-        const std::string& a = cl.arg();
-        if (a == "--json") {
-            o.json = true;
-        } else if (a == "--why") {
-            // One explanation per run: a second --why would silently replace the first.
-            if (!cl.single(o.why, "a fact, e.g. --why '(queen 1 2)'", "ask one at a time")) return std::nullopt;
-        } else if (auto read = read_limit_option(cl, o.limits)) {
-            if (!*read) return std::nullopt;
-        } else if (cl.is_option()) {
-            cl.unknown();
-            return std::nullopt;
-        } else if (o.program.empty()) {
-            o.program = a;
-        } else {
-            cl.error("more than one program given ('" + o.program + "', '" + a + "')");
-            return std::nullopt;
-        }
-    }
-    if (o.program.empty()) {
-        cl.error("no program given");
-        return std::nullopt;
-    }
-    return o;
+// nullopt: `o` read; otherwise the exit status to return (0 after --help or --version).
+std::optional<int> parse(std::span<const std::string> args, RunOptions& o, std::ostream& out, std::ostream& err) {
+    CommandOptions cl(run_usage());
+    std::vector<std::string> programs;
+    cl.positionals(programs);
+    cl.flag("--json", o.json);
+    // One explanation per run: a second --why would silently replace the first.
+    cl.single("--why", "a fact, e.g. --why '(queen 1 2)'", o.why, "ask one at a time");
+    declare_limit_options(cl, o.limits);
+    if (auto status = cl.parse(args, out, err)) return status;
+    if (auto status = read_limit_options(cl, o.limits, err)) return status;
+    if (programs.empty()) return cl.error(err, "no program given");
+    if (programs.size() > 1) return cl.error(err, "more than one program given ('" + programs[0] + "', '" + programs[1] + "')");
+    o.program = programs[0];
+    return std::nullopt;
 }
 
 // Prints diagnostics, each with the source line it points at: those of loading carry theirs already;
@@ -82,11 +70,8 @@ std::string run_usage() {
 }
 
 int run_command(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
-    auto options = parse(args, err);
-    if (!options) {
-        err << run_usage();
-        return 2;
-    }
+    std::optional<RunOptions> options(std::in_place);
+    if (auto status = parse(args, *options, out, err)) return *status;
     apply_memory_limit(options->limits);
     Diagnostics diagnostics;
     auto loaded = engine::load_program(options->program, diagnostics);

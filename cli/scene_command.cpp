@@ -130,11 +130,8 @@ std::string scene_usage() {
 }
 
 int scene_command(std::span<const std::string> args, std::istream& in, std::ostream& out, std::ostream& err) {
-    auto options = parse_scene_options(args, err);
-    if (!options) {
-        err << scene_usage();
-        return 2;
-    }
+    std::optional<SceneOptions> options(std::in_place);
+    if (auto status = parse_scene_options(args, *options, out, err)) return *status;
     apply_memory_limit(options->limits);
     Diagnostics d;
     std::optional<scene::Scene> scene = load_scene(*options, d, err);
@@ -187,7 +184,7 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
             for (Diagnostic& w : analysis->inert_contacts(s)) inert.add(std::move(w));
     inert.print(err);
     if (options->interactive) {
-        run_session(*analysis, options->json, in, out, err);
+        run_session(*analysis, options->json, situation, in, out, err);
         return 0;
     }
     // The answer is written whole or not at all: a limit reached while it is being made

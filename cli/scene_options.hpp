@@ -1,10 +1,12 @@
 // cli/scene_options.hpp
 // Provides:   SceneOptions, the options of `qm-atms SCENE.def` (cli/scene_command.hpp, whose usage
-//             text lists them), read by parse_scene_options().
-// Errors:     a bad command line is reported on err as `qm-atms: error: ...` (cli/command_line.hpp)
-//             and gives nullopt; --situation is checked against the scene once it is read.
+//             text lists them), read by parse_scene_options(), which also refuses the combinations
+//             in which an option would change nothing (--full with --json, which gives every tree
+//             whole; --kinematic with --why, whose answer lists no combinations).
+// Errors:     a bad command line is reported on err as `qm-atms: error: ...` with the usage
+//             (cli/command_options.hpp); --situation is checked against the scene once it is read.
 #pragma once
-#include "command_line.hpp"
+#include "command_options.hpp"
 #include "resource_limits.hpp"
 #include <cstddef>
 #include <optional>
@@ -31,6 +33,8 @@ struct SceneOptions {
     ResourceLimits limits;  // --max-facts, --max-environments, --max-memory
 };
 
-[[nodiscard]] std::optional<SceneOptions> parse_scene_options(std::span<const std::string> args, std::ostream& err);
+// nullopt: `options` read; otherwise the exit status to return (0 after --help or --version, 2 after an error).
+[[nodiscard]] std::optional<int> parse_scene_options(std::span<const std::string> args, SceneOptions& options, std::ostream& out,
+                                                     std::ostream& err);
 
 }  // namespace qm::cli

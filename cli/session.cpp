@@ -5,6 +5,7 @@
 #include "analysis/why_printer.hpp"
 #include "line_editor.hpp"
 #include "query_text.hpp"
+#include "qm/assert.hpp"
 #include "qm/spelling.hpp"
 #include "scene/scene_parser.hpp"
 #include "scene/what_if.hpp"
@@ -60,8 +61,8 @@ std::string trim(const std::string& s) {
 // Queries against the loaded analysis, without reloading anything.
 class Session {
 public:
-    Session(analysis::Analysis& analysis, bool json, std::ostream& out, std::ostream& err)
-        : analysis_(analysis), json_(json), out_(out), err_(err) {}
+    Session(analysis::Analysis& analysis, bool json, std::size_t situation, std::ostream& out, std::ostream& err)
+        : analysis_(analysis), json_(json), situation_(situation), out_(out), err_(err) {}
 
     void run(std::istream& in) {
         LineInput input(in, out_);
@@ -173,15 +174,16 @@ private:
     analysis::Analysis& analysis_;
     bool json_;
     bool full_ = false;  // `full on`: why answers whole
-    std::size_t situation_ = 1;
+    std::size_t situation_;
     std::ostream& out_;
     std::ostream& err_;
 };
 
 }  // namespace
 
-void run_session(analysis::Analysis& analysis, bool json, std::istream& in, std::ostream& out, std::ostream& err) {
-    Session(analysis, json, out, err).run(in);
+void run_session(analysis::Analysis& analysis, bool json, std::size_t situation, std::istream& in, std::ostream& out, std::ostream& err) {
+    QM_REQUIRE(situation >= 1 && situation <= analysis.situations().size(), "a situation of the analysis");
+    Session(analysis, json, situation, out, err).run(in);
 }
 
 }  // namespace qm::cli

@@ -14,6 +14,8 @@ run_packages=(
   libeigen3-dev                        # geometry
   libfcl-dev libccd-dev                # collision and distance
   libedit-dev                          # line editing and history in the interactive mode (-i)
+  libcli11-dev                         # every command's options (CLI11, header-only)
+  libgraphviz-dev                      # envision --svg: Graphviz's library lays out and draws the graph
   doctest-dev                          # unit tests (small; the configure step looks for it)
   libbenchmark-dev                     # bench/ (small; the configure step looks for it)
 )

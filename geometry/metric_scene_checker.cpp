@@ -5,7 +5,10 @@
 
 #include "geometry/detail/metric_checker.hpp"
 
+#include "qm/spelling.hpp"
+
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <map>
 
@@ -47,9 +50,13 @@ void Checker::settings(const mast::SettingsSection& s, MechanismSettings& out) {
             const auto n1 = e.values.size() == 2 ? whole(e.values[1], 2, 4096, "a grid size") : n0;
             if (n0 && n1) out.grid = {*n0, *n1};
         } else {
-            error(e.key, "unknown setting '" + e.key.text +
-                             "'; the settings are chordal-tolerance, contact-tolerance, boundary-tolerance, normal-zero-tolerance, "
-                             "merge-epsilon, gap-epsilon, grid");
+            constexpr std::array<std::string_view, 7> settings = {"chordal-tolerance", "contact-tolerance", "boundary-tolerance",
+                                                                  "normal-zero-tolerance", "merge-epsilon", "gap-epsilon", "grid"};
+            const std::string near = did_you_mean(key, settings);
+            error(e.key, "unknown setting '" + e.key.text + "'" +
+                             (near.empty() ? "; the settings are chordal-tolerance, contact-tolerance, boundary-tolerance, "
+                                             "normal-zero-tolerance, merge-epsilon, gap-epsilon, grid"
+                                           : near));
         }
     }
 }

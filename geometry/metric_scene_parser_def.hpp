@@ -6,12 +6,17 @@
 //             x3::with<state_tag>.
 // Invariants: every position_tagged node produced by an annotated rule records its start
 //             offset; the top-level rules turn the first expectation failure into one located
-//             diagnostic (`expected ... but found ...`) and fail, so no exception escapes.
+//             diagnostic (`expected ... but found ...`) and fail, so no exception escapes. Every
+//             keyword position ends in unknown_word() (qm/x3_unknown_word.hpp), so a misspelt
+//             keyword is named, with the nearest one, instead of the token after it.
 #pragma once
 #include "qm/sexpr_text.hpp"
 #include "qm/x3_ascii.hpp"
 #include "qm/x3_sexpr.hpp"
+#include "qm/x3_unknown_word.hpp"
 #include "geometry/metric_scene_ast.hpp"
+#include "geometry/detail/metric_keywords.hpp"
+#include "geometry/part_generators.hpp"
 #include "geometry/metric_source.hpp"
 #include "qm/diagnostics.hpp"
 #include <boost/fusion/include/adapt_struct.hpp>
@@ -84,6 +89,16 @@ inline auto store_text(std::string Node::*member) {
 // A keyword as a Name node (its text as written), for the first member of every item.
 struct keyword_class;
 inline auto kwname(const char* s) { return x3::rule<keyword_class, ast::Name>{s} = x3::raw[kw(s)][store_text(&ast::Name::text)]; }
+
+// The keyword positions (geometry/detail/metric_keywords.hpp): each ends in unknown_word().
+using x3_parse::unknown_word;
+namespace kws = qm::geometry::detail;
+
+// A generator's name (geometry/part_generators.hpp), in any case.
+inline auto known_generator = [](auto& ctx) {
+    x3::_pass(ctx) = find_generator(ascii_lower(x3::_attr(ctx).text)) != nullptr;
+    x3::_val(ctx) = x3::_attr(ctx);
+};
 
 // Note: `a >> b > c` is written `(a >> b) > c` (the C++ precedence) so that clang does not warn.
 
@@ -188,6 +203,7 @@ const x3::rule<struct section_end_class> section_end = "a section keyword (Setti
 const x3::rule<struct defmechanism_class, ast::Name> defmechanism = "'Defmechanism'";
 const x3::rule<struct eoi_class> end_of_input = "end of input";
 const x3::rule<struct sense_class, ast::Name> sense = "ccw or cw";
+const x3::rule<struct generator_name_class, ast::Name> generator_name = "a generator";
 
 const auto name_def = name_inner;
 const auto name_inner_def = x3::raw[x3::lexeme[x3_ascii::letter >> *name_char]][store_text(&ast::Name::text)];
@@ -197,31 +213,36 @@ const auto sign_def = sign_inner;
 const auto sign_inner_def = x3::raw[x3::lexeme[+(x3::char_ - x3_ascii::blank - x3::char_("();"))]][store_text(&ast::SignToken::text)];
 const auto point_def = (x3::lit('(') >> number) > number > close;
 
-const auto sense_def = kwname("ccw") | kwname("cw");
+const auto sense_def = kwname("ccw") | kwname("cw") | unknown_word(kws::sense_keywords(), false);
 const auto polygon_item_def = (x3::lit('(') >> kwname("polygon")) > +point > close;
 const auto circle_item_def = (x3::lit('(') >> kwname("circle")) > point > number > close;
 const auto line_step_def = (x3::lit('(') >> kwname("line")) > number > number > close;
 const auto arc_step_def = (x3::lit('(') >> kwname("arc")) > number > number > number > number > sense > close;
-const auto step_def = line_step | arc_step;
+const auto step_def = line_step | arc_step | unknown_word(kws::step_keywords(), true);
 const auto profile_item_def = (x3::lit('(') >> kwname("profile")) > point > +step > profile_end;
 const auto param_def = (x3::lit('(') >> name) > number > close;
-const auto generator_item_def = (x3::lit('(') >> name) > *param > close;
+// A known generator's item is read with expectations. Any other name heads a generator item if the
+// item reads as one: the checker names the unknown generator, and checks the rest of the scene;
+// a word heading anything else is an unknown word, reported by part_item.
+const auto generator_name_def = name[known_generator];
+const auto generator_item_def = ((x3::lit('(') >> generator_name) > *param > close) | ((x3::lit('(') >> name >> *param) >> ')');
 const auto at_item_def = (x3::lit('(') >> kwname("at")) > number > number > close;
 const auto turn_item_def = (x3::lit('(') >> kwname("turn")) > number > close;
-const auto limits_def = (x3::lit('(') >> kwname("limits")) > number > number > close;
+const auto limits_def = ((x3::lit('(') >> kwname("limits")) > number > number > close) | unknown_word(kws::limits_keywords(), true);
 const auto dof_item_def =
     ((x3::lit('(') >> kwname("fixed")) > x3::attr(boost::optional<ast::Point>()) > x3::attr(boost::optional<ast::Limits>()) > close) |
     ((x3::lit('(') >> kwname("rotation")) > -point > x3::attr(boost::optional<ast::Limits>()) > close) |
     ((x3::lit('(') >> kwname("translation")) > point > limits > close);
 const auto symmetry_item_def = (x3::lit('(') >> kwname("symmetry")) > number > close;
-const auto part_item_def = polygon_item | circle_item | profile_item | at_item | turn_item | dof_item | symmetry_item | generator_item;
+const auto part_item_def = polygon_item | circle_item | profile_item | at_item | turn_item | dof_item | symmetry_item | generator_item |
+                           unknown_word(kws::part_item_keywords(), true);
 const auto part_entry_def = (x3::lit('(') >> name) > *part_item > part_end;
 
 const auto setting_def = (x3::lit('(') >> name) > *number > close;
 
 const auto grid_item_def = (x3::lit('(') >> kwname("grid")) > number > number > close;
 const auto window_item_def = (x3::lit('(') >> kwname("window")) > name > number > number > close;
-const auto pair_item_def = grid_item | window_item;
+const auto pair_item_def = grid_item | window_item | unknown_word(kws::pair_item_keywords(), true);
 const auto pair_entry_def = (x3::lit('(') >> name) > name > *pair_item > pair_end;
 
 const auto linkage_entry_def = (x3::lit('(') >> name) > +name > close;
@@ -229,7 +250,7 @@ const auto linkage_entry_def = (x3::lit('(') >> name) > +name > close;
 const auto torque_item_def = (x3::lit('(') >> kwname("torque")) > sign > close;
 const auto direction_item_def = (x3::lit('(') >> kwname("direction")) > number > number > close;
 const auto when_item_def = (x3::lit('(') >> kwname("when")) > number > number > close;
-const auto force_item_def = torque_item | direction_item | at_item | when_item;
+const auto force_item_def = torque_item | direction_item | at_item | when_item | unknown_word(kws::force_item_keywords(), true);
 const auto force_entry_def = (x3::lit('(') >> name) > name > *force_item > force_end;
 
 const auto settings_section_def = kwname("settings") > '(' > *setting > close;
@@ -237,7 +258,8 @@ const auto parts_section_def = kwname("parts") > '(' > *part_entry > close;
 const auto pairs_section_def = kwname("pairs") > '(' > *pair_entry > close;
 const auto linkages_section_def = kwname("linkages") > '(' > *linkage_entry > close;
 const auto forces_section_def = kwname("forces") > '(' > *force_entry > close;
-const auto section_def = settings_section | parts_section | pairs_section | linkages_section | forces_section;
+const auto section_def =
+    settings_section | parts_section | pairs_section | linkages_section | forces_section | unknown_word(kws::section_keywords(), false);
 
 const auto close_def = x3::lit(')');
 const auto part_end_def = x3::lit(')');
@@ -245,7 +267,7 @@ const auto pair_end_def = x3::lit(')');
 const auto force_end_def = x3::lit(')');
 const auto profile_end_def = x3::lit(')');
 const auto section_end_def = x3::lit(')');
-const auto defmechanism_def = x3::raw[kw("defmechanism")][store_text(&ast::Name::text)];
+const auto defmechanism_def = x3::raw[kw("defmechanism")][store_text(&ast::Name::text)] | unknown_word(kws::defmechanism_keywords(), false);
 const auto end_of_input_def = x3::eoi;
 
 const auto mechanism_file_def = x3::lit('(') > defmechanism > name > *section > section_end > end_of_input;
@@ -253,7 +275,7 @@ const auto config_entry_def = name > '=' > number;
 const auto config_def = -(config_entry % -x3::lit(',')) > end_of_input;
 
 BOOST_SPIRIT_DEFINE(name, name_inner, number, number_inner, sign, sign_inner, point, sense, polygon_item, circle_item, line_step, arc_step,
-                    step, profile_item, param, generator_item, at_item, turn_item, limits, dof_item, symmetry_item, part_item,
+                    step, profile_item, param, generator_name, generator_item, at_item, turn_item, limits, dof_item, symmetry_item, part_item,
                     part_entry, setting)
 BOOST_SPIRIT_DEFINE(grid_item, window_item, pair_item, pair_entry, linkage_entry, torque_item, direction_item, when_item,
                     force_item, force_entry, settings_section, parts_section, pairs_section, linkages_section, forces_section,

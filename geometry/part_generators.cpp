@@ -2,6 +2,7 @@
 #include "geometry/part_generators.hpp"
 
 #include "qm/assert.hpp"
+#include "qm/spelling.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -280,7 +281,11 @@ ShapeResult make_shape(const Generator& g, const std::vector<std::pair<std::stri
         int k = -1;
         for (std::size_t i = 0; i < g.params.size(); ++i)
             if (name == g.params[i].name) k = static_cast<int>(i);
-        if (k < 0) return fail("'" + name + "' is not a parameter of " + g.name);
+        if (k < 0) {
+            std::vector<std::string_view> names;
+            for (const auto& p : g.params) names.emplace_back(p.name);
+            return fail("'" + name + "' is not a parameter of " + g.name + did_you_mean(name, names));
+        }
         values[static_cast<std::size_t>(k)] = value;
     }
     for (std::size_t i = 0; i < g.params.size(); ++i) {

@@ -5,7 +5,7 @@
 # 9.11-9.13): its longest CSEG (the main sliding contact), a join (a concave one if there is
 # one: two contacts at once), and its largest face (no contact). Then the envisioner's figures
 # from scenarios/metric/ and scenarios/clock/: envisionment graphs grouped by behavioural cycle
-# (Figures 9.21-9.24; `envision --svg`, which needs Graphviz's `dot`), and histories drawn state
+# (Figures 9.21-9.24; `envision --svg`, laid out by Graphviz's library), and histories drawn state
 # by state (Figures 9.25, 9.27, 9.28, 9.32; `draw --history`), each the answer of a described
 # behaviour (`envision --path`) of docs/ENVISION.md. Also writes index.md.
 # Usage: docs/figures/regenerate.sh [QM_ATMS]   (default build/cli/qm-atms)
@@ -68,10 +68,6 @@ PY
   echo >>"$index"
 done
 # The envisioner's figures share one place cache, so that every vocabulary is built once.
-if ! command -v dot >/dev/null 2>&1; then
-  echo "regenerate: the envisionment graphs need Graphviz's dot (Debian: apt-get install graphviz)" >&2
-  exit 1
-fi
 cache="$tmp/cache"
 {
   echo "## Envisionments (\`qm-atms envision SCENE --svg FILE\`)"

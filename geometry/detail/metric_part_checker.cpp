@@ -2,6 +2,8 @@
 // with their degree of freedom and symmetry (docs/METRIC_SCENE_FORMAT.md, "Parts").
 #include "geometry/detail/metric_checker.hpp"
 #include "geometry/part_generators.hpp"
+#include "geometry/detail/metric_keywords.hpp"
+#include "qm/assert.hpp"
 #include "geometry/profile_check.hpp"
 #include "geometry/segment_queries.hpp"
 
@@ -75,13 +77,17 @@ void Checker::part(const mast::PartEntry& e, Mechanism& m) {
         else slot = item;
     };
     int drawings = 0;
+    bool unknown = false;  // an item naming no keyword: what the part lacks may be in it, misspelt
     for (const auto& item : e.items) {
         if (draw(item, drawn)) {
             ++drawings;
             continue;
         }
         const auto& v = item.get();
-        if (const auto* g = boost::get<mast::GeneratorItem>(&v)) once(generator, g, "generated shapes");
+        if (const auto* g = boost::get<mast::GeneratorItem>(&v); g && !find_generator(lower(g->generator.text))) {
+            error(g->generator, unknown_word_message(part_item_keywords(), g->generator.text));
+            unknown = true;
+        } else if (g) once(generator, g, "generated shapes");
         else if (const auto* a = boost::get<mast::AtItem>(&v)) once(at, a, "(at ...)");
         else if (const auto* t = boost::get<mast::TurnItem>(&v)) once(turn, t, "(turn ...)");
         else if (const auto* d = boost::get<mast::DofItem>(&v)) once(dof, d, "degree-of-freedom");
@@ -93,12 +99,8 @@ void Checker::part(const mast::PartEntry& e, Mechanism& m) {
         error(*generator, "part '" + name + "' is both generated and drawn; give one or the other");
     } else if (generator) {
         const Generator* g = find_generator(lower(generator->generator.text));
-        if (!g) {
-            std::string known;
-            for (const auto& x : generators()) known += std::string(known.empty() ? "" : ", ") + x.name;
-            error(generator->generator, "unknown part item or generator '" + generator->generator.text + "'; the generators are " + known +
-                                            ", and the items polygon, circle, profile, at, turn, fixed, rotation, translation, symmetry");
-        } else {
+        QM_ASSERT(g != nullptr, "only a known generator is kept as the part's generator");
+        {
             std::vector<std::pair<std::string, double>> params;
             std::map<std::string, const mast::Param*> given;
             for (const auto& p : generator->params) {
@@ -122,7 +124,7 @@ void Checker::part(const mast::PartEntry& e, Mechanism& m) {
                 error(*blame, std::string(g->name) + ": " + r.error);
             }
         }
-    } else if (drawings == 0) {
+    } else if (drawings == 0 && !unknown) {
         error(e, "part '" + name + "' has no shape: draw it with (polygon ...), (circle ...) or (profile ...), or generate it, e.g. (spur-gear (teeth 12))");
     } else {
         Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
@@ -152,7 +154,7 @@ void Checker::part(const mast::PartEntry& e, Mechanism& m) {
     for (const auto& profile : shape.profiles) p.profiles.push_back(transformed(profile, place));
     const double size = std::max(p.size(), 1e-300);
     if (!dof) {
-        error(e, "part '" + name + "' needs its degree of freedom: (fixed), (rotation [pivot]) or (translation (dx dy) (limits lo hi))");
+        if (!unknown) error(e, "part '" + name + "' needs its degree of freedom: (fixed), (rotation [pivot]) or (translation (dx dy) (limits lo hi))");
     } else {
         const std::string kind = lower(dof->keyword.text);
         if (kind == "fixed") {

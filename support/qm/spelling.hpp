@@ -2,7 +2,9 @@
 // Provides:   edit_distance() (optimal string alignment: insertions, deletions, substitutions and
 //             swaps of two neighbours each cost 1) and nearest_spelling(), the "did you mean" of
 //             every message that names something unknown: a misspelt predicate in a rule file, a
-//             command or a name typed in the interactive mode.
+//             command or a name typed in the interactive mode; and nearest_keyword(), the same for a
+//             keyword of a scene or an option of a command, which also takes a verb for its noun
+//             (`rotate` for `rotation`).
 // Invariants: nearest_spelling() proposes only a candidate close enough to be a slip of the hand:
 //             at most 1 edit for words of up to 4 characters, 2 up to 10, 3 beyond, and fewer edits
 //             than either word has characters (a one-letter word is never "near" another); the
@@ -59,6 +61,24 @@ template <class Range>
         }
     }
     return best;
+}
+
+// nearest_spelling(), else the one candidate that begins with all of word but its last letter
+// (at least four letters kept): a keyword written as the verb of its noun, `translate` for
+// `translation`, is more edits away than a slip of the hand but no less plainly meant.
+template <class Range>
+[[nodiscard]] std::optional<std::string> nearest_keyword(std::string_view word, const Range& candidates) {
+    if (auto near = nearest_spelling(word, candidates)) return near;
+    if (word.size() < 5) return std::nullopt;
+    const std::string_view stem = word.substr(0, word.size() - 1);
+    std::optional<std::string> only;
+    for (const auto& c : candidates) {
+        const std::string_view candidate(c);
+        if (!candidate.starts_with(stem) || candidate == word) continue;
+        if (only) return std::nullopt;  // two nouns of that stem: no guess
+        only = std::string(candidate);
+    }
+    return only;
 }
 
 // "; did you mean 'X'?" when a near candidate exists, else "": appended to a message.

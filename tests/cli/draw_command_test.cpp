@@ -121,13 +121,13 @@ TEST_CASE("cli/draw_command: bad input is refused with exit status 2") {
     refused(cam + " --svg " + file + " --config 'wheel=3'", "CONFIG:1:");
     refused(cam + " --svg " + file + " --place cam--follower:0 --config 'cam=3'", "one of --config, --place and --history");
     refused(cam + " --svg " + file + " --history '#1' --config 'cam=3'", "one of --config, --place and --history");
-    refused(cam + " --svg " + file + " --history '#1' --columns 0", "--columns takes");
+    refused(cam + " --svg " + file + " --history '#1' --columns 0", "--columns expects a number of drawings a row, 1 to 99, not '0'");
     refused(cam + " --svg " + file + " --place follower--cam:0", "--place takes PAIR:ID");
     refused(cam + " --svg " + file + " --place cam--follower", "--place takes PAIR:ID");
     refused(cam + " --svg " + file + " --place cam--follower:999 --no-cache", "has places 0 to");
     refused(cam + " --svg " + file + " --place cam--follower:-1 --no-cache", "has places 0 to");
-    refused(cam + " --svg " + file + " --size 50x50", "--size takes WIDTHxHEIGHT");
-    refused(cam + " --svg " + file + " --frobnicate", "unknown or incomplete option '--frobnicate'");
+    refused(cam + " --svg " + file + " --size 50x50", "--size expects WIDTHxHEIGHT, each 100 to 4000 pixels, not '50x50'");
+    refused(cam + " --svg " + file + " --frobnicate", "unknown option '--frobnicate'");
     refused(cam + " --svg /nonexistent-dir/x.svg", "cannot write '/nonexistent-dir/x.svg'");
     refused(std::string(QM_SOURCE_DIR) + "/no-such.def --svg " + file, "no-such.def");
 }

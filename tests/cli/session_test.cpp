@@ -195,3 +195,13 @@ TEST_CASE("cli/session: with, from the labels already computed, answers as a fre
         CHECK(answer == fresh.out.substr(from, fresh.out.rfind("]}") - from));
     }
 }
+
+TEST_CASE("cli/session: --situation N starts the session at situation N") {
+    const auto started = session(scene("block.def") + " --situation 2", "motions\nfreedom\n");
+    const auto moved = session(scene("block.def"), "situation 2\nmotions\nfreedom\n");
+    REQUIRE(started.status == 0);
+    CHECK(started.err.empty());
+    CHECK(!started.out.empty());
+    CHECK(started.out == moved.out);
+    CHECK(started.out != session(scene("block.def"), "motions\nfreedom\n").out);  // situation 1 differs
+}

@@ -110,6 +110,48 @@ TEST_CASE("geometry/metric_scene_parser: bad scenes give exactly the golden diag
     CHECK(cases >= 15);
 }
 
+// Every keyword position names a word it does not know, with the nearest keyword of that
+// position; a word that is a keyword elsewhere is misplaced; where no word stands, the expectation
+// says what it found.
+TEST_CASE("geometry/metric_scene_parser: a misspelt keyword is named at every keyword position, with the nearest one") {
+    const std::string parts = "(Defmechanism m Parts ((a (block) (rotation)) (b (block) (at 3 0) ";
+    const std::string items = "a part item (polygon, circle, profile, at, turn, fixed, rotation, translation, symmetry) or a generator "
+                              "(spur-gear, ratchet-wheel, scape-wheel, anchor, pawl, crank, yoke, disk-cam, follower, block)";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"(Defmechansm m Parts ((a (block) (fixed))))", "1:2: error: unknown word 'Defmechansm': expected 'Defmechanism'; did you mean 'Defmechanism'?"},
+        {"(Defmechanism m Prts ((a (block) (fixed))))",
+         "1:17: error: unknown word 'Prts': expected a section keyword (Settings, Parts, Pairs, Linkages, Forces) or ')'; did you mean 'Parts'?"},
+        {"(Defmechanism m Parts ((a (polygn (0 0) (1 0) (1 1)) (fixed))))", "1:28: error: unknown word 'polygn': expected " + items + "; did you mean 'polygon'?"},
+        {parts + "(translate (1 0) (limits 0 1)))))", "1:68: error: unknown word 'translate': expected " + items + "; did you mean 'translation'?"},
+        {parts + "(translation (1 0) (limit 0 1)))))", "1:87: error: unknown word 'limit': expected (limits lo hi); did you mean 'limits'?"},
+        {"(Defmechanism m Parts ((a (profile (0 0) (lin 1 0) (line 0 0)) (fixed))))",
+         "1:43: error: unknown word 'lin': expected a step (line x y) or (arc x y cx cy ccw|cw); did you mean 'line'?"},
+        {"(Defmechanism m Parts ((a (profile (0 0) (line 1 0) (ark 0 0 0.5 0 ccw)) (fixed))))",
+         "1:54: error: unknown word 'ark': expected a step (line x y) or (arc x y cx cy ccw|cw); did you mean 'arc'?"},
+        {"(Defmechanism m Parts ((a (profile (0 0) (line 1 0) (arc 0 0 0.5 0 cww)) (fixed))))",
+         "1:68: error: unknown word 'cww': expected ccw or cw; did you mean 'ccw'?"},
+        {parts + "(fixed))) Pairs ((a b (grd 8 8))))",
+         "1:90: error: unknown word 'grd': expected a pair setting (grid n0 n1) or (window part lo hi); did you mean 'grid'?"},
+        {parts + "(fixed))) Forces ((spring a (torqe +))))",
+         "1:96: error: unknown word 'torqe': expected a force item (torque +|-), (direction dx dy), (at x y) or (when lo hi); did you mean 'torque'?"},
+        {parts + "(fixed) (colour red))))", "1:76: error: unknown word 'colour': expected " + items},
+        {parts + "(fixed) (Torque +))))", "1:76: error: expected " + items + " but found 'Torque'"},
+        {parts + "(fixed) (3 4))))", "1:75: error: expected ')' or a part item: (polygon ...), (circle ...), (profile ...), a generator "
+                                     "like (spur-gear ...), (at x y), (turn deg), (fixed), (rotation [pivot]), (translation (dx dy) "
+                                     "(limits lo hi)), (symmetry n) but found '('"},
+    };
+    for (const auto& [text, message] : cases) {
+        CAPTURE(text);
+        qm::Diagnostics d;
+        CHECK(!read_mechanism("m.def", text, d));
+        std::ostringstream got;
+        d.print(got);
+        const std::string first = got.str().substr(0, got.str().find('\n'));
+        CHECK(first == "m.def:" + message);
+        CHECK(d.items().size() == 1);  // a syntax error stops the reading
+    }
+}
+
 TEST_CASE("geometry/metric_scene_parser: CONFIG reads degrees and lengths, shared by a shaft") {
     const auto m = read_ok("gear_train.def");
     qm::Diagnostics d;

@@ -48,3 +48,16 @@ TEST_CASE("support/spelling: nearest_spelling proposes only a slip of the hand")
     CHECK(qm::did_you_mean("surfce", predicates) == "; did you mean 'surface'?");
     CHECK(qm::did_you_mean("xyz", predicates).empty());
 }
+
+TEST_CASE("support/spelling: nearest_keyword also takes a keyword's verb for its noun") {
+    const std::vector<std::string> items = {"polygon", "circle", "rotation", "translation", "turn", "at"};
+    CHECK(qm::nearest_keyword("polygn", items) == "polygon");          // a slip of the hand, as nearest_spelling
+    CHECK(qm::nearest_keyword("rotate", items) == "rotation");         // three edits, but the verb of the noun
+    CHECK(qm::nearest_keyword("translate", items) == "translation");
+    CHECK(qm::nearest_spelling("rotate", items) == std::nullopt);      // beyond a slip's tolerance
+    CHECK(qm::nearest_keyword("circles", items) == "circle");
+    CHECK(qm::nearest_keyword("rota", items) == std::nullopt);         // too short a stem to guess from
+    CHECK(qm::nearest_keyword("sprocket", items) == std::nullopt);
+    const std::vector<std::string> two = {"translation-x", "translation-y"};
+    CHECK(qm::nearest_keyword("translate", two) == std::nullopt);      // two candidates of the stem: no guess
+}

@@ -1,0 +1,50 @@
+// cli/graph_svg.cpp: DOT to SVG with Graphviz's library (cli/graph_svg.hpp).
+#include "graph_svg.hpp"
+#include <gvc.h>
+#include <memory>
+
+namespace qm::cli {
+namespace {
+
+// Graphviz reports through a global hook; its messages are kept for the answer, not printed.
+std::string graphviz_said;
+int keep_message(char* message) {
+    graphviz_said += message;
+    return 0;
+}
+
+std::string trimmed(std::string s) {
+    while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+    return s;
+}
+
+}  // namespace
+
+GraphSvg graph_svg(const std::string& dot) {
+    graphviz_said.clear();
+    const agusererrf before = agseterrf(keep_message);
+    struct Restore {
+        agusererrf f;
+        ~Restore() { agseterrf(f); }
+    } restore{before};
+    const std::unique_ptr<GVC_t, int (*)(GVC_t*)> gvc(gvContext(), gvFreeContext);
+    if (!gvc) return {std::nullopt, "Graphviz could not start"};
+    const std::unique_ptr<Agraph_t, int (*)(Agraph_t*)> g(agmemread(dot.c_str()), agclose);
+    if (!g) return {std::nullopt, "Graphviz could not read the graph: " + trimmed(graphviz_said)};
+    if (gvLayout(gvc.get(), g.get(), "dot") != 0) {
+        const bool no_plugin = graphviz_said.find("not recognized") != std::string::npos;
+        return {std::nullopt, "Graphviz could not lay out the graph: " + trimmed(graphviz_said) +
+                                  (no_plugin ? " (its plugins are not configured: run `dot -c` or `libgvc6-config-update -c` as root)" : "")};
+    }
+    char* data = nullptr;
+    unsigned int length = 0;
+    const int rendered = gvRenderData(gvc.get(), g.get(), "svg", &data, &length);
+    GraphSvg out;
+    if (rendered == 0 && data) out.svg = std::string(data, length);
+    else out.why_not = "Graphviz could not draw the graph as SVG: " + trimmed(graphviz_said);
+    if (data) gvFreeRenderData(data);
+    gvFreeLayout(gvc.get(), g.get());
+    return out;
+}
+
+}  // namespace qm::cli
