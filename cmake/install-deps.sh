@@ -21,6 +21,7 @@ run_packages=(
 )
 test_packages=(
   clang-16 libclang-rt-16-dev          # the sanitizer and libFuzzer tree (clang 16: C++20 lambdas may capture structured bindings)
+  llvm-16                              # its llvm-symbolizer, for the sanitizers' stack traces
   chromium chromium-driver python3-selenium  # the explorer page's test in a headless browser
 )
 
