@@ -26,6 +26,8 @@ struct CommandOptions::Parser {
     CLI::Option* help = nullptr;
     CLI::Option* version = nullptr;
     std::vector<std::string> first_names;
+    std::optional<std::string>* cache_dir = nullptr;  // place_cache()'s targets
+    bool* no_cache = nullptr;
 
     Parser() {
         // Unknown options are kept, not thrown, so that they are named with the nearest known one.
@@ -144,7 +146,15 @@ std::optional<int> CommandOptions::parse(std::span<const std::string> args, std:
         if (v.repeated) *v.repeated = given;
     }
     if (p.positional) *p.positional_target = p.positional->results();
+    if (p.cache_dir && *p.cache_dir && *p.no_cache) return error(err, "--cache DIR and --no-cache contradict each other: give one");
     return std::nullopt;
+}
+
+void CommandOptions::place_cache(std::optional<std::string>& dir, bool& no_cache) {
+    single("--cache", "a folder for the place vocabularies", dir);
+    flag("--no-cache", no_cache);
+    parser_->cache_dir = &dir;
+    parser_->no_cache = &no_cache;
 }
 
 int CommandOptions::error(std::ostream& err, const std::string& message) const {

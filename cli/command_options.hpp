@@ -42,6 +42,9 @@ public:
     void repeated(const std::string& name, std::string what, std::vector<std::string>& target);
     // Every argument that is not an option, in order (the command checks how many it takes).
     void positionals(std::vector<std::string>& target);
+    // The place cache's two options, `--cache DIR` and `--no-cache` (bridge/pair_places.hpp); parse()
+    // refuses both at once.
+    void place_cache(std::optional<std::string>& dir, bool& no_cache);
     // Options that name other commands when they come first (`--places`), proposed for a misspelt first argument.
     void first_may_be(std::vector<std::string> names);
 

@@ -61,8 +61,7 @@ std::optional<int> parse_args(std::span<const std::string> args, DrawArgs& a, st
     cl.single("--columns", "a number of drawings a row, 1 to 99", columns);
     cl.single("--svg", "a file to write the drawing to", svg);
     cl.single("--size", "WIDTHxHEIGHT, each 100 to 4000 pixels", size);
-    cl.single("--cache", "a folder for the place vocabularies", cache);
-    cl.flag("--no-cache", no_cache);
+    cl.place_cache(cache, no_cache);
     if (auto status = cl.parse(args, out, err)) return status;
     if (scenes.empty()) return cl.error(err, "draw takes a metric scene");
     if (scenes.size() > 1) return cl.error(err, "draw takes one metric scene, not '" + scenes[0] + "' and '" + scenes[1] + "'");
@@ -78,7 +77,6 @@ std::optional<int> parse_args(std::span<const std::string> args, DrawArgs& a, st
     if (int(config.has_value()) + int(place.has_value()) + int(history.has_value()) > 1)
         return cl.error(err, "draw takes one of --config, --place and --history");
     if (columns && !history) return cl.error(err, "--columns lays out the drawings of a --history: give it with --history");
-    if (cache && no_cache) return cl.error(err, "--cache DIR and --no-cache contradict each other: give one");
     if ((cache || no_cache) && !place && !history)
         return cl.error(err, std::string(cache ? "--cache" : "--no-cache") +
                                  " chooses where the place vocabularies of --place or --history come from; a drawing at a configuration needs none");

@@ -152,7 +152,6 @@ std::optional<int> parse_options(std::span<const std::string> args, Options& o, 
     cl.flag("--table", o.table);
     cl.flag("--json", o.json);
     cl.flag("--stats", o.stats);
-    cl.flag("--no-cache", no_cache);
     cl.single("--max-states", "a positive whole number", max_states);
     cl.repeated("--without", "an external force to take away, e.g. --without 'Force follower' or --without 'Force follower spring'",
                 o.without);
@@ -164,7 +163,7 @@ std::optional<int> parse_options(std::span<const std::string> args, Options& o, 
     cl.single("--why-not", "a transition, e.g. --why-not '#3 -> #4'", o.why_not, "ask one at a time");
     cl.single("--dot", "a file to write the graph to", dot);
     cl.single("--svg", "a file to draw the graph in (SVG)", svg);
-    cl.single("--cache", "a folder for the place vocabularies", cache);
+    cl.place_cache(cache, no_cache);
     cl.single("--rules", "a folder of .rules files (the Clock laws)", rules);
     if (auto status = cl.parse(args, out, err)) return status;
     if (scenes.empty()) return cl.error(err, "envision takes a metric scene");
@@ -175,7 +174,6 @@ std::optional<int> parse_options(std::span<const std::string> args, Options& o, 
         if (!n || *n == 0) return cl.bad_value(err, "--max-states", *max_states);
         o.max_states = *n;
     }
-    if (cache && no_cache) return cl.error(err, "--cache DIR and --no-cache contradict each other: give one");
     o.use_cache = !no_cache;
     if (cache) o.cache = *cache;
     if (rules) o.rules = *rules;

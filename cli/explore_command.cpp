@@ -38,15 +38,13 @@ int explore_command(std::span<const std::string> args, std::ostream& out, std::o
     cl.flag("--no-envision", no_envision);
     cl.repeated("--path", "a behaviour to play, e.g. --path 'follower=+; follower=-'", path_texts);
     cl.repeated("--avoid", "a state description to avoid, e.g. --avoid 'cam=0'", avoid);
-    cl.single("--cache", "a folder for the place vocabularies", cache_text);
-    cl.flag("--no-cache", no_cache);
+    cl.place_cache(cache_text, no_cache);
     if (auto status = cl.parse(args, out, err)) return *status;
     if (scenes.empty()) return cl.error(err, "explore takes a metric scene");
     if (scenes.size() > 1) return cl.error(err, "explore takes one metric scene, not '" + scenes[0] + "' and '" + scenes[1] + "'");
     if (!folder) return cl.error(err, "explore needs -o DIR");
     if (no_envision && !path_texts.empty()) return cl.error(err, "--path plays a path of the envisionment, which --no-envision leaves out");
     if (!avoid.empty() && path_texts.empty()) return cl.error(err, "--avoid goes with --path");
-    if (cache_text && no_cache) return cl.error(err, "--cache DIR and --no-cache contradict each other: give one");
     const std::optional<std::filesystem::path> dir = *folder;
     std::optional<std::filesystem::path> cache_dir;
     if (cache_text) cache_dir = *cache_text;

@@ -83,12 +83,10 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
     cl.positionals(scenes);
     cl.flag("--json", json);
     cl.single("--svg", "a folder to draw each pair's configuration space in", svg);
-    cl.single("--cache", "a folder for the place vocabularies", cache_text);
-    cl.flag("--no-cache", no_cache);
+    cl.place_cache(cache_text, no_cache);
     if (auto status = cl.parse(args, out, err)) return *status;
     if (scenes.empty()) return cl.error(err, "--places takes a metric scene");
     if (scenes.size() > 1) return cl.error(err, "--places takes one metric scene, not '" + scenes[0] + "' and '" + scenes[1] + "'");
-    if (cache_text && no_cache) return cl.error(err, "--cache DIR and --no-cache contradict each other: give one");
     const bool use_cache = !no_cache;
     std::optional<std::filesystem::path> svg_dir, cache_dir;
     if (svg) svg_dir = *svg;
