@@ -44,10 +44,13 @@ inline constexpr const char* motion_now = "motion-now";              // (motion-
 inline constexpr const char* collision_fixes = "collision-fixes";    // (collision-fixes O F)
 inline constexpr const char* no_collision = "no-collision";          // (no-collision O)
 inline constexpr const char* next_motion = "next-motion";            // (next-motion O M)
+inline constexpr const char* step_reachable = "step-reachable";      // (step-reachable O)
+inline constexpr const char* step_unreachable = "step-unreachable";  // (step-unreachable O)
 inline constexpr const char* step = "step";                      // (step S DURATION CAUSE)
 inline constexpr const char* place_option = "place-option";      // (place-option S P NEXT HOW)
 inline constexpr const char* motion_option = "motion-option";    // (motion-option S O M)
 inline constexpr const char* preempts = "preempts";              // (preempts S T)
+inline constexpr const char* may_rest = "may-rest";              // (may-rest): the state may also stay as it is
 inline constexpr const char* force_on = "force-on";              // (force-on O S C)
 inline constexpr const char* net_force = "net-force";            // (net-force O S)
 
@@ -61,5 +64,5 @@ inline const std::initializer_list<const char*> state_space_outputs{at, motion, 
 inline const std::initializer_list<const char*> state_inputs{
     pair, axis, place_kind, join_kind, clock_object, fixed_part, linkage, cause, place_normal, place_normals, join_concave, join_convex, gap_place,
     adjacent, force_sign_at, constant_force, current_place, current_motion, external_force};
-inline const std::initializer_list<const char*> state_outputs{step, place_option, motion_option, preempts, force_on, net_force};
+inline const std::initializer_list<const char*> state_outputs{step, place_option, motion_option, preempts, may_rest, force_on, net_force};
 }  // namespace qm::bridge::clock

@@ -5,10 +5,29 @@
 #include <algorithm>
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/strong_components.hpp>
+#include <optional>
 
 namespace qm::envision {
 
-BehaviourGraph behaviour_graph(std::size_t state_count, std::span<const Transition> transitions) {
+namespace {
+
+// The object, and its one motion, that makes a component transient: a bounded coordinate that
+// moves the same way in every state of it (so it never comes back to where a lap began).
+std::optional<std::pair<std::size_t, std::int8_t>> one_way(std::span<const State> states, const std::vector<StateId>& members,
+                                                           const std::vector<bool>& bounded) {
+    for (std::size_t o = 0; o < bounded.size(); ++o) {
+        if (!bounded[o]) continue;
+        const std::int8_t m = states[members.front().value].motions[o];
+        if (m == 0) continue;
+        if (std::all_of(members.begin(), members.end(), [&](StateId s) { return states[s.value].motions[o] == m; })) return std::pair{o, m};
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+BehaviourGraph behaviour_graph(std::span<const State> states, std::span<const Transition> transitions, const std::vector<bool>& bounded) {
+    const std::size_t state_count = states.size();
     using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS>;
     Graph graph(state_count);
     std::vector<bool> has_out(state_count, false), loops(state_count, false);
@@ -23,11 +42,17 @@ BehaviourGraph behaviour_graph(std::size_t state_count, std::span<const Transiti
     std::vector<std::vector<StateId>> members(static_cast<std::size_t>(count));
     for (std::uint32_t s = 0; s < state_count; ++s) members[static_cast<std::size_t>(component[s])].push_back(StateId{s});
     BehaviourGraph out;
-    for (auto& m : members)
-        if (m.size() > 1 || (m.size() == 1 && loops[m.front().value])) out.cycles.push_back(std::move(m));
+    for (auto& m : members) {
+        if (m.size() == 1 && !loops[m.front().value]) continue;
+        if (const auto w = one_way(states, m, bounded)) out.transient.push_back({std::move(m), w->first, w->second});
+        else out.cycles.push_back(std::move(m));
+    }
     std::sort(out.cycles.begin(), out.cycles.end());
-    for (std::uint32_t s = 0; s < state_count; ++s)
+    std::sort(out.transient.begin(), out.transient.end());
+    for (std::uint32_t s = 0; s < state_count; ++s) {
         if (!has_out[s]) out.terminal.push_back(StateId{s});
+        else if (states[s].may_rest) out.possible_rests.push_back(StateId{s});
+    }
     return out;
 }
 

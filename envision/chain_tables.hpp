@@ -7,7 +7,8 @@
 //             engine/preferences.hpp's rank table), and which motion an object may have after a
 //             step given its situation in it (rules/clock/settling.rules: the motions the step
 //             allows it, its motion now, the motion a collision fixes, read through
-//             engine/consistency.hpp), with the rule that refutes each motion it may not have.
+//             engine/consistency.hpp; also whether any state with the step's places gives it a
+//             motion the step allows it), with the rule that refutes each motion it may not have.
 // Ownership:  a value type.
 // Invariants: arrival(pair, place, how, v) lists the motions after, without repeats, in a fixed
 //             order; an empty list means the laws give no way on (the hypothesis is dropped).
@@ -57,13 +58,16 @@ public:
     };
     // Whether object o may move `next` after a step that allows it the motions in `allowed`
     // (allowed_mask), starting from motion `now`, with a collision fixing its motion to *fix (none
-    // without a collision): 0 if the laws allow it, else 1 + the index of the refuting rule in
-    // refuter(). Where nothing was set (the laws settle nothing), 0. Pre: motions are -1, 0, +1.
-    void set_settling(std::size_t object, std::uint8_t allowed, std::int8_t now, std::optional<std::int8_t> fix, std::int8_t next,
-                      const std::optional<Refuter>& refuted);
+    // without a collision), where `reachable` says whether some state with the step's places gives
+    // o a motion the step allows it: 0 if the laws allow it, else 1 + the index of the refuting
+    // rule in refuter(). Where nothing was set (the laws settle nothing), 0. Pre: motions are
+    // -1, 0, +1.
+    void set_settling(std::size_t object, std::uint8_t allowed, std::int8_t now, std::optional<std::int8_t> fix, bool reachable,
+                      std::int8_t next, const std::optional<Refuter>& refuted);
     [[nodiscard]] std::uint8_t settling(std::size_t object, std::uint8_t allowed, std::int8_t now, std::optional<std::int8_t> fix,
-                                        std::int8_t next) const {
-        return object < settling_.size() ? settling_[object][allowed & 7U][idx(now)][fix ? idx(*fix) + 1 : 0][idx(next)] : 0;
+                                        bool reachable, std::int8_t next) const {
+        return object < settling_.size() ? settling_[object][allowed & 7U][idx(now)][fix ? idx(*fix) + 1 : 0][reachable ? 1 : 0][idx(next)]
+                                         : 0;
     }
     // Pre: code is a non-zero value settling() returned.
     [[nodiscard]] const Refuter& refuter(std::uint8_t code) const { return refuters_.at(code - 1U); }
@@ -72,8 +76,9 @@ private:
     static std::size_t idx(std::int8_t s) { return static_cast<std::size_t>(s + 1); }
     std::map<std::tuple<std::size_t, std::uint32_t, How, geometry::QualDirection>, std::vector<geometry::QualDirection>> arrival_;
     std::vector<std::array<std::array<std::int64_t, 3>, 8>> preference_;  // [object][allowed mask][motion]
-    // [object][allowed mask][now][fix: none, -, 0, +][next]: 0 or 1 + an index into refuters_.
-    std::vector<std::array<std::array<std::array<std::array<std::uint8_t, 3>, 4>, 3>, 8>> settling_;
+    // [object][allowed mask][now][fix: none, -, 0, +][reachable][next]: 0 or 1 + an index into refuters_.
+    using Next = std::array<std::uint8_t, 3>;
+    std::vector<std::array<std::array<std::array<std::array<Next, 2>, 4>, 3>, 8>> settling_;
     std::vector<Refuter> refuters_;
 };
 

@@ -21,23 +21,29 @@ void write_dot(std::ostream& os, const Envisionment& e) {
         const auto& c = e.chains[k];
         os << "  subgraph " << quoted("cluster_chain_" + std::to_string(c.chain.index + 1)) << " {\n    label="
            << quoted("chain " + std::to_string(c.chain.index + 1)) << ";\n";
-        std::vector<bool> in_cycle(c.states.size(), false);
-        for (std::size_t i = 0; i < c.graph.cycles.size(); ++i) {
-            os << "    subgraph " << quoted("cluster_" + std::to_string(c.chain.index + 1) + "_cycle_" + std::to_string(i + 1))
-               << " {\n      label=" << quoted("cycle " + std::to_string(i + 1)) << "; style=rounded; color=gray;\n";
-            for (const StateId s : c.graph.cycles[i]) {
+        std::vector<bool> in_cycle(c.states.size(), false), ends(c.states.size(), false);
+        for (const StateId s : c.graph.terminal) ends[s.value] = true;
+        for (const StateId s : c.graph.possible_rests) ends[s.value] = true;
+        auto state = [&](const char* indent, StateId s) {
+            os << indent << node(k, s) << " [label=" << quoted("#" + std::to_string(s.value) + "\n" + state_name(e, c, s))
+               << (ends[s.value] ? ", peripheries=2" : "") << "];\n";
+        };
+        auto cluster = [&](const std::string& name, const std::string& label, const char* style, const std::vector<StateId>& states) {
+            os << "    subgraph " << quoted("cluster_" + std::to_string(c.chain.index + 1) + "_" + name) << " {\n      label=" << quoted(label)
+               << "; style=" << style << "; color=gray;\n";
+            for (const StateId s : states) {
                 in_cycle[s.value] = true;
-                os << "      " << node(k, s) << " [label=" << quoted("#" + std::to_string(s.value) + "\n" + state_name(e, c, s)) << "];\n";
+                state("      ", s);
             }
             os << "    }\n";
-        }
-        std::vector<bool> terminal(c.states.size(), false);
-        for (const StateId s : c.graph.terminal) terminal[s.value] = true;
-        for (std::uint32_t i = 0; i < c.states.size(); ++i) {
-            if (in_cycle[i] || !c.is_shown(StateId{i})) continue;
-            os << "    " << node(k, StateId{i}) << " [label=" << quoted("#" + std::to_string(i) + "\n" + state_name(e, c, StateId{i}))
-               << (terminal[i] ? ", peripheries=2" : "") << "];\n";
-        }
+        };
+        for (std::size_t i = 0; i < c.graph.cycles.size(); ++i)
+            cluster("cycle_" + std::to_string(i + 1), "cycle " + std::to_string(i + 1), "rounded", c.graph.cycles[i]);
+        for (std::size_t i = 0; i < c.graph.transient.size(); ++i)
+            cluster("transient_" + std::to_string(i + 1), "transient cycle " + std::to_string(i + 1) + " (cannot repeat)", "dashed",
+                    c.graph.transient[i].states);
+        for (std::uint32_t i = 0; i < c.states.size(); ++i)
+            if (!in_cycle[i] && c.is_shown(StateId{i})) state("    ", StateId{i});
         os << "  }\n";
         for (const auto& t : c.transitions) {
             const char* colour = (t.causes & Cause::collision) ? "red" : (t.causes & Cause::dynamic) ? "blue" : "black";

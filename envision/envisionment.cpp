@@ -28,6 +28,7 @@ bool find_transitions(const Laws& laws, const geometry::Mechanism& m, const Envi
     const std::size_t n = c.states.size();
     std::vector<std::vector<Transition>> out(n);
     std::vector<std::vector<std::int8_t>> net(n);
+    std::vector<char> rest(n, 0);
     std::atomic<std::size_t> next{0}, done{0};
     std::atomic<bool> failed{false};
     const unsigned workers = std::max(1u, std::min<unsigned>(options.threads, static_cast<unsigned>(std::max<std::size_t>(1, n / 64))));
@@ -44,6 +45,7 @@ bool find_transitions(const Laws& laws, const geometry::Mechanism& m, const Envi
                 return;
             }
             net[i] = dynamics->net_force;
+            rest[i] = dynamics->may_rest ? 1 : 0;
             out[i] = successors(id, c.states, c.chain, e.pairs, tables, *dynamics);
             const std::size_t finished = ++done;
             if (w == 0 && options.progress && finished % 16 == 0) options.progress({phase, finished, n});
@@ -58,9 +60,23 @@ bool find_transitions(const Laws& laws, const geometry::Mechanism& m, const Envi
     if (failed) return false;
     for (std::size_t i = 0; i < n; ++i) {
         c.states[StateId{static_cast<std::uint32_t>(i)}].net_force = std::move(net[i]);
+        c.states[StateId{static_cast<std::uint32_t>(i)}].may_rest = rest[i] != 0;
         c.transitions.insert(c.transitions.end(), out[i].begin(), out[i].end());
     }
     return true;
+}
+
+// Per object of the chain, whether its coordinate is bounded (an axis that is not periodic in
+// some pair of the chain: a sliding part's stroke, a lever's swing).
+std::vector<bool> bounded_objects(const Envisionment& e, const Chain& chain) {
+    std::vector<bool> out(chain.objects.size(), false);
+    for (const std::size_t k : chain.pairs) {
+        const auto& pair = e.pairs[k];
+        const auto& axes = pair.request.cspace.axes;
+        if (!axes[0].periodic) out[chain.object_index(pair.spec.a)] = true;
+        if (!axes[1].periodic) out[chain.object_index(pair.spec.b)] = true;
+    }
+    return out;
 }
 
 }  // namespace
@@ -93,7 +109,7 @@ std::optional<Envisionment> envision(const geometry::Mechanism& m, const Envisio
         if (!find_transitions(*laws, m, e, c, space->tables, options, phase, diagnostics)) return std::nullopt;
         c.seconds_transitions = seconds_since(t0);
         c.tables = std::move(space->tables);
-        c.graph = behaviour_graph(c.states.size(), c.transitions);
+        c.graph = behaviour_graph(c.states.states(), c.transitions, bounded_objects(e, c.chain));
         e.chains.push_back(std::move(c));
     }
     return e;
@@ -109,7 +125,9 @@ void restrict_to_reachable(Envisionment& e, std::size_t chain, StateId from) {
     std::erase_if(c.transitions, [&](const Transition& t) { return !c.shown[t.from.value]; });
     // The reachable set is closed under transitions: its cycles are whole components of the graph.
     std::erase_if(c.graph.cycles, [&](const std::vector<StateId>& cycle) { return !c.shown[cycle.front().value]; });
+    std::erase_if(c.graph.transient, [&](const TransientCycle& cycle) { return !c.shown[cycle.states.front().value]; });
     std::erase_if(c.graph.terminal, [&](StateId s) { return !c.shown[s.value]; });
+    std::erase_if(c.graph.possible_rests, [&](StateId s) { return !c.shown[s.value]; });
     e.chains.clear();
     e.chains.push_back(std::move(c));
 }

@@ -2,6 +2,8 @@
 #include "envision/json_printer.hpp"
 #include "qm/json.hpp"
 
+#include <algorithm>
+
 namespace qm::envision {
 
 namespace {
@@ -58,7 +60,16 @@ void chain_json(std::ostream& os, const geometry::Mechanism& m, const Envisionme
     }
     os << "],\"cycles\":[";
     for (std::size_t i = 0; i < c.graph.cycles.size(); ++i) os << (i ? "," : "") << ids_json(c.graph.cycles[i]);
-    os << "],\"terminal\":" << ids_json(c.graph.terminal) << '}';
+    os << "],\"transient_cycles\":[";
+    for (std::size_t i = 0; i < c.graph.transient.size(); ++i) {
+        const auto& t = c.graph.transient[i];
+        os << (i ? "," : "") << "{\"states\":" << ids_json(t.states) << ",\"object\":" << json_string(m.parts[c.chain.objects[t.object]].name)
+           << ",\"motion\":\"(" << sign_word(t.motion) << ")\"}";
+    }
+    std::vector<StateId> ends = c.graph.terminal;
+    ends.insert(ends.end(), c.graph.possible_rests.begin(), c.graph.possible_rests.end());
+    std::sort(ends.begin(), ends.end());
+    os << "],\"terminal\":" << ids_json(ends) << ",\"possible_rests\":" << ids_json(c.graph.possible_rests) << '}';
 }
 
 }  // namespace

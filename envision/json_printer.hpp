@@ -7,7 +7,13 @@
 //                            "net_force": {OBJ: "(+)"|"(0)"|"(-)"|"(?)"}}...],
 //                "transitions": [{"from": ID, "to": ID, "duration": "instant"|"interval",
 //                                 "causes": ["kinematic"|"dynamic"|"collision"...]}...],
-//                "cycles": [[ID...]...], "terminal": [ID...]}]}
+//                "cycles": [[ID...]...],
+//                "transient_cycles": [{"states": [ID...], "object": NAME, "motion": "(+)"|"(-)"}...],
+//                "terminal": [ID...], "possible_rests": [ID...]}]}
+//             `cycles` can repeat; a transient cycle cannot (its object moves one way throughout
+//             along a bounded coordinate); `terminal` lists where behaviour may end: the states with
+//             no transition and the possible rests (states that may also rest, beside their
+//             transitions), which `possible_rests` lists alone.
 //             I is the chain's number as the text output prints it (from 1); P is the place's id in
 //             `qm-atms --places MECH.def --json` for that pair; IDs number a chain's states from 0
 //             in a fixed order (envision/state_space.hpp), stable across runs.

@@ -23,6 +23,7 @@ struct State {
     std::vector<geometry::PlaceId> places;  // one per pair of the chain
     std::vector<std::int8_t> motions;       // one per object of the chain
     std::vector<std::int8_t> net_force;     // one per object; filled when its transitions are found
+    bool may_rest = false;                  // the laws let it also stay as it is (rules/clock/rest.rules); filled then too
     friend bool operator==(const State& a, const State& b) { return a.places == b.places && a.motions == b.motions; }
 };
 

@@ -121,6 +121,7 @@ std::optional<StateDynamics> read_dynamics(engine::Engine& e, atms::EnvId enviro
         if (s == steps.end() || o == object_index.end()) return;
         s->second.motions[o->second].push_back(read.sign(a[2]));
     });
+    read.each(v::may_rest, 0, [&](std::span<const engine::ValueId>) { out.may_rest = true; });
     std::vector<std::pair<std::string, std::string>> preempts;
     read.each(v::preempts, 2, [&](std::span<const engine::ValueId> a) { preempts.emplace_back(read.symbol(a[0]), read.symbol(a[1])); });
     for (auto& [name, s] : steps) {

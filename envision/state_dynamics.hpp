@@ -44,6 +44,7 @@ struct StateDynamics {
     std::vector<std::int8_t> net_force;  // per object (ambiguous_sign for `?`)
     std::vector<StepOptions> steps;      // in name order
     std::vector<std::pair<std::size_t, std::size_t>> preempts;  // (s, t): step t only if step s cannot (indices into steps)
+    bool may_rest = false;               // (may-rest): the state may also stay as it is (rules/clock/rest.rules)
 };
 
 // The engine of one place vector and its states.

@@ -185,7 +185,8 @@ bool read_preference(engine::Engine& e, const g::Mechanism& m, const Chain& chai
 
 // Which motion each object may have after a step (rules/clock/settling.rules): for every situation
 // of the object in a step (the motions the step allows it and those it forbids, its motion now, the
-// motion a collision fixes or no collision) and every motion after, whether that environment of
+// motion a collision fixes or no collision, whether some state with the step's places gives it a
+// motion the step allows) and every motion after, whether that environment of
 // assumptions is consistent, and if not the rule refuting it (engine/consistency.hpp); read once per
 // chain, looked up by the successor step. An object the laws make none of these assumptions for is
 // settled by nothing (every motion allowed); one with only some of them is an error of the laws.
@@ -201,22 +202,33 @@ bool read_settling(engine::Engine& e, const g::Mechanism& m, const Chain& chain,
         per.push_back(std::move(*p));
     }
     const PerMotion &allows = per[0], &forbids = per[1], &now = per[2], &fixes = per[3], &next = per[4];
-    // (no-collision O)
-    std::vector<std::optional<atms::AssumptionId>> none(n);
-    for (const engine::FactId f : e.facts_of(e.values().symbol(v::no_collision))) {
-        const engine::Fact& fact = e.facts().fact(f);
-        const auto a = e.assumption(f);
-        if (fact.args.size() != 1 || !a || e.values().value(fact.args[0]).kind != engine::ValueKind::symbol) {
-            diagnostics.error(where_made(e, f), "the laws conclude " + e.print(f) + ", but the envisioner reads (" +
-                                                    std::string(v::no_collision) + " O) only as an assumption, one for each object");
-            return false;
+    // (no-collision O), (step-reachable O), (step-unreachable O)
+    using PerObject = std::vector<std::optional<atms::AssumptionId>>;
+    auto per_object = [&](const char* predicate) -> std::optional<PerObject> {
+        PerObject out(n);
+        for (const engine::FactId f : e.facts_of(e.values().symbol(predicate))) {
+            const engine::Fact& fact = e.facts().fact(f);
+            const auto a = e.assumption(f);
+            if (fact.args.size() != 1 || !a || e.values().value(fact.args[0]).kind != engine::ValueKind::symbol) {
+                diagnostics.error(where_made(e, f), "the laws conclude " + e.print(f) + ", but the envisioner reads (" +
+                                                        std::string(predicate) + " O) only as an assumption, one for each object");
+                return std::nullopt;
+            }
+            if (!made) made = where_made(e, f);
+            const auto it = objects.find(e.values().value(fact.args[0]).text);
+            if (it != objects.end()) out[it->second] = *a;
         }
-        if (!made) made = where_made(e, f);
-        const auto it = objects.find(e.values().value(fact.args[0]).text);
-        if (it != objects.end()) none[it->second] = *a;
-    }
+        return out;
+    };
+    const auto none = per_object(v::no_collision), reachable = per_object(v::step_reachable),
+               unreachable = per_object(v::step_unreachable);
+    if (!none || !reachable || !unreachable) return false;
     for (std::size_t o = 0; o < n; ++o) {
-        bool any = none[o].has_value(), all = any;
+        bool any = false, all = true;
+        for (const PerObject* p : {&*none, &*reachable, &*unreachable}) {
+            any = any || (*p)[o].has_value();
+            all = all && (*p)[o].has_value();
+        }
         for (std::size_t i = 1; i < per.size(); ++i)
             for (const auto& a : per[i][o]) {
                 any = any || a.has_value();
@@ -227,8 +239,8 @@ bool read_settling(engine::Engine& e, const g::Mechanism& m, const Chain& chain,
             diagnostics.error(made.value_or(SourceLocation{"<envision>", 1, 1}),
                               "the laws settle the motion of " + m.parts[chain.objects[o]].name +
                                   " after a step with only some of the assumptions (step-forbids O H), (motion-now O C), "
-                                  "(collision-fixes O F), (no-collision O), (next-motion O M): the envisioner needs each, "
-                                  "for each motion (rules/clock/settling.rules)");
+                                  "(collision-fixes O F), (no-collision O), (step-reachable O), (step-unreachable O), "
+                                  "(next-motion O M): the envisioner needs each, for each motion (rules/clock/settling.rules)");
             return false;
         }
         for (const auto& a : allows[o])
@@ -243,17 +255,20 @@ bool read_settling(engine::Engine& e, const g::Mechanism& m, const Chain& chain,
         for (std::uint8_t mask = 0; mask < 8; ++mask)
             for (std::int8_t c = -1; c <= 1; ++c)
                 for (std::int8_t f = -2; f <= 1; ++f)  // -2: no collision
-                    for (std::int8_t x = -1; x <= 1; ++x) {
-                        env.clear();
-                        for (std::size_t h = 0; h < 3; ++h) env.push_back(mask >> h & 1U ? *allows[o][h] : *forbids[o][h]);
-                        env.push_back(*now[o][static_cast<std::size_t>(c + 1)]);
-                        env.push_back(f == -2 ? *none[o] : *fixes[o][static_cast<std::size_t>(f + 1)]);
-                        env.push_back(*next[o][static_cast<std::size_t>(x + 1)]);
-                        const auto refuted = refutations.of(e.atms().environment(env));
-                        std::optional<ChainTables::Refuter> r;
-                        if (refuted) r = ChainTables::Refuter{refuted->rule, refuted->where.file + ":" + std::to_string(refuted->where.line)};
-                        tables.set_settling(o, mask, c, f == -2 ? std::nullopt : std::optional<std::int8_t>(f), x, r);
-                    }
+                    for (const bool reach : {false, true})
+                        for (std::int8_t x = -1; x <= 1; ++x) {
+                            env.clear();
+                            for (std::size_t h = 0; h < 3; ++h) env.push_back(mask >> h & 1U ? *allows[o][h] : *forbids[o][h]);
+                            env.push_back(*now[o][static_cast<std::size_t>(c + 1)]);
+                            env.push_back(f == -2 ? *(*none)[o] : *fixes[o][static_cast<std::size_t>(f + 1)]);
+                            env.push_back(reach ? *(*reachable)[o] : *(*unreachable)[o]);
+                            env.push_back(*next[o][static_cast<std::size_t>(x + 1)]);
+                            const auto refuted = refutations.of(e.atms().environment(env));
+                            std::optional<ChainTables::Refuter> r;
+                            if (refuted)
+                                r = ChainTables::Refuter{refuted->rule, refuted->where.file + ":" + std::to_string(refuted->where.line)};
+                            tables.set_settling(o, mask, c, f == -2 ? std::nullopt : std::optional<std::int8_t>(f), reach, x, r);
+                        }
     }
     return true;
 }

@@ -130,6 +130,14 @@ private:
     void settle(const StepOptions& s, const std::vector<PlaceOption>& places, const std::vector<Arrival>& arrivals,
                 const std::vector<g::QualDirection>& branch) {
         const std::size_t n = current_.motions.size();
+        std::vector<g::PlaceId> target;
+        for (const auto& p : places) target.push_back(p.place);
+        const auto at = states_.with_places(target);
+        // Per object, whether some state with these places gives it a motion the step allows it.
+        reach_.assign(n, false);
+        for (const StateId id : at)
+            for (std::size_t o = 0; o < n; ++o)
+                if ((allowed_[o] >> (states_[id].motions[o] + 1) & 1U) != 0) reach_[o] = true;
         // Per object, the motions after this step the laws allow it (bit idx(m)): with collisions,
         // those every collision's outcome allows.
         next_.assign(n, 0);
@@ -162,15 +170,13 @@ private:
         }
         bool wraps = false;
         std::uint8_t causes = s.cause | (arrivals.empty() ? 0 : Cause::collision);
-        std::vector<g::PlaceId> target;
         for (std::size_t k = 0; k < places.size(); ++k) {
             wraps = wraps || places[k].how == How::wrap;
             if (places[k].place != current_.places[k] || places[k].how == How::wrap) causes |= Cause::kinematic;
-            target.push_back(places[k].place);
         }
         std::vector<StateId> candidates;
         std::vector<std::vector<std::int64_t>> ranks;
-        for (const StateId id : states_.with_places(target)) {
+        for (const StateId id : at) {
             const State& t = states_[id];
             bool ok = true;
             std::vector<std::int64_t> r;
@@ -197,7 +203,7 @@ private:
 
     // The settling table's answer for object o after this step (0: allowed; else the refuter's code).
     [[nodiscard]] std::uint8_t settling(std::size_t o, std::optional<std::int8_t> fix, std::int8_t next) const {
-        return tables_.settling(o, allowed_[o], current_.motions[o], fix, next);
+        return tables_.settling(o, allowed_[o], current_.motions[o], fix, reach_[o], next);
     }
     [[nodiscard]] std::uint8_t allowed_next(std::size_t o, std::optional<std::int8_t> fix) const {
         std::uint8_t mask = 0;
@@ -254,6 +260,7 @@ private:
     std::vector<std::uint8_t> allowed_;  // per object: the motions the current step allows it (ChainTables::allowed_mask)
     std::vector<std::uint8_t> next_;     // per object: the motions after the step the settling laws allow (settle)
     std::vector<bool> fixed_;            // per object: whether a collision of the branch fixes its motion (settle)
+    std::vector<bool> reach_;            // per object: whether a state with the branch's places has a motion the step allows it
     std::map<std::pair<StateId, Duration>, std::uint8_t> found_;
     std::optional<StateId> target_;
     std::vector<std::string> pair_names_, object_names_, reasons_;

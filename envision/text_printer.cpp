@@ -25,22 +25,32 @@ void write_text(std::ostream& os, const geometry::Mechanism& m, const Envisionme
             os << (k ? ", " : " ") << pair.name << " (" << plural(pair.vocabulary.places.size(), "place", "places")
                << (pair.from_cache ? ", from cache" : "") << ')';
         }
-        os << "\n  states: " << c.shown_count() << ", transitions: " << c.transitions.size() << ", cycles: " << c.graph.cycles.size()
-           << ", terminal states: " << c.graph.terminal.size() << '\n';
+        os << "\n  states: " << c.shown_count() << ", transitions: " << c.transitions.size() << ", cycles: " << c.graph.cycles.size();
+        if (!c.graph.transient.empty()) os << ", transient cycles: " << c.graph.transient.size();
+        os << ", terminal states: " << c.graph.ends();
+        if (!c.graph.possible_rests.empty()) os << " (" << plural(c.graph.possible_rests.size(), "possible rest", "possible rests") << ")";
+        os << '\n';
+        auto list = [&](const std::vector<StateId>& ids, const char* note) {
+            for (std::size_t k = 0; k < ids.size() && k < shown_per_list; ++k) os << "    #" << ids[k].value << ' ' << state_name(e, c, ids[k]) << note << '\n';
+            if (ids.size() > shown_per_list) os << "    ... and " << ids.size() - shown_per_list << " more (--json lists them all)\n";
+        };
         for (std::size_t i = 0; i < c.graph.cycles.size(); ++i) {
-            const auto& cycle = c.graph.cycles[i];
-            os << "  cycle " << i + 1 << " (" << plural(cycle.size(), "state", "states") << "):\n";
-            for (std::size_t k = 0; k < cycle.size() && k < shown_per_list; ++k) os << "    #" << cycle[k].value << ' ' << state_name(e, c, cycle[k]) << '\n';
-            if (cycle.size() > shown_per_list) os << "    ... and " << cycle.size() - shown_per_list << " more (--json lists them all)\n";
+            os << "  cycle " << i + 1 << " (" << plural(c.graph.cycles[i].size(), "state", "states") << "):\n";
+            list(c.graph.cycles[i], "");
         }
-        if (!c.graph.terminal.empty()) os << "  terminal states:\n";
-        for (std::size_t k = 0; k < c.graph.terminal.size() && k < shown_per_list; ++k)
-            os << "    #" << c.graph.terminal[k].value << ' ' << state_name(e, c, c.graph.terminal[k]) << '\n';
-        if (c.graph.terminal.size() > shown_per_list) os << "    ... and " << c.graph.terminal.size() - shown_per_list << " more (--json lists them all)\n";
+        for (std::size_t i = 0; i < c.graph.transient.size(); ++i) {
+            const auto& t = c.graph.transient[i];
+            os << "  transient cycle " << i + 1 << " (" << plural(t.states.size(), "state", "states") << "; cannot repeat: "
+               << m.parts[c.chain.objects[t.object]].name << " moves " << sign_word(t.motion) << " throughout, along a bounded coordinate):\n";
+            list(t.states, "");
+        }
+        if (c.graph.ends() != 0) os << "  terminal states:\n";
+        list(c.graph.terminal, "");
+        list(c.graph.possible_rests, "  (may rest; may also move on)");
         states += c.shown_count();
         transitions += c.transitions.size();
         cycles += c.graph.cycles.size();
-        terminal += c.graph.terminal.size();
+        terminal += c.graph.ends();
     }
     os << "summary: " << plural(e.chains.size(), "chain", "chains") << ", " << plural(states, "state", "states") << ", "
        << plural(transitions, "transition", "transitions") << ", " << plural(cycles, "cycle", "cycles") << ", "

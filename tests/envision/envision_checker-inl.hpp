@@ -214,6 +214,15 @@ inline std::set<Edge> Checker::successors(const Key& s, const std::set<Key>& all
                     if (q[k2].place != s.places[k2] || q[k2].how == 2) causes |= 1;
                     target.push_back(q[k2].place);
                 }
+                // 3.3: a part no state at these places lets start as the step says cannot move: it
+                // stays as it is, and the others go on.
+                std::vector<bool> reach(n, false);
+                for (const Key& t : all)
+                    if (t.places == target)
+                        for (std::size_t o = 0; o < n; ++o) {
+                            const auto& opts = st.motions[o];
+                            reach[o] = reach[o] || std::find(opts.begin(), opts.end(), t.motions[o]) != opts.end();
+                        }
                 std::vector<const Key*> cands;
                 std::vector<std::vector<int>> ranks;
                 for (const Key& t : all) {
@@ -225,6 +234,7 @@ inline std::set<Edge> Checker::successors(const Key& s, const std::set<Key>& all
                         const bool in = std::find(opts.begin(), opts.end(), t.motions[o]) != opts.end();
                         const bool must = std::find(opts.begin(), opts.end(), s.motions[o]) == opts.end();
                         if (fixed[o]) ok = t.motions[o] == *fixed[o];
+                        else if (must && !reach[o]) ok = t.motions[o] == s.motions[o];
                         else if (must) ok = in;
                         else {
                             int best = 3;
