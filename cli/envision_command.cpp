@@ -14,6 +14,7 @@
 #include "envision/state_report.hpp"
 #include "envision/table_printer.hpp"
 #include "envision/text_printer.hpp"
+#include "envision/verify.hpp"
 #include "envision/why_not.hpp"
 #include "geometry/metric_scene_parser.hpp"
 
@@ -33,7 +34,7 @@ namespace {
 
 struct Options {
     std::string scene;
-    bool table = false, json = false, stats = false, use_cache = true;
+    bool table = false, json = false, stats = false, verify = false, use_cache = true;
     std::size_t max_states = 1'000'000;
     std::optional<std::filesystem::path> cache, rules;
     std::vector<std::string> without;
@@ -152,6 +153,7 @@ std::optional<int> parse_options(std::span<const std::string> args, Options& o, 
     cl.flag("--table", o.table);
     cl.flag("--json", o.json);
     cl.flag("--stats", o.stats);
+    cl.flag("--verify", o.verify);
     cl.single("--max-states", "a positive whole number", max_states);
     cl.repeated("--without", "an external force to take away, e.g. --without 'Force follower' or --without 'Force follower spring'",
                 o.without);
@@ -186,7 +188,7 @@ std::optional<int> parse_options(std::span<const std::string> args, Options& o, 
     const char* question = o.next ? "--next" : o.previous ? "--previous" : o.path ? "--path" : o.why_not ? "--why-not" : nullptr;
     if (question)
         for (const auto& [given, option] : {std::pair{o.json, "--json"}, std::pair{o.table, "--table"}, std::pair{o.from.has_value(), "--from"},
-                                            std::pair{dot.has_value(), "--dot"}, std::pair{svg.has_value(), "--svg"}})
+                                            std::pair{dot.has_value(), "--dot"}, std::pair{svg.has_value(), "--svg"}, std::pair{o.verify, "--verify"}})
             if (given)
                 return cl.error(err, std::string(question) + " answers a question in text, and " + option +
                                          " shapes only the envisionment printed without one: give one or the other");
@@ -287,6 +289,13 @@ int envision_command(std::span<const std::string> args, std::ostream& out, std::
     else ev::write_text(text, *m, *e);
     out << text.str();
     if (o.stats) print_stats(*e, err);
+    // --verify: the invariants of envision/verify.hpp; a broken one is the laws' failure (exit 1).
+    if (o.verify) {
+        const auto problems = ev::verify(*m, *e);
+        for (const auto& p : problems) err << "qm-atms: verify: " << p << '\n';
+        if (!problems.empty()) return 1;
+        err << "qm-atms: verify: every invariant holds (terminal states are jams, cycles can repeat, moving states lead on)\n";
+    }
     return 0;
 }
 

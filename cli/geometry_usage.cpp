@@ -24,7 +24,7 @@ const char* envision_usage() noexcept {
     return "       qm-atms envision METRIC-SCENE [--table | --json] [--max-states N] [--without 'Force PART [CAUSE]']...\n"
            "                        [--from STATE] [--next STATE] [--previous STATE] [--path 'DESC; DESC; ...' [--avoid 'DESC']...]\n"
            "                        [--why-not 'STATE -> STATE'] [--dot FILE] [--svg FILE]\n"
-           "                        [--cache DIR | --no-cache] [--rules DIR] [--stats]\n"
+           "                        [--cache DIR | --no-cache] [--rules DIR] [--stats] [--verify]\n"
            "                                                  the envisionment: states, transitions, cycles (docs/ENVISION.md)\n";
 }
 

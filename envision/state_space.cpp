@@ -224,11 +224,10 @@ bool read_settling(engine::Engine& e, const g::Mechanism& m, const Chain& chain,
                unreachable = per_object(v::step_unreachable);
     if (!none || !reachable || !unreachable) return false;
     for (std::size_t o = 0; o < n; ++o) {
-        bool any = false, all = true;
-        for (const PerObject* p : {&*none, &*reachable, &*unreachable}) {
-            any = any || (*p)[o].has_value();
-            all = all && (*p)[o].has_value();
-        }
+        bool any = none->at(o).has_value(), all = any;
+        // Whether a state allows the step's motions is optional, but both of its assumptions or none.
+        const bool reach_known = reachable->at(o).has_value();
+        all = all && reach_known == unreachable->at(o).has_value();
         for (std::size_t i = 1; i < per.size(); ++i)
             for (const auto& a : per[i][o]) {
                 any = any || a.has_value();
@@ -239,8 +238,8 @@ bool read_settling(engine::Engine& e, const g::Mechanism& m, const Chain& chain,
             diagnostics.error(made.value_or(SourceLocation{"<envision>", 1, 1}),
                               "the laws settle the motion of " + m.parts[chain.objects[o]].name +
                                   " after a step with only some of the assumptions (step-forbids O H), (motion-now O C), "
-                                  "(collision-fixes O F), (no-collision O), (step-reachable O), (step-unreachable O), "
-                                  "(next-motion O M): the envisioner needs each, for each motion (rules/clock/settling.rules)");
+                                  "(collision-fixes O F), (no-collision O), (next-motion O M), and (step-reachable O) with "
+                                  "(step-unreachable O) or neither: the envisioner needs each, for each motion (rules/clock/settling.rules)");
             return false;
         }
         for (const auto& a : allows[o])
@@ -261,7 +260,7 @@ bool read_settling(engine::Engine& e, const g::Mechanism& m, const Chain& chain,
                             for (std::size_t h = 0; h < 3; ++h) env.push_back(mask >> h & 1U ? *allows[o][h] : *forbids[o][h]);
                             env.push_back(*now[o][static_cast<std::size_t>(c + 1)]);
                             env.push_back(f == -2 ? *(*none)[o] : *fixes[o][static_cast<std::size_t>(f + 1)]);
-                            env.push_back(reach ? *(*reachable)[o] : *(*unreachable)[o]);
+                            if (reach_known) env.push_back(reach ? *(*reachable)[o] : *(*unreachable)[o]);
                             env.push_back(*next[o][static_cast<std::size_t>(x + 1)]);
                             const auto refuted = refutations.of(e.atms().environment(env));
                             std::optional<ChainTables::Refuter> r;

@@ -4,7 +4,8 @@
 // its parts, their motions' arrows and each pair's contact marks at each place; "paths" the
 // described behaviours asked for with `explore --path`.
 //   - a graph of a chain's states grouped by behavioural cycle (a ring each, in the order of its
-//     transitions; a grid past 40 states), terminal states and the other states (grids), at most VIEW_CAP states at a time (larger chains are shown by group,
+//     transitions; a grid past 40 states), transient cycles (they cannot repeat), terminal states
+//     (possible rests among them) and the other states (grids), at most VIEW_CAP states at a time (larger chains are shown by group,
 //     in pages, or around a state);
 //   - a state: the chain drawn at it (each pair's parts at its place's sample configuration, as
 //     `draw --history` draws it) with its motions as arrows, the point in a pair's configuration
@@ -26,8 +27,13 @@ function prepareChain(k) {
   const e = env.chains[k], c = { k, e, d: data.chains[k], byId: new Map(), next: new Map(), prev: new Map(), group: new Map() };
   for (const s of e.states) c.byId.set(s.id, s);
   for (const t of e.transitions) { push(c.next, t.from, t); push(c.prev, t.to, t); }
+  const transient = e.transient_cycles || [], rests = new Set(e.possible_rests || []);
+  c.rests = rests;
+  c.transient = transient;
   e.cycles.forEach((ids, i) => ids.forEach((id) => c.group.set(id, i)));
-  for (const id of e.terminal) c.group.set(id, 'terminal');
+  transient.forEach((t, i) => t.states.forEach((id) => c.group.set(id, 'transient-' + i)));
+  const jams = e.terminal.filter((id) => !rests.has(id));
+  for (const id of jams) c.group.set(id, 'terminal');
   const others = e.states.map((s) => s.id).filter((id) => !c.group.has(id));
   const paged = (label, ids) => {
     for (let from = 0; from < ids.length; from += VIEW_CAP) {
@@ -38,7 +44,8 @@ function prepareChain(k) {
   c.views = [];
   if (e.states.length <= VIEW_CAP) c.views.push({ label: 'all ' + e.states.length + ' states', ids: e.states.map((s) => s.id) });
   e.cycles.forEach((ids, i) => paged('cycle ' + (i + 1) + ' (' + ids.length + ' states)', ids));
-  if (e.terminal.length) paged('terminal states (' + e.terminal.length + ')', e.terminal);
+  transient.forEach((t, i) => paged('transient cycle ' + (i + 1) + ' (' + t.states.length + ' states, cannot repeat)', t.states));
+  if (e.terminal.length) paged('terminal states (' + e.terminal.length + (rests.size ? ', ' + rests.size + ' possible rests' : '') + ')', e.terminal);
   if (others.length) paged('other states (' + others.length + ')', others);
   return c;
 }
@@ -77,7 +84,7 @@ function orderAlong(c, members) {
 function layoutGraph(c, ids) {
   const groups = new Map();
   for (const id of ids) push(groups, c.group.has(id) ? c.group.get(id) : 'other', id);
-  const rank = (k) => (typeof k === 'number' ? k : k === 'terminal' ? 1e9 : 2e9);
+  const rank = (k) => (typeof k === 'number' ? k : k.startsWith('transient-') ? 5e8 + Number(k.slice(10)) : k === 'terminal' ? 1e9 : 2e9);
   const order = [...groups.keys()].sort((a, b) => rank(a) - rank(b));
   const width = 900, at = new Map(), boxes = [];
   let x = 0, y = 0, rowHeight = 0;
@@ -114,7 +121,8 @@ function drawGraph() {
     '<defs>' + ['#c0392b', '#2c6fbb', '#333333'].map((col, i) => '<marker id="arrow' + i + '" viewBox="0 0 10 10" refX="10" refY="5" ' +
       'markerWidth="6" markerHeight="6" orient="auto"><path d="M0,0L10,5L0,10z" fill="' + col + '"/></marker>').join('') + '</defs>';
   for (const b of boxes) {
-    const label = typeof b.key === 'number' ? 'cycle ' + (b.key + 1) : b.key === 'terminal' ? 'terminal states' : 'other states';
+    const label = typeof b.key === 'number' ? 'cycle ' + (b.key + 1) : b.key.startsWith('transient-') ? 'transient cycle ' + (Number(b.key.slice(10)) + 1) +
+      ' (cannot repeat)' : b.key === 'terminal' ? 'terminal states' : 'other states';
     svg += '<g class="group"><rect x="' + b.x + '" y="' + b.y + '" width="' + b.w + '" height="' + b.h + '" rx="10" fill="none" stroke="#bbbbbb"/>' +
       '<text x="' + (b.x + 8) + '" y="' + (b.y + 15) + '" font-size="11" fill="#555555">' + label + ' (' + b.n + ')</text></g>';
   }
@@ -243,7 +251,10 @@ function showState(id) {
     '" r="7" fill="#d35400" fill-opacity="0.8" stroke="#000000"/></g>');
   const signs = (m) => c.e.objects.map((o) => escape(o) + ' ' + m[o].slice(1, -1)).join(', ');
   byId('state-info').innerHTML = '<p><b>' + escape(idText(c, id)) + '</b>' +
-    (c.group.get(id) === 'terminal' ? ' (terminal: nothing changes any more)' : typeof c.group.get(id) === 'number' ? ' (on cycle ' + (c.group.get(id) + 1) + ')' : '') +
+    (c.group.get(id) === 'terminal' ? ' (terminal: nothing changes any more)' : typeof c.group.get(id) === 'number' ? ' (on cycle ' + (c.group.get(id) + 1) + ')' :
+      typeof c.group.get(id) === 'string' ? ' (on transient cycle ' + (Number(c.group.get(id).slice(10)) + 1) + ': it cannot repeat, ' +
+      escape(c.transient[Number(c.group.get(id).slice(10))].object) + ' moves ' + c.transient[Number(c.group.get(id).slice(10))].motion.slice(1, -1) +
+      ' throughout)' : '') + (c.rests.has(id) ? ' (a possible rest: it may stay, or move on)' : '') +
     '</p><p>Motions: ' + signs(s.motions) + '; net force: ' + signs(s.net_force) + '.</p>' +
     '<p>Next states:</p><ul id="state-next">' + ((c.next.get(id) || []).map((t) => transitionText(t, t.to)).join('') || '<li>none</li>') + '</ul>' +
     '<p>Previous states:</p><ul id="state-previous">' + ((c.prev.get(id) || []).map((t) => transitionText(t, t.from)).join('') || '<li>none</li>') + '</ul>';

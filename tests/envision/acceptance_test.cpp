@@ -327,3 +327,47 @@ TEST_CASE("envision/acceptance: the cam's follower rides with the cam, and witho
         CHECK(free_turning);
     }
 }
+
+namespace qm::envision {
+namespace {
+
+using testing::envisioned_once;
+
+TEST_CASE("envision/acceptance: a part held at rest leaves the others to start (3.3)") {
+    // #444: the pallets rest on a CSEG of normal (0 +) under gravity, the wheel driven (-): the
+    // pallets cannot fall, the wheel turns along the face at once (#442), and nothing stops there.
+    const Scene s(envisioned_once("scenarios/clock/escapement.def"));
+    const auto& st = s.c.states[StateId{444}];
+    REQUIRE(place_of(s, StateId{444}).kind == geometry::PlaceKind::cseg);
+    REQUIRE(st.motions == std::vector<std::int8_t>{0, 0});
+    CHECK(s.c.states[StateId{442}].places == st.places);
+    CHECK(s.c.states[StateId{442}].motions == std::vector<std::int8_t>{-1, 0});
+    CHECK(has_transition(s.c, StateId{444}, StateId{442}, Cause::dynamic));
+    // Every state where the escapement may stop has every part still; with nothing holding the
+    // wheel's spring for good, none is a jam, and the possible rests are where its contacts may
+    // balance it.
+    CHECK(s.c.graph.terminal.empty());
+    for (const StateId r : s.c.graph.possible_rests) {
+        CHECK(s.c.states[r].motions == std::vector<std::int8_t>{0, 0});
+        CHECK(touching(place_of(s, r)));
+    }
+}
+
+TEST_CASE("envision/acceptance: without its return force the follower rides no cycle up or down its stroke (9.4)") {
+    const Scene s(envisioned_once("scenarios/clock/cam_free.def"));
+    // Every behavioural cycle has the follower still somewhere or moving both ways; the laps in
+    // which it only ever goes one way are transient, the follower named.
+    for (const auto& cycle : s.c.graph.cycles) {
+        bool still_or_both = false;
+        for (const StateId x : cycle) still_or_both = still_or_both || motion(s, x, 1) != motion(s, cycle.front(), 1) || motion(s, x, 1) == 0;
+        CHECK(still_or_both);
+    }
+    REQUIRE(!s.c.graph.transient.empty());
+    for (const auto& t : s.c.graph.transient) {
+        CHECK(t.object == 1);
+        for (const StateId x : t.states) CHECK(motion(s, x, 1) == t.motion);
+    }
+}
+
+}  // namespace
+}  // namespace qm::envision
