@@ -133,21 +133,39 @@ private:
         std::vector<g::PlaceId> target;
         for (const auto& p : places) target.push_back(p.place);
         const auto at = states_.with_places(target);
-        // Per object, whether some state with these places gives it a motion the step allows it.
-        reach_.assign(n, false);
-        for (const StateId id : at)
-            for (std::size_t o = 0; o < n; ++o)
-                if ((allowed_[o] >> (states_[id].motions[o] + 1) & 1U) != 0) reach_[o] = true;
         // Per object, the motions after this step the laws allow it (bit idx(m)): with collisions,
         // those every collision's outcome allows.
         next_.assign(n, 0);
         fixed_.assign(n, false);
+        reach_.assign(n, true);  // a colliding part's reach is not asked (settling.rules: no-collision only)
         for (std::size_t i = 0; i < arrivals.size(); ++i) {
             const auto [a, b] = parts_[arrivals[i].pair];
             for (const auto& [o, x] : {std::pair{a, branch[i].s[0]}, std::pair{b, branch[i].s[1]}}) {
                 const std::uint8_t mine = allowed_next(o, x);
                 next_[o] = fixed_[o] ? static_cast<std::uint8_t>(next_[o] & mine) : mine;
                 fixed_[o] = true;
+            }
+        }
+        // Per other object, whether some state with these places gives it a motion the step allows
+        // it while each part a collision fixes moves as fixed and each other part whose motion the
+        // step does not allow takes one it allows or stays as it is.
+        const auto has = [](std::uint8_t mask, std::int8_t m) { return (mask >> (m + 1) & 1U) != 0; };
+        for (std::size_t o = 0; o < n; ++o) {
+            if (fixed_[o]) continue;
+            reach_[o] = false;
+            for (const StateId id : at) {
+                const auto& t = states_[id].motions;
+                if (!has(allowed_[o], t[o])) continue;
+                bool others = true;
+                for (std::size_t p = 0; p < n && others; ++p) {
+                    if (p == o) continue;
+                    if (fixed_[p]) others = has(next_[p], t[p]);
+                    else if (!has(allowed_[p], current_.motions[p])) others = has(allowed_[p], t[p]) || t[p] == current_.motions[p];
+                }
+                if (others) {
+                    reach_[o] = true;
+                    break;
+                }
             }
         }
         for (std::size_t o = 0; o < n; ++o) {

@@ -14,6 +14,17 @@ const g::Adjacency* adjacency(const bridge::PairPlaces& pair, g::PlaceId place, 
     return nullptr;
 }
 
+// A motion with a component along a bounded axis cannot lead a place back to itself (it would
+// wrap, and only a periodic axis wraps): a free motion there must reach another place.
+bool only_itself_along_bounded(const bridge::PairPlaces& pair, g::PlaceId place, g::QualDirection v) {
+    bool bounded = false;
+    for (std::size_t i = 0; i < 2; ++i) bounded = bounded || (v.s[i] != 0 && !pair.request.cspace.axes[i].periodic);
+    if (!bounded) return false;
+    for (const auto& a : pair.vocabulary.adjacency)
+        if (a.from == place && a.motion == v && (a.constrained || a.to != place)) return false;
+    return true;
+}
+
 class Checker {
 public:
     Checker(const g::Mechanism& m, const Envisionment& e, const ChainEnvisionment& c) : m_(m), e_(e), c_(c) {
@@ -43,9 +54,13 @@ public:
             for (std::size_t k = 0; k < c_.chain.pairs.size(); ++k) {
                 const auto& p = e_.pairs[c_.chain.pairs[k]];
                 const g::QualDirection v{{s.motions[c_.chain.object_index(p.spec.a)], s.motions[c_.chain.object_index(p.spec.b)]}};
-                if ((v.s[0] != 0 || v.s[1] != 0) && !adjacency(p, s.places[k], v))
+                if (v.s[0] == 0 && v.s[1] == 0) continue;
+                if (!adjacency(p, s.places[k], v))
                     problem(out, id, "has pair " + p.name + " moving " + g::to_string(v) + " with neither a next place nor a constraint at place " +
                                          std::to_string(s.places[k].value));
+                else if (only_itself_along_bounded(p, s.places[k], v))
+                    problem(out, id, "has pair " + p.name + " moving " + g::to_string(v) + " along a bounded axis, and place " +
+                                         std::to_string(s.places[k].value) + " leads only back to itself");
             }
             if (s.may_rest && moving) problem(out, id, "is a possible rest, yet a part moves");
         }

@@ -214,15 +214,24 @@ inline std::set<Edge> Checker::successors(const Key& s, const std::set<Key>& all
                     if (q[k2].place != s.places[k2] || q[k2].how == 2) causes |= 1;
                     target.push_back(q[k2].place);
                 }
-                // 3.3: a part no state at these places lets start as the step says cannot move: it
-                // stays as it is, and the others go on.
+                // 3.3: a part no state at these places lets start as the step says (the colliding
+                // parts as the collision fixes them, the other parts that must change changing or
+                // staying) cannot move: it stays as it is, and the others go on.
+                auto allows = [&](std::size_t o, std::int8_t m) { return std::find(st.motions[o].begin(), st.motions[o].end(), m) != st.motions[o].end(); };
                 std::vector<bool> reach(n, false);
-                for (const Key& t : all)
-                    if (t.places == target)
-                        for (std::size_t o = 0; o < n; ++o) {
-                            const auto& opts = st.motions[o];
-                            reach[o] = reach[o] || std::find(opts.begin(), opts.end(), t.motions[o]) != opts.end();
+                for (const Key& t : all) {
+                    if (t.places != target) continue;
+                    for (std::size_t o = 0; o < n; ++o) {
+                        if (!allows(o, t.motions[o])) continue;
+                        bool others = true;
+                        for (std::size_t p = 0; p < n; ++p) {
+                            if (p == o) continue;
+                            if (fixed[p]) others = others && t.motions[p] == *fixed[p];
+                            else if (!allows(p, s.motions[p])) others = others && (allows(p, t.motions[p]) || t.motions[p] == s.motions[p]);
                         }
+                        reach[o] = reach[o] || others;
+                    }
+                }
                 std::vector<const Key*> cands;
                 std::vector<std::vector<int>> ranks;
                 for (const Key& t : all) {
