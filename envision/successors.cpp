@@ -41,7 +41,6 @@ public:
     void step(const StepOptions& s) {
         allowed_.clear();
         for (const auto& options : s.motions) allowed_.push_back(ChainTables::allowed_mask(options));
-        // A pair that may wrap may also stay: both reach the same state, so keep the wrap.
         std::vector<std::vector<PlaceOption>> places = s.places;
         if (target_) {
             const State& t = states_[*target_];
@@ -58,13 +57,6 @@ public:
                 }
                 places[k] = std::move(to);
             }
-        }
-        for (std::size_t k = 0; k < places.size(); ++k) {
-            auto& opts = places[k];
-            if (std::any_of(opts.begin(), opts.end(), [](const PlaceOption& o) { return o.how == How::wrap; }))
-                opts.erase(std::remove_if(opts.begin(), opts.end(),
-                                          [&](const PlaceOption& o) { return o.how == How::stay && o.place == current_.places[k]; }),
-                           opts.end());
         }
         std::vector<PlaceOption> chosen(places.size());
         combine_places(s, places, 0, chosen);

@@ -227,6 +227,35 @@ def check_envisionment(driver, data, wheel, pallets, described):
         expect_state(want[k], "step %d of the described behaviour" % (k + 1))
 
 
+def check_transient(driver, qm_atms, source, work, cache):
+    """cam_free.def's transient cycles and the escapement's possible rests are shown as such."""
+    from selenium.webdriver.common.by import By
+    for name, scene in (("cam_free", "scenarios/clock/cam_free.def"), ("escapement-full", "scenarios/clock/escapement.def")):
+        out = os.path.join(work, name)
+        run = subprocess.run([qm_atms, "explore", os.path.join(source, scene), "-o", out, "--cache", cache], capture_output=True, text=True)
+        check(run.returncode == 0, "qm-atms explore %s failed: %s" % (scene, run.stderr))
+        driver.get("file://" + os.path.abspath(os.path.join(out, "index.html")))
+        chain = json.loads(driver.execute_script("return document.getElementById('qm-data').textContent"))["envisionment"]["chains"][0]
+        views = [o.text for o in driver.find_elements(By.CSS_SELECTOR, "#graph-view option")]
+        if name == "cam_free":
+            check(chain["transient_cycles"], "cam_free has transient cycles")
+            check(any(v.startswith("transient cycle 1 (") and "cannot repeat" in v for v in views), "views %r" % views)
+            first = chain["transient_cycles"][0]
+            sid, why = first["states"][0], "on transient cycle 1: it cannot repeat, %s moves %s throughout" % (first["object"], first["motion"][1:-1])
+        else:
+            check(chain["possible_rests"], "the escapement has possible rests")
+            check(any(v.startswith("terminal states (") and "possible rests" in v for v in views), "views %r" % views)
+            sid, why = chain["possible_rests"][0], "a possible rest: it may stay, or move on"
+        field = driver.find_element(By.ID, "state-id")
+        field.clear()
+        field.send_keys(str(sid))
+        driver.find_element(By.ID, "state-go").click()
+        info = driver.find_element(By.ID, "state-info").text
+        check(why in info, "state #%d of %s: %r" % (sid, scene, info))
+        errors = [e for e in driver.get_log("browser") if e["level"] in ("SEVERE", "WARNING")]
+        check(not errors, "console on %s: %r" % (scene, errors))
+
+
 def main():
     qm_atms, source, work = sys.argv[1], sys.argv[2], sys.argv[3]
     chromium, chromedriver = shutil.which("chromium"), shutil.which("chromedriver")
@@ -345,6 +374,7 @@ def main():
 
         errors = [e for e in driver.get_log("browser") if e["level"] in ("SEVERE", "WARNING")]
         check(not errors, "console: %r" % errors)
+        check_transient(driver, qm_atms, source, work, cache)
     finally:
         driver.quit()
     print("PASS: the explorer page in %s" % chromium)
