@@ -42,8 +42,8 @@ void ChainTables::set_preference_rank(std::size_t object, std::uint8_t allowed, 
     preference_[object][allowed & 7U][idx(m)] = rank;
 }
 
-void ChainTables::set_settling(std::size_t object, std::uint8_t allowed, std::int8_t now, std::optional<std::int8_t> fix,
-                               bool reachable, std::int8_t next, const std::optional<Refuter>& refuted) {
+void ChainTables::set_settling(std::size_t object, std::uint8_t allowed, std::int8_t now, std::uint8_t fixes, bool reachable,
+                               std::int8_t next, const std::optional<Refuter>& refuted) {
     if (settling_.size() <= object) settling_.resize(object + 1, {});
     std::uint8_t code = 0;
     if (refuted) {
@@ -55,7 +55,7 @@ void ChainTables::set_settling(std::size_t object, std::uint8_t allowed, std::in
         }
         code = static_cast<std::uint8_t>(it - refuters_.begin() + 1);
     }
-    settling_[object][allowed & 7U][idx(now)][fix ? idx(*fix) + 1 : 0][reachable ? 1 : 0][idx(next)] = code;
+    settling_[object][allowed & 7U][idx(now)][fixes & 7U][reachable ? 1 : 0][idx(next)] = code;
 }
 
 }  // namespace qm::envision

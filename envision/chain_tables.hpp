@@ -6,7 +6,7 @@
 //             a step allows it (rules/clock/nearness.rules: the `prefer` on `motion`, read through
 //             engine/preferences.hpp's rank table), and which motion an object may have after a
 //             step given its situation in it (rules/clock/settling.rules: the motions the step
-//             allows it, its motion now, the motion a collision fixes, read through
+//             allows it, its motion now, the motions the step's collisions fix, read through
 //             engine/consistency.hpp; also whether any state with the step's places gives it a
 //             motion the step allows it), with the rule that refutes each motion it may not have.
 // Ownership:  a value type.
@@ -57,18 +57,19 @@ public:
         friend bool operator==(const Refuter&, const Refuter&) = default;
     };
     // Whether object o may move `next` after a step that allows it the motions in `allowed`
-    // (allowed_mask), starting from motion `now`, with a collision fixing its motion to *fix (none
-    // without a collision), where `reachable` says whether some state with the step's places gives
-    // o a motion the step allows it: 0 if the laws allow it, else 1 + the index of the refuting
-    // rule in refuter(). Where nothing was set (the laws settle nothing), 0. Pre: motions are
-    // -1, 0, +1.
-    void set_settling(std::size_t object, std::uint8_t allowed, std::int8_t now, std::optional<std::int8_t> fix, bool reachable,
-                      std::int8_t next, const std::optional<Refuter>& refuted);
-    [[nodiscard]] std::uint8_t settling(std::size_t object, std::uint8_t allowed, std::int8_t now, std::optional<std::int8_t> fix,
-                                        bool reachable, std::int8_t next) const {
-        return object < settling_.size() ? settling_[object][allowed & 7U][idx(now)][fix ? idx(*fix) + 1 : 0][reachable ? 1 : 0][idx(next)]
-                                         : 0;
+    // (allowed_mask), starting from motion `now`, with the collisions of the step fixing its motion
+    // to each of the motions in `fixes` (a mask like allowed_mask; 0: no collision), where
+    // `reachable` says whether some state with the step's places gives o a motion the step allows
+    // it: 0 if the laws allow it, else 1 + the index of the refuting rule in refuter(). Where
+    // nothing was set (the laws settle nothing), 0. Pre: motions are -1, 0, +1.
+    void set_settling(std::size_t object, std::uint8_t allowed, std::int8_t now, std::uint8_t fixes, bool reachable, std::int8_t next,
+                      const std::optional<Refuter>& refuted);
+    [[nodiscard]] std::uint8_t settling(std::size_t object, std::uint8_t allowed, std::int8_t now, std::uint8_t fixes, bool reachable,
+                                        std::int8_t next) const {
+        return object < settling_.size() ? settling_[object][allowed & 7U][idx(now)][fixes & 7U][reachable ? 1 : 0][idx(next)] : 0;
     }
+    // The mask of one motion (for allowed_mask, fixes). Pre: m is -1, 0, +1.
+    [[nodiscard]] static std::uint8_t bit(std::int8_t m) { return static_cast<std::uint8_t>(1U << idx(m)); }
     // Pre: code is a non-zero value settling() returned.
     [[nodiscard]] const Refuter& refuter(std::uint8_t code) const { return refuters_.at(code - 1U); }
 
@@ -76,9 +77,9 @@ private:
     static std::size_t idx(std::int8_t s) { return static_cast<std::size_t>(s + 1); }
     std::map<std::tuple<std::size_t, std::uint32_t, How, geometry::QualDirection>, std::vector<geometry::QualDirection>> arrival_;
     std::vector<std::array<std::array<std::int64_t, 3>, 8>> preference_;  // [object][allowed mask][motion]
-    // [object][allowed mask][now][fix: none, -, 0, +][reachable][next]: 0 or 1 + an index into refuters_.
+    // [object][allowed mask][now][fixes mask][reachable][next]: 0 or 1 + an index into refuters_.
     using Next = std::array<std::uint8_t, 3>;
-    std::vector<std::array<std::array<std::array<std::array<Next, 2>, 4>, 3>, 8>> settling_;
+    std::vector<std::array<std::array<std::array<std::array<Next, 2>, 8>, 3>, 8>> settling_;
     std::vector<Refuter> refuters_;
 };
 

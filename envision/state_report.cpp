@@ -56,6 +56,8 @@ bool write_next(std::ostream& os, const geometry::Mechanism& m, const Envisionme
     for (const auto& [first, then] : dynamics->preempts)
         os << "  step " << dynamics->steps[then].name << " happens only if step " << dynamics->steps[first].name << " cannot (Law 4)\n";
     if (dynamics->steps.empty()) os << "  no step: nothing changes (a terminal state)\n";
+    if (dynamics->may_rest)
+        os << "  a possible rest: its contacts may hold every part its forces would start, depending on magnitudes (rules/clock/rest.rules)\n";
     std::size_t n = 0;
     for (const auto& t : c.transitions) n += t.from == s.state;
     os << "  next (" << n << "):\n";

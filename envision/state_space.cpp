@@ -185,7 +185,7 @@ bool read_preference(engine::Engine& e, const g::Mechanism& m, const Chain& chai
 
 // Which motion each object may have after a step (rules/clock/settling.rules): for every situation
 // of the object in a step (the motions the step allows it and those it forbids, its motion now, the
-// motion a collision fixes or no collision, whether some state with the step's places gives it a
+// motions the step's collisions fix, each an assumption of its own, or no collision, whether some state with the step's places gives it a
 // motion the step allows) and every motion after, whether that environment of
 // assumptions is consistent, and if not the rule refuting it (engine/consistency.hpp); read once per
 // chain, looked up by the successor step. An object the laws make none of these assumptions for is
@@ -201,7 +201,7 @@ bool read_settling(engine::Engine& e, const g::Mechanism& m, const Chain& chain,
         if (!p) return false;
         per.push_back(std::move(*p));
     }
-    const PerMotion &allows = per[0], &forbids = per[1], &now = per[2], &fixes = per[3], &next = per[4];
+    const PerMotion &allows = per[0], &forbids = per[1], &now = per[2], &fixes_of = per[3], &next = per[4];
     // (no-collision O), (step-reachable O), (step-unreachable O)
     using PerObject = std::vector<std::optional<atms::AssumptionId>>;
     auto per_object = [&](const char* predicate) -> std::optional<PerObject> {
@@ -253,20 +253,22 @@ bool read_settling(engine::Engine& e, const g::Mechanism& m, const Chain& chain,
         std::vector<atms::AssumptionId> env;
         for (std::uint8_t mask = 0; mask < 8; ++mask)
             for (std::int8_t c = -1; c <= 1; ++c)
-                for (std::int8_t f = -2; f <= 1; ++f)  // -2: no collision
+                for (std::uint8_t fixes = 0; fixes < 8; ++fixes)  // 0: no collision
                     for (const bool reach : {false, true})
                         for (std::int8_t x = -1; x <= 1; ++x) {
                             env.clear();
                             for (std::size_t h = 0; h < 3; ++h) env.push_back(mask >> h & 1U ? *allows[o][h] : *forbids[o][h]);
                             env.push_back(*now[o][static_cast<std::size_t>(c + 1)]);
-                            env.push_back(f == -2 ? *(*none)[o] : *fixes[o][static_cast<std::size_t>(f + 1)]);
+                            if (fixes == 0) env.push_back(*(*none)[o]);
+                            for (std::size_t h = 0; h < 3; ++h)
+                                if (fixes >> h & 1U) env.push_back(*fixes_of[o][h]);
                             if (reach_known) env.push_back(reach ? *(*reachable)[o] : *(*unreachable)[o]);
                             env.push_back(*next[o][static_cast<std::size_t>(x + 1)]);
                             const auto refuted = refutations.of(e.atms().environment(env));
                             std::optional<ChainTables::Refuter> r;
                             if (refuted)
                                 r = ChainTables::Refuter{refuted->rule, refuted->where.file + ":" + std::to_string(refuted->where.line)};
-                            tables.set_settling(o, mask, c, f == -2 ? std::nullopt : std::optional<std::int8_t>(f), reach, x, r);
+                            tables.set_settling(o, mask, c, fixes, reach, x, r);
                         }
     }
     return true;

@@ -128,22 +128,21 @@ private:
         // Per object, the motions after this step the laws allow it (bit idx(m)): with collisions,
         // those every collision's outcome allows.
         next_.assign(n, 0);
-        fixed_.assign(n, false);
+        fixes_.assign(n, 0);
         reach_.assign(n, true);  // a colliding part's reach is not asked (settling.rules: no-collision only)
         for (std::size_t i = 0; i < arrivals.size(); ++i) {
             const auto [a, b] = parts_[arrivals[i].pair];
-            for (const auto& [o, x] : {std::pair{a, branch[i].s[0]}, std::pair{b, branch[i].s[1]}}) {
-                const std::uint8_t mine = allowed_next(o, x);
-                next_[o] = fixed_[o] ? static_cast<std::uint8_t>(next_[o] & mine) : mine;
-                fixed_[o] = true;
-            }
+            fixes_[a] |= ChainTables::bit(branch[i].s[0]);
+            fixes_[b] |= ChainTables::bit(branch[i].s[1]);
         }
+        for (std::size_t o = 0; o < n; ++o)
+            if (fixes_[o] != 0) next_[o] = allowed_next(o);
         // Per other object, whether some state with these places gives it a motion the step allows
         // it while each part a collision fixes moves as fixed and each other part whose motion the
         // step does not allow takes one it allows or stays as it is.
         const auto has = [](std::uint8_t mask, std::int8_t m) { return (mask >> (m + 1) & 1U) != 0; };
         for (std::size_t o = 0; o < n; ++o) {
-            if (fixed_[o]) continue;
+            if (fixes_[o] != 0) continue;
             reach_[o] = false;
             for (const StateId id : at) {
                 const auto& t = states_[id].motions;
@@ -151,7 +150,7 @@ private:
                 bool others = true;
                 for (std::size_t p = 0; p < n && others; ++p) {
                     if (p == o) continue;
-                    if (fixed_[p]) others = has(next_[p], t[p]);
+                    if (fixes_[p] != 0) others = has(next_[p], t[p]);
                     else if (!has(allowed_[p], current_.motions[p])) others = has(allowed_[p], t[p]) || t[p] == current_.motions[p];
                 }
                 if (others) {
@@ -161,15 +160,15 @@ private:
             }
         }
         for (std::size_t o = 0; o < n; ++o) {
-            if (!fixed_[o]) next_[o] = allowed_next(o, std::nullopt);
-            if (next_[o] == 0) return;  // no motion of o can follow (two collisions that disagree: 5.3.3)
+            if (fixes_[o] == 0) next_[o] = allowed_next(o);
+            if (next_[o] == 0) return;  // no motion of o can follow (e.g. two collisions that disagree: 5.3.3)
         }
         if (target_) {
             const State& t = states_[*target_];
             for (std::size_t i = 0; i < arrivals.size(); ++i) {
                 const auto [a, b] = parts_[arrivals[i].pair];
-                std::uint8_t code = settling(a, branch[i].s[0], t.motions[a]);
-                if (code == 0) code = settling(b, branch[i].s[1], t.motions[b]);
+                std::uint8_t code = settling(a, t.motions[a]);
+                if (code == 0) code = settling(b, t.motions[b]);
                 if (code != 0) {
                     reasons_.push_back("arriving at place " + std::to_string(places[arrivals[i].pair].place.value) + ", pair " +
                                        pair_names_[arrivals[i].pair] + " moves on with " + g::to_string(branch[i]) +
@@ -211,14 +210,15 @@ private:
         }
     }
 
-    // The settling table's answer for object o after this step (0: allowed; else the refuter's code).
-    [[nodiscard]] std::uint8_t settling(std::size_t o, std::optional<std::int8_t> fix, std::int8_t next) const {
-        return tables_.settling(o, allowed_[o], current_.motions[o], fix, reach_[o], next);
+    // The settling table's answer for object o after this step, given the collisions that fix it
+    // (0: allowed; else the refuter's code).
+    [[nodiscard]] std::uint8_t settling(std::size_t o, std::int8_t next) const {
+        return tables_.settling(o, allowed_[o], current_.motions[o], fixes_[o], reach_[o], next);
     }
-    [[nodiscard]] std::uint8_t allowed_next(std::size_t o, std::optional<std::int8_t> fix) const {
+    [[nodiscard]] std::uint8_t allowed_next(std::size_t o) const {
         std::uint8_t mask = 0;
         for (std::int8_t m = -1; m <= 1; ++m)
-            if (settling(o, fix, m) == 0) mask = static_cast<std::uint8_t>(mask | 1U << (m + 1));
+            if (settling(o, m) == 0) mask = static_cast<std::uint8_t>(mask | ChainTables::bit(m));
         return mask;
     }
     // "rule NAME at FILE:LINE": the law that refutes a motion, for explanations.
@@ -232,8 +232,8 @@ private:
         const auto it = std::find(candidates.begin(), candidates.end(), *target_);
         if (it == candidates.end()) {
             for (std::size_t o = 0; o < t.motions.size(); ++o) {
-                if (fixed_[o]) continue;
-                const std::uint8_t code = settling(o, std::nullopt, t.motions[o]);
+                if (fixes_[o] != 0) continue;
+                const std::uint8_t code = settling(o, t.motions[o]);
                 if (code == 0) continue;
                 std::string options;
                 for (const auto x : s.motions[o]) options += std::string(options.empty() ? "" : " ") + sign_word(x);
@@ -269,7 +269,7 @@ private:
     std::vector<std::pair<std::size_t, std::size_t>> parts_;  // per pair: its parts' object indices
     std::vector<std::uint8_t> allowed_;  // per object: the motions the current step allows it (ChainTables::allowed_mask)
     std::vector<std::uint8_t> next_;     // per object: the motions after the step the settling laws allow (settle)
-    std::vector<bool> fixed_;            // per object: whether a collision of the branch fixes its motion (settle)
+    std::vector<std::uint8_t> fixes_;    // per object: the motions the branch's collisions fix it to, as a mask (settle)
     std::vector<bool> reach_;            // per object: whether a state with the branch's places has a motion the step allows it
     std::map<std::pair<StateId, Duration>, std::uint8_t> found_;
     std::optional<StateId> target_;

@@ -4,20 +4,16 @@
 //             (state_dynamics.hpp) is a hypothesised next state; each pair's motion is carried
 //             through its arrival at its next place (a collision or the end of an axis may change
 //             it: collision.rules, a stop at the end of an axis too); every object keeps only the
-//             motions after the step the laws allow given its situation in it (a collision's
-//             outcome, a motion the step does not allow that must change: rules/clock/
-//             settling.rules, read once per chain into ChainTables as a settling table and looked
-//             up here), and the chain is made consistent (8.3.4) by keeping, among the generated
+//             motions after the step the laws allow given its situation in it (the outcomes of
+//             the collisions that meet it, a motion the step does not allow that must change,
+//             whether any state lets it: rules/clock/settling.rules, read once per chain into
+//             ChainTables as a settling table and looked up here), and the chain is made consistent (8.3.4) by keeping, among the generated
 //             states with the hypothesised places and those motions, the ones the laws' preference
 //             keeps (rules/clock/nearness.rules: `prefer` on every object's motion, ranked given
 //             the motions the step allows it; also read once per chain into ChainTables and applied
 //             here by lookup: the Pareto front, atms/pareto_front.hpp); a hypothesis that matches no
 //             generated state is dropped (8.3.5). This file holds no law: it decides no rank,
-//             threshold, order of motions, nor which motion may follow which. One limit: the
-//             settling table is per situation with at most one collision's outcome, so an object
-//             two collisions meet keeps the motions both outcomes allow (the intersection, here);
-//             for laws whose nogoods are pairwise per object, as settling.rules', that is the same
-//             as the laws' verdict on both outcomes at once. The combination that
+//             threshold, order of motions, nor which motion may follow which. The combination that
 //             changes nothing is no transition, unless some pair wraps round a periodic axis: then
 //             the state has a transition to itself over an interval. A step that another preempts
 //             (Law 4: the laws' `preempts`) gives its transitions only if that one gives none.

@@ -69,7 +69,7 @@ TEST_CASE("envision/laws: the settling of a step is the settling law's: deleting
     for (const auto& e : edges(a, false)) with_law.insert(e);
     for (const auto& e : edges(b, false)) without_law.insert(e);
     CHECK(with_law != without_law);
-    for (std::size_t o = 0; o < b.chain.objects.size(); ++o) CHECK(b.tables.settling(o, 1, 1, std::nullopt, true, 1) == 0);
+    for (std::size_t o = 0; o < b.chain.objects.size(); ++o) CHECK(b.tables.settling(o, 1, 1, 0, true, 1) == 0);
 }
 
 TEST_CASE("envision/laws: without the metric diagram's constraint, states the geometry blocks come back") {
