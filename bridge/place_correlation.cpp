@@ -17,10 +17,17 @@ struct Interval {
 };
 
 // The values a line or join covers: the union of its consecutive points' spans (the short way
-// round a periodic axis). Nothing for a face.
+// round a periodic axis); a face, those its samples cover (geometry's Place::covers). Nothing for a
+// place without them.
 std::optional<std::vector<Interval>> covered(const g::Place& p, int axis, const g::CSpaceAxis& range) {
-    if (p.kind == g::PlaceKind::face || p.points.empty()) return std::nullopt;
     std::vector<Interval> out;
+    if (p.kind == g::PlaceKind::face) {
+        const auto& spans = p.covers[static_cast<std::size_t>(axis)];
+        if (spans.empty()) return std::nullopt;
+        for (const auto& s : spans) out.push_back({s.lo, s.hi});
+        return out;
+    }
+    if (p.points.empty()) return std::nullopt;
     const double period = range.span();
     for (std::size_t i = 0; i < p.points.size(); ++i) {
         const double x = p.points[i][axis];

@@ -1,12 +1,11 @@
 // bridge/place_correlation.hpp
 // Provides:   places_apart(), the metric half of Definition 34 (Correlation) for two kinematic
 //             pairs that share a part's coordinate: the pairs of places, one of each, that cannot
-//             hold at once because they cover disjoint values of that coordinate. Only lines (CSEGs,
-//             divisions) and joins are compared: their points are where they are (a line's polyline
-//             is dense: boundary points a grid edge apart, a division's points at most a quarter
-//             period apart, so consecutive points span the short way round); a face keeps only one
-//             sample and may extend anywhere, so it is correlated with nothing here (the forces'
-//             signs still tell faces apart, rules/clock/correlation.rules). Coordinates are compared
+//             hold at once because they cover disjoint values of that coordinate. Lines (CSEGs,
+//             divisions) and joins cover what their points span (a line's polyline is dense:
+//             boundary points a grid edge apart, a division's points at most a quarter period
+//             apart, so consecutive points span the short way round); a face what its grid samples
+//             span, widened by two grid steps (geometry::Place::covers). Coordinates are compared
 //             only when both pairs' axes for the part are the same (same range, both periodic or
 //             both bounded): a part seen over one tooth pitch in one pair and over a full turn in
 //             the other is at one of several angles for each place, which this does not follow.

@@ -19,7 +19,7 @@ namespace {
 // The format's number changes whenever the builder would give another vocabulary for the same
 // geometry and settings, so that a file of an older number is stale and recomputed, never served.
 constexpr std::string_view family = "qm-place-cache/";
-constexpr const char* magic = "qm-place-cache/7";
+constexpr const char* magic = "qm-place-cache/8";
 constexpr std::uintmax_t largest_file = std::uintmax_t{1} << 30;
 
 void write_text(std::ostream& os, const std::string& s) { os << s.size() << ' ' << s; }
@@ -69,6 +69,10 @@ void write_body(std::ostream& os, const PlaceVocabulary& v) {
         for (auto n : p.normals) os << ' ' << int{n.s[0]} << ' ' << int{n.s[1]};
         os << ' ' << p.points.size();
         for (const auto& x : p.points) os << ' ' << x.x() << ' ' << x.y();
+        for (const auto& spans : p.covers) {
+            os << ' ' << spans.size();
+            for (const auto& c : spans) os << ' ' << c.lo << ' ' << c.hi;
+        }
         os << ' ';
         write_text(os, p.label);
         os << '\n';
@@ -101,6 +105,13 @@ std::optional<PlaceVocabulary> read_body(std::istream& is) {
         p.points.resize(npts);
         for (auto& x : p.points)
             if (!read_double(is, x.x()) || !read_double(is, x.y())) return std::nullopt;
+        for (auto& spans : p.covers) {
+            std::size_t ns = 0;
+            if (!(is >> ns) || ns > (1u << 20)) return std::nullopt;
+            spans.resize(ns);
+            for (auto& c : spans)
+                if (!read_double(is, c.lo) || !read_double(is, c.hi)) return std::nullopt;
+        }
         if (is.get() != ' ' || !read_text(is, p.label)) return std::nullopt;
         v.places.push_back(std::move(p));
     }

@@ -13,6 +13,7 @@
 #include "geometry/qualitative_sign.hpp"
 #include "qm/id.hpp"
 #include <Eigen/Core>
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,6 +36,13 @@ enum class JoinKind {
 };
 [[nodiscard]] const char* to_string(JoinKind k) noexcept;
 
+// An interval [lo, hi] of one coordinate; on a periodic axis it may reach past the axis' range,
+// and stands for its copies a period apart.
+struct Span {
+    double lo = 0.0, hi = 0.0;
+    friend bool operator==(const Span&, const Span&) = default;
+};
+
 struct Place {
     PlaceId id{0};
     PlaceKind kind = PlaceKind::face;
@@ -48,6 +56,9 @@ struct Place {
                                          // periodic axis: points at most a quarter period apart, so
                                          // the way round is told); join: one point; face: one sample
     double extent = 0.0;                 // face: number of grid samples it covers
+    std::array<std::vector<Span>, 2> covers;  // face: per axis, the values of that coordinate its
+                                              // samples cover, each widened by two grid steps (the
+                                              // face reaches its boundary between samples)
     bool gap = false;                    // face: 8.1.6, a gap narrower than the gap epsilon, collapsed
                                          // with the CSEGs bounding it (normals: theirs)
 };

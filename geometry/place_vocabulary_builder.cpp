@@ -275,6 +275,29 @@ void Builder::emit_divisions() {
 }  // namespace qm::geometry::detail
 
 namespace qm::geometry {
+namespace {
+
+// The values of an axis' coordinate that a face covering the samples marked in `rows` spans: each
+// run of samples, widened by two steps either side (a face reaches its boundary between samples).
+std::vector<Span> covered_values(const CSpaceAxis& axis, const std::vector<bool>& rows) {
+    std::vector<Span> out;
+    const int n = axis.samples;
+    const double wide = 2 * axis.step();
+    if (std::all_of(rows.begin(), rows.end(), [](bool x) { return x; })) return {{axis.lo, axis.hi}};
+    for (int a = 0; a < n;) {
+        if (!rows[static_cast<std::size_t>(a)]) {
+            ++a;
+            continue;
+        }
+        int b = a;
+        while (b + 1 < n && rows[static_cast<std::size_t>(b + 1)]) ++b;
+        out.push_back({axis.sample(a) - wide, axis.sample(b) + wide});
+        a = b + 1;
+    }
+    return out;
+}
+
+}  // namespace
 
 PlaceResult build_place_vocabulary(const PairOracle& oracle, const PlaceRequest& request) {
     PlaceResult out;
@@ -327,11 +350,23 @@ PlaceResult build_place_vocabulary(const PairOracle& oracle, const PlaceRequest&
                     sample[fi] = x;
                 }
             }
+    // Which sample rows and columns each face covers, for the values of each coordinate it spans
+    // (Def 34: pairs sharing a part correlate their places by these).
+    std::array<std::vector<std::vector<bool>>, 2> rows;
+    for (std::size_t k = 0; k < 2; ++k)
+        rows[k].assign(static_cast<std::size_t>(n_faces), std::vector<bool>(static_cast<std::size_t>(r.axes[k].samples), false));
+    for (int j = 0; j < r.axes[1].samples; ++j)
+        for (int i = 0; i < r.axes[0].samples; ++i)
+            if (const int f = faces.face_of_sample(i, j); f >= 0) {
+                rows[0][static_cast<std::size_t>(f)][static_cast<std::size_t>(i)] = true;
+                rows[1][static_cast<std::size_t>(f)][static_cast<std::size_t>(j)] = true;
+            }
     for (int f = 0; f < n_faces; ++f) {
         Place p;
         p.kind = PlaceKind::face;
         p.points = {sample[static_cast<std::size_t>(f)]};
         p.extent = size[static_cast<std::size_t>(f)];
+        for (std::size_t k = 0; k < 2; ++k) p.covers[k] = covered_values(r.axes[k], rows[k][static_cast<std::size_t>(f)]);
         face_places.push_back(b.add(std::move(p)));
     }
     detail::add_adjacency(oracle, r, b.lines, faces, face_places, out.vocabulary);

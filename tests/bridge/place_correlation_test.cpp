@@ -1,7 +1,8 @@
 // tests/bridge/place_correlation_test.cpp: Def 34's metric half (bridge/place_correlation.hpp) on
 // the pendulum between two stops: places reported apart cover disjoint values of the bar's angle
 // (no point of one within the slack of a segment of the other), places not reported apart share a
-// value, faces are never apart, and the divisions where gravity flips are matched across the pairs.
+// value, a face's sample lies in the values it covers and away from every place it is apart from,
+// and the divisions where gravity flips are matched across the pairs.
 #include "bridge/place_correlation.hpp"
 #include "geometry/kinematic_pairs.hpp"
 #include "geometry/metric_scene_parser.hpp"
@@ -31,6 +32,13 @@ double circular_gap(double a, double b) {
     double d = std::fmod(std::abs(a - b), 2 * M_PI);
     return std::min(d, 2 * M_PI - d);
 }
+// Whether angle x lies in one of a face's spans (each standing for its copies a turn apart).
+bool in_covers(const g::Place& face, double x) {
+    for (const auto& c : face.covers[0])
+        for (int k = -1; k <= 1; ++k)
+            if (x + k * 2 * M_PI >= c.lo && x + k * 2 * M_PI <= c.hi) return true;
+    return false;
+}
 }  // namespace
 
 TEST_CASE("bridge/place_correlation: the pendulum's places in its two pairs") {
@@ -49,12 +57,23 @@ TEST_CASE("bridge/place_correlation: the pendulum's places in its two pairs") {
     const std::set<std::pair<g::PlaceId, g::PlaceId>> set(apart.begin(), apart.end());
     CHECK(!apart.empty());
     const double slack = 1e-6 * 2 * M_PI;
-    std::size_t shared = 0;
+    std::size_t shared = 0, faces_apart = 0;
     for (const auto& a : v[0].places)
         for (const auto& b : v[1].places) {
             const bool is_apart = set.count({a.id, b.id}) == 1;
             if (a.kind == g::PlaceKind::face || b.kind == g::PlaceKind::face) {
-                CHECK(!is_apart);
+                CAPTURE(a.id.value);
+                CAPTURE(b.id.value);
+                for (const auto* f : {&a, &b})
+                    if (f->kind == g::PlaceKind::face) CHECK(in_covers(*f, f->points.front()[0]));
+                if (!is_apart) continue;
+                ++faces_apart;
+                // The face's own sample is not where the other place is.
+                const g::Place& face = a.kind == g::PlaceKind::face ? a : b;
+                const g::Place& other = a.kind == g::PlaceKind::face ? b : a;
+                if (other.kind == g::PlaceKind::face) CHECK(!in_covers(other, face.points.front()[0]));
+                else
+                    for (const double y : angles(other)) CHECK(!in_covers(face, y));
                 continue;
             }
             double nearest = 10;
@@ -69,6 +88,7 @@ TEST_CASE("bridge/place_correlation: the pendulum's places in its two pairs") {
             }
         }
     CHECK(shared > 0);
+    CHECK(faces_apart > 0);
     // A vocabulary against itself: every line and join overlaps itself.
     for (const auto& [x, y] : bridge::places_apart(v[0], 0, r[0].cspace.axes[0], v[0], 0, r[0].cspace.axes[0])) CHECK(x != y);
     // Axes that differ are not compared.
