@@ -129,18 +129,39 @@ private:
         // those every collision's outcome allows.
         next_.assign(n, 0);
         fixes_.assign(n, 0);
-        reach_.assign(n, true);  // a colliding part's reach is not asked (settling.rules: no-collision only)
+        reach_.assign(n, true);
         for (std::size_t i = 0; i < arrivals.size(); ++i) {
             const auto [a, b] = parts_[arrivals[i].pair];
             fixes_[a] |= ChainTables::bit(branch[i].s[0]);
             fixes_[b] |= ChainTables::bit(branch[i].s[1]);
         }
-        for (std::size_t o = 0; o < n; ++o)
-            if (fixes_[o] != 0) next_[o] = allowed_next(o);
-        // Per other object, whether some state with these places gives it a motion the step allows
-        // it while each part a collision fixes moves as fixed and each other part whose motion the
-        // step does not allow takes one it allows or stays as it is.
         const auto has = [](std::uint8_t mask, std::int8_t m) { return (mask >> (m + 1) & 1U) != 0; };
+        // Whether some state with these places lets every colliding part move as its collisions
+        // fix it, each other part whose motion the step does not allow taking one it allows or
+        // staying as it is: the colliding parts' reach.
+        if (!arrivals.empty()) {
+            bool collision_reach = false;
+            for (const StateId id : at) {
+                const auto& t = states_[id].motions;
+                bool ok = true;
+                for (std::size_t p = 0; p < n && ok; ++p) {
+                    if (fixes_[p] != 0) ok = fixes_[p] == ChainTables::bit(t[p]);
+                    else if (!has(allowed_[p], current_.motions[p])) ok = has(allowed_[p], t[p]) || t[p] == current_.motions[p];
+                }
+                if (ok) {
+                    collision_reach = true;
+                    break;
+                }
+            }
+            for (std::size_t o = 0; o < n; ++o)
+                if (fixes_[o] != 0) {
+                    reach_[o] = collision_reach;
+                    next_[o] = allowed_next(o);
+                }
+        }
+        // Per other object, whether some state with these places gives it a motion the step allows
+        // it while each part a collision fixes moves as the laws then allow and each other part
+        // whose motion the step does not allow takes one it allows or stays as it is.
         for (std::size_t o = 0; o < n; ++o) {
             if (fixes_[o] != 0) continue;
             reach_[o] = false;
@@ -161,7 +182,7 @@ private:
         }
         for (std::size_t o = 0; o < n; ++o) {
             if (fixes_[o] == 0) next_[o] = allowed_next(o);
-            if (next_[o] == 0) return;  // no motion of o can follow (e.g. two collisions that disagree: 5.3.3)
+            if (next_[o] == 0) return;  // the laws leave o no motion after this step
         }
         if (target_) {
             const State& t = states_[*target_];

@@ -198,13 +198,13 @@ inline std::set<Edge> Checker::successors(const Key& s, const std::set<Key>& all
                     }
                     return;
                 }
-                std::vector<std::optional<std::int8_t>> fixed(n);
+                // The motions the branch's collisions give each part (several where two collisions
+                // meet it).
+                std::vector<std::set<std::int8_t>> fixed(n);
                 for (std::size_t c = 0; c < changed.size(); ++c) {
                     const auto [a, b] = ends_[changed[c].first];
-                    for (const auto& [o, x] : {std::pair{a, branch[c].s[0]}, std::pair{b, branch[c].s[1]}}) {
-                        if (fixed[o] && *fixed[o] != x) return;
-                        fixed[o] = x;
-                    }
+                    fixed[a].insert(branch[c].s[0]);
+                    fixed[b].insert(branch[c].s[1]);
                 }
                 bool wraps = false;
                 std::uint8_t causes = static_cast<std::uint8_t>(st.cause | (changed.empty() ? 0 : 4));
@@ -218,6 +218,24 @@ inline std::set<Edge> Checker::successors(const Key& s, const std::set<Key>& all
                 // parts as the collision fixes them, the other parts that must change changing or
                 // staying) cannot move: it stays as it is, and the others go on.
                 auto allows = [&](std::size_t o, std::int8_t m) { return std::find(st.motions[o].begin(), st.motions[o].end(), m) != st.motions[o].end(); };
+                auto must_change = [&](std::size_t o) { return !allows(o, s.motions[o]); };
+                // 8.3.4: where no state at these places lets every colliding part move as its
+                // collisions give it (the others that must change changing or staying), each keeps
+                // its outcome or stops, the nearest preferred.
+                bool collision_reach = false;
+                for (const Key& t : all) {
+                    if (t.places != target || collision_reach) continue;
+                    bool ok = true;
+                    for (std::size_t p = 0; p < n && ok; ++p) {
+                        if (!fixed[p].empty()) ok = fixed[p] == std::set<std::int8_t>{t.motions[p]};
+                        else if (must_change(p)) ok = allows(p, t.motions[p]) || t.motions[p] == s.motions[p];
+                    }
+                    collision_reach = ok;
+                }
+                auto collided_ok = [&](std::size_t o, std::int8_t m) {
+                    if (fixed[o] == std::set<std::int8_t>{m}) return true;
+                    return !collision_reach && m == 0;
+                };
                 std::vector<bool> reach(n, false);
                 for (const Key& t : all) {
                     if (t.places != target) continue;
@@ -226,8 +244,8 @@ inline std::set<Edge> Checker::successors(const Key& s, const std::set<Key>& all
                         bool others = true;
                         for (std::size_t p = 0; p < n; ++p) {
                             if (p == o) continue;
-                            if (fixed[p]) others = others && t.motions[p] == *fixed[p];
-                            else if (!allows(p, s.motions[p])) others = others && (allows(p, t.motions[p]) || t.motions[p] == s.motions[p]);
+                            if (!fixed[p].empty()) others = others && collided_ok(p, t.motions[p]);
+                            else if (must_change(p)) others = others && (allows(p, t.motions[p]) || t.motions[p] == s.motions[p]);
                         }
                         reach[o] = reach[o] || others;
                     }
@@ -242,8 +260,14 @@ inline std::set<Edge> Checker::successors(const Key& s, const std::set<Key>& all
                         const auto& opts = st.motions[o];
                         const bool in = std::find(opts.begin(), opts.end(), t.motions[o]) != opts.end();
                         const bool must = std::find(opts.begin(), opts.end(), s.motions[o]) == opts.end();
-                        if (fixed[o]) ok = t.motions[o] == *fixed[o];
-                        else if (must && !reach[o]) ok = t.motions[o] == s.motions[o];
+                        if (!fixed[o].empty()) {
+                            ok = collided_ok(o, t.motions[o]);
+                            if (ok && !collision_reach) {  // its outcome or rest: the preference chooses
+                                int best = 3;
+                                for (const auto y : opts) best = std::min(best, detail::rank(y, t.motions[o]));
+                                r.push_back(best);
+                            }
+                        } else if (must && !reach[o]) ok = t.motions[o] == s.motions[o];
                         else if (must) ok = in;
                         else {
                             int best = 3;
