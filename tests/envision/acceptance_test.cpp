@@ -16,6 +16,7 @@
 #include "envision/chain.hpp"
 #include "envision_fixture.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -351,6 +352,16 @@ TEST_CASE("envision/acceptance: a part held at rest leaves the others to start (
         CHECK(s.c.states[r].motions == std::vector<std::int8_t>{0, 0});
         CHECK(touching(place_of(s, r)));
     }
+    // #10: a corner of the pallets in a notch of the wheel (a concave join), the spring turning the
+    // wheel clockwise and gravity the pallets counter-clockwise, each against a flank: the contacts
+    // may balance them (a rigid-body simulation comes to rest there for some masses), or the two
+    // start clockwise at once.
+    const auto& ten = s.c.states[StateId{10}];
+    REQUIRE(place_of(s, StateId{10}).kind == geometry::PlaceKind::join);
+    REQUIRE(place_of(s, StateId{10}).concave == true);
+    REQUIRE(ten.motions == std::vector<std::int8_t>{0, 0});
+    CHECK(std::count(s.c.graph.possible_rests.begin(), s.c.graph.possible_rests.end(), StateId{10}) == 1);
+    CHECK(has_transition(s.c, StateId{10}, StateId{8}, Cause::dynamic));
 }
 
 TEST_CASE("envision/acceptance: without its return force the follower rides no cycle up or down its stroke (9.4)") {
