@@ -1,10 +1,12 @@
-// tests/envision/random_mechanisms_test.cpp: the envisionment's invariants (envision/verify.hpp) on
+// tests/envision/random_mechanisms_test.cpp: the envisionment's invariants (envision/verify.hpp, and
+// independently tests/envision/invariants.hpp) on
 // seeded random mechanisms, as a user might draw them: a random polygon turning on a pivot, against
 // a random polygon that slides towards it or swings on a pivot beside it, with or without a motor,
 // a spring or gravity. Drawings whose parts never touch, or overlap as drawn, are refused by the
 // geometry (exit 2 for a user) and not counted; at least 200 others are envisioned and checked.
 #include "envision/verify.hpp"
 #include "envision_fixture.hpp"
+#include "invariants.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -85,7 +87,8 @@ TEST_CASE("random mechanisms keep the invariants: jams are jams, cycles repeat, 
             continue;
         }
         ++envisioned;
-        const auto problems = verify(*m, *e);
+        auto problems = verify(*m, *e);
+        for (auto& p : testing::invariant_problems(*m, *e)) problems.push_back("independently: " + p);
         std::string all;
         for (const auto& p : problems) all += p + "\n";
         CHECK_MESSAGE(problems.empty(), all);

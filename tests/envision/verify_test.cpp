@@ -2,6 +2,7 @@
 // bundled and test mechanism, and they catch laws that stop a chain where a part could start.
 #include "envision/verify.hpp"
 #include "envision_fixture.hpp"
+#include "invariants.hpp"
 
 #include <fstream>
 
@@ -24,6 +25,8 @@ TEST_CASE("every bundled and test mechanism keeps the invariants: jams are jams,
         const auto e = testing::envisioned(m);
         const auto problems = verify(m, e);
         CHECK_MESSAGE(problems.empty(), joined(problems));
+        const auto independent = testing::invariant_problems(m, e);
+        CHECK_MESSAGE(independent.empty(), joined(independent));
     }
 }
 
@@ -52,6 +55,9 @@ TEST_CASE("laws that keep a held part's due start stop the chain, and the invari
     const auto problems = verify(m, e);
     REQUIRE(!problems.empty());
     CHECK(joined(problems).find("state #444 scape-wheel/pallets-62 0 0 is terminal, yet nothing holds the net force - on scape-wheel") !=
+          std::string::npos);
+    // The independent reading, from the parts' geometry, sees the same.
+    CHECK(joined(testing::invariant_problems(m, e)).find("#444 scape-wheel/pallets-62 0 0 is terminal, and nothing in the geometry holds scape-wheel's net force -") !=
           std::string::npos);
 }
 
