@@ -37,6 +37,8 @@ inline constexpr const char* at = "at";                          // (at P PLACE)
 inline constexpr const char* motion = "motion";                  // (motion O M): choice set, states.rules
 inline constexpr const char* blocked_motion = "blocked-motion";  // (blocked-motion P PLACE V)
 inline constexpr const char* arrival = "arrival";                // (arrival P PLACE HOW V AFTER)
+inline constexpr const char* collision = "collision";            // (collision P PLACE V AFTER): that arrival is a collision
+inline constexpr const char* place_change = "place-change";      // (place-change HOW): reaching a place so changes it
 inline constexpr const char* step_allows = "step-allows";        // (step-allows O H): an assumption, nearness.rules
 // One object's situation in a hypothesised step, each an assumption (settling.rules).
 inline constexpr const char* step_forbids = "step-forbids";          // (step-forbids O H)
@@ -60,7 +62,7 @@ inline constexpr const char* net_force = "net-force";            // (net-force O
 inline const std::initializer_list<const char*> state_space_inputs{
     pair, pair_places, axis, clock_object, possible_motions, fixed_part, linkage, place_kind, join_kind, place_normal,
     place_normals, join_concave, join_convex, gap_place, adjacent, force_sign_at, places_apart};
-inline const std::initializer_list<const char*> state_space_outputs{at, motion, arrival};
+inline const std::initializer_list<const char*> state_space_outputs{at, motion, arrival, collision, place_change};
 inline const std::initializer_list<const char*> state_inputs{
     pair, axis, place_kind, join_kind, clock_object, fixed_part, linkage, cause, place_normal, place_normals, join_concave, join_convex, gap_place,
     adjacent, force_sign_at, constant_force, current_place, current_motion, external_force};

@@ -30,6 +30,10 @@ void ChainTables::add_arrival(std::size_t pair, geometry::PlaceId place, How how
     }
 }
 
+void ChainTables::add_collision(std::size_t pair, geometry::PlaceId place, geometry::QualDirection v, geometry::QualDirection after) {
+    collisions_.insert({pair, place.value, v, after});
+}
+
 const std::vector<geometry::QualDirection>& ChainTables::arrival(std::size_t pair, geometry::PlaceId place, How how,
                                                                  geometry::QualDirection v) const {
     static const std::vector<geometry::QualDirection> none;

@@ -8,7 +8,10 @@
 //             step given its situation in it (rules/clock/settling.rules: the motions the step
 //             allows it, its motion now, the motions the step's collisions fix, read through
 //             engine/consistency.hpp; also whether any state with the step's places gives it a
-//             motion the step allows it), with the rule that refutes each motion it may not have.
+//             motion the step allows it), with the rule that refutes each motion it may not have;
+//             and which arrivals are collisions (collision.rules: `collision`) and which ways of
+//             reaching a next place change it (transition_order.rules: `place-change`), for the
+//             causes of a transition and whether one that comes back to its state is one.
 // Ownership:  a value type.
 // Invariants: arrival(pair, place, how, v) lists the motions after, without repeats, in a fixed
 //             order; an empty list means the laws give no way on (the hypothesis is dropped).
@@ -18,6 +21,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <tuple>
@@ -36,6 +40,15 @@ public:
     void add_arrival(std::size_t pair, geometry::PlaceId place, How how, geometry::QualDirection v, geometry::QualDirection after);
     [[nodiscard]] const std::vector<geometry::QualDirection>& arrival(std::size_t pair, geometry::PlaceId place, How how,
                                                                       geometry::QualDirection v) const;
+    // Whether arriving at the place with motion v and going on with `after` is a collision.
+    void add_collision(std::size_t pair, geometry::PlaceId place, geometry::QualDirection v, geometry::QualDirection after);
+    [[nodiscard]] bool collision(std::size_t pair, geometry::PlaceId place, geometry::QualDirection v, geometry::QualDirection after) const {
+        return collisions_.count({pair, place.value, v, after}) != 0;
+    }
+    // Whether reaching the next place this way changes the place (a kinematic cause; a transition
+    // even back to the state it left).
+    void add_place_change(How how) { place_changes_.insert(how); }
+    [[nodiscard]] bool place_change(How how) const { return place_changes_.count(how) != 0; }
     // The rank of motion m of the chain's object o when a step allows it the motions in `allowed`
     // (allowed_mask): smaller is preferred; all 0 where the laws prefer nothing. Pre: m is -1, 0, +1.
     void set_preference_rank(std::size_t object, std::uint8_t allowed, std::int8_t m, std::int64_t rank);
@@ -76,6 +89,8 @@ public:
 private:
     static std::size_t idx(std::int8_t s) { return static_cast<std::size_t>(s + 1); }
     std::map<std::tuple<std::size_t, std::uint32_t, How, geometry::QualDirection>, std::vector<geometry::QualDirection>> arrival_;
+    std::set<std::tuple<std::size_t, std::uint32_t, geometry::QualDirection, geometry::QualDirection>> collisions_;
+    std::set<How> place_changes_;
     std::vector<std::array<std::array<std::int64_t, 3>, 8>> preference_;  // [object][allowed mask][motion]
     // [object][allowed mask][now][fixes mask][reachable][next]: 0 or 1 + an index into refuters_.
     using Next = std::array<std::uint8_t, 3>;

@@ -103,6 +103,14 @@ void read_tables(engine::Engine& e, std::span<const bridge::PairPlaces> pairs, c
         tables.add_arrival(it->second, g::PlaceId{static_cast<std::uint32_t>(read.integer(a[1]))}, *how, read.direction(a[3]),
                            read.direction(a[4]));
     });
+    read.each(v::collision, 4, [&](std::span<const engine::ValueId> a) {
+        const auto it = pair_index.find(read.symbol(a[0]));
+        if (it == pair_index.end()) return;
+        tables.add_collision(it->second, g::PlaceId{static_cast<std::uint32_t>(read.integer(a[1]))}, read.direction(a[2]), read.direction(a[3]));
+    });
+    read.each(v::place_change, 1, [&](std::span<const engine::ValueId> a) {
+        if (const auto how = how_of(read.symbol(a[0]))) tables.add_place_change(*how);
+    });
 }
 
 // Where the laws make fact f (the rule, or the item, of its first justification), for errors.

@@ -19,6 +19,7 @@ namespace {
 struct Arrival {
     std::size_t pair = 0;
     std::vector<g::QualDirection> after;
+    std::vector<bool> collision;  // per after: the laws call it a collision (collision.rules)
 };
 
 class Builder {
@@ -79,14 +80,21 @@ private:
         // Each pair's arrival with each motion the step allows its parts.
         std::vector<Arrival> arrivals;
         for (std::size_t p = 0; p < chosen.size(); ++p) {
-            Arrival a{p, {}};
+            Arrival a{p, {}, {}};
             bool unchanged = true;
             for (const auto ma : s.motions[parts_[p].first])
                 for (const auto mb : s.motions[parts_[p].second]) {
                     const g::QualDirection v{{ma, mb}};
                     for (const auto after : tables_.arrival(p, chosen[p].place, chosen[p].how, v)) {
                         unchanged = unchanged && after == v;
-                        if (std::find(a.after.begin(), a.after.end(), after) == a.after.end()) a.after.push_back(after);
+                        const bool collision = tables_.collision(p, chosen[p].place, v, after);
+                        const auto at = std::find(a.after.begin(), a.after.end(), after);
+                        if (at == a.after.end()) {
+                            a.after.push_back(after);
+                            a.collision.push_back(collision);
+                        } else if (collision) {
+                            a.collision[static_cast<std::size_t>(at - a.after.begin())] = true;
+                        }
                     }
                 }
             if (a.after.empty()) {  // the laws give no way on: no such next state
@@ -198,12 +206,18 @@ private:
                 }
             }
         }
-        bool wraps = false;
-        std::uint8_t causes = s.cause | (arrivals.empty() ? 0 : Cause::collision);
-        for (std::size_t k = 0; k < places.size(); ++k) {
-            wraps = wraps || places[k].how == How::wrap;
-            if (places[k].place != current_.places[k] || places[k].how == How::wrap) causes |= Cause::kinematic;
+        // The causes the laws give: the step's, a collision where an arrival is one, a change of
+        // place where an option is one; a hypothesis with no change of place that comes back to
+        // the state it left is no transition.
+        bool changes_place = false;
+        std::uint8_t causes = s.cause;
+        for (std::size_t i = 0; i < arrivals.size(); ++i) {
+            const auto& a = arrivals[i];
+            const auto at = std::find(a.after.begin(), a.after.end(), branch[i]);
+            if (a.collision[static_cast<std::size_t>(at - a.after.begin())]) causes |= Cause::collision;
         }
+        for (const auto& p : places) changes_place = changes_place || tables_.place_change(p.how);
+        if (changes_place) causes |= Cause::kinematic;
         std::vector<StateId> candidates;
         std::vector<std::vector<std::int64_t>> ranks;
         for (const StateId id : at) {
@@ -226,7 +240,7 @@ private:
             return;
         }
         for (const std::size_t i : atms::pareto_front(ranks)) {
-            if (candidates[i] == from_ && !wraps) continue;  // nothing happens: no transition
+            if (candidates[i] == from_ && !changes_place) continue;  // nothing happens: no transition
             found_[{candidates[i], s.duration}] |= causes;
         }
     }

@@ -13,10 +13,13 @@
 //             the motions the step allows it; also read once per chain into ChainTables and applied
 //             here by lookup: the Pareto front, atms/pareto_front.hpp); a hypothesis that matches no
 //             generated state is dropped (8.3.5). This file holds no law: it decides no rank,
-//             threshold, order of motions, nor which motion may follow which. The combination that
-//             changes nothing is no transition, unless some pair wraps round a periodic axis: then
-//             the state has a transition to itself over an interval. A step that another preempts
-//             (Law 4: the laws' `preempts`) gives its transitions only if that one gives none.
+//             threshold, order of motions, nor which motion may follow which. A transition's causes
+//             are its step's, a collision where the laws call an arrival one (`collision`), and a
+//             kinematic one where a pair reaches its next place in a way the laws call a change of
+//             place (`place-change`); a hypothesis that comes back to the state it left is a
+//             transition only with such a change (a wheel round a periodic axis). A step that
+//             another preempts (Law 4: the laws' `preempts`) gives its transitions only if that one
+//             gives none.
 // Ownership:  value types.
 // Invariants: one transition per (target, duration), its causes the union of those found; sorted
 //             by target, then duration.

@@ -34,7 +34,51 @@ std::set<Edge> edges(const ChainEnvisionment& c, bool collisions) {
     return out;
 }
 
+// rules/clock/ copied into a fresh folder, with each text `from` in file `file` replaced by `to`.
+fs::path laws_edited(const std::string& name, const std::string& file, const std::string& from, const std::string& to) {
+    const fs::path dir = laws_without(name, {});
+    std::ifstream in(dir / file);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    in.close();
+    const auto at = text.find(from);
+    REQUIRE_MESSAGE(at != std::string::npos, from);
+    text.replace(at, from.size(), to);
+    std::ofstream(dir / file) << text;
+    return dir;
+}
+
 }  // namespace
+
+TEST_CASE("envision/laws: which changes of place make a transition, and which arrivals are collisions, are the laws'") {
+    // Without (place-change wrap) a gear pair turning round its one place (a face that wraps both
+    // axes) has no transition to itself; without the collision law's (collision ...) no escapement
+    // transition is caused by one; nothing else changes.
+    const auto gears = mechanism("scenarios/clock/gear_pair.def");
+    const auto& turning = envisioned_once("scenarios/clock/gear_pair.def");
+    EnvisionOptions o;
+    o.rules = laws_edited("no-wrap-change", "transition_order.rules", "fact (place-change wrap)", "");
+    const auto no_wrap = envisioned(gears, o);
+    std::size_t loops = 0;
+    std::set<Edge> without_loops;
+    for (const auto& t : turning.chains.at(0).transitions) {
+        loops += t.from == t.to;
+        if (t.from != t.to) without_loops.insert({t.from.value, t.to.value, t.duration});
+    }
+    REQUIRE(loops > 0);
+    std::set<Edge> all_b;
+    for (const auto& t : no_wrap.chains.at(0).transitions) all_b.insert({t.from.value, t.to.value, t.duration});
+    CHECK(all_b == without_loops);
+    const auto m = mechanism("scenarios/clock/escapement.def");
+    const auto& a = envisioned_once("scenarios/clock/escapement.def").chains.at(0);
+    o.rules = laws_edited("no-collision-cause", "collision.rules", "(arrival ?p ?place move ?v ?after) (collision ?p ?place ?v ?after)",
+                          "(arrival ?p ?place move ?v ?after)");
+    const auto no_cause = envisioned(m, o);
+    const auto& c = no_cause.chains.at(0);
+    CHECK(edges(c, true).empty());
+    std::set<Edge> all_a = edges(a, true), all_c = edges(c, false);
+    for (const auto& e : edges(a, false)) all_a.insert(e);
+    CHECK(all_a == all_c);
+}
 
 TEST_CASE("envision/laws: deleting the collision law removes the escapement's collisions and nothing else") {
     const auto m = mechanism("scenarios/metric/escapement.def");
