@@ -62,6 +62,14 @@ public:
             out.text += (out.text.empty() ? "" : " ") + w.text;
             DescriptionTerm t;
             const std::string& x = w.text;
+            if (x == "terminal" || x == "rest" || x == "cycle" || x == "transient") {
+                t.kind = x == "terminal" ? DescriptionTerm::Kind::terminal
+                         : x == "rest"   ? DescriptionTerm::Kind::rest
+                         : x == "cycle"  ? DescriptionTerm::Kind::cycle
+                                         : DescriptionTerm::Kind::transient;
+                out.terms.push_back(t);
+                continue;
+            }
             if (x.front() == '#') {
                 const auto id = number(x.substr(1));
                 if (!id) return error(w.column, "expected a state id after '#', not '" + x + "'");
@@ -109,7 +117,7 @@ public:
             const auto dash = x.rfind('-');
             const auto place = dash == std::string::npos ? std::nullopt : number(x.substr(dash + 1));
             if (!place || x.find('/') == std::string::npos)
-                return error(w.column, "expected PAIR-PLACE, PAIR:KIND, PART=MOTION or #ID, not '" + x + "'");
+                return error(w.column, "expected PAIR-PLACE, PAIR:KIND, PART=MOTION, #ID, terminal, rest, cycle or transient, not '" + x + "'");
             auto where = pair_of(x.substr(0, dash));
             if (!where) return error(w.column, "unknown pair '" + x.substr(0, dash) + "'");
             if (!same_chain(where->first)) return error(w.column, "pair '" + x.substr(0, dash) + "' is in another chain than the terms before it");
@@ -172,10 +180,17 @@ std::vector<bool> reachable_from(const ChainEnvisionment& c, StateId from) {
 
 bool matches(const Envisionment& e, const ChainEnvisionment& c, StateId s, const StateDescription& d) {
     const State& state = c.states[s];
+    const auto in = [s](const std::vector<StateId>& sorted) { return std::binary_search(sorted.begin(), sorted.end(), s); };
     for (const auto& t : d.terms) {
         bool ok = true;
         switch (t.kind) {
             case DescriptionTerm::Kind::state: ok = s.value == t.value; break;
+            case DescriptionTerm::Kind::terminal: ok = in(c.graph.terminal); break;
+            case DescriptionTerm::Kind::rest: ok = in(c.graph.terminal) || in(c.graph.possible_rests); break;
+            case DescriptionTerm::Kind::cycle: ok = std::any_of(c.graph.cycles.begin(), c.graph.cycles.end(), in); break;
+            case DescriptionTerm::Kind::transient:
+                ok = std::any_of(c.graph.transient.begin(), c.graph.transient.end(), [&](const TransientCycle& x) { return in(x.states); });
+                break;
             case DescriptionTerm::Kind::motion: ok = state.motions[t.index] == t.motion; break;
             case DescriptionTerm::Kind::place: ok = state.places[t.index].value == t.value; break;
             default: {

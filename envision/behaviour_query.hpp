@@ -6,7 +6,9 @@
 //               separated by `;`, each a conjunction of terms: `PAIR-PLACE` (that place), `PAIR:KIND`
 //               (a place of that kind: cseg, join, fsd, external-division, face, stop; `contact`: a
 //               place with a normal, the parts touching; `free`: one without), `PART=+|0|-` (a
-//               motion), `#ID` (that state);
+//               motion), `#ID` (that state), and the state's part in the graph: `terminal` (no
+//               transition out), `rest` (behaviour may end there: terminal or a possible rest),
+//               `cycle` (on a behavioural cycle), `transient` (on a transient cycle);
 //             - find_behaviour(): the shortest path whose states match the descriptions in order
 //               (a state may match several in a row), avoiding states that match any of `avoid`;
 //               or, when there is none, how far it gets: the descriptions matched, and the last
@@ -23,7 +25,7 @@
 namespace qm::envision {
 
 struct DescriptionTerm {
-    enum class Kind : std::uint8_t { place, place_kind, contact, free, motion, state } kind = Kind::place;
+    enum class Kind : std::uint8_t { place, place_kind, contact, free, motion, state, terminal, rest, cycle, transient } kind = Kind::place;
     std::size_t index = 0;        // the pair (place terms) or the object (motion) in the chain
     std::uint32_t value = 0;      // place id, or state id
     geometry::PlaceKind place_kind = geometry::PlaceKind::face;

@@ -115,9 +115,48 @@ TEST_CASE("envision/behaviour_query: descriptions by kind and motion, avoided st
              {"ratchet-wheel/pawl-999", "--path:1:1: error: pair 'ratchet-wheel/pawl' has no place 999"},
              {"pawl=+ ; ; pawl=-", "--path:1:1: error: expected a state description"},
              {"#99999", "no state 99999"},
-             {"bogus", "--path:1:1: error: expected PAIR-PLACE, PAIR:KIND, PART=MOTION or #ID, not 'bogus'"}}) {
+             {"bogus", "--path:1:1: error: expected PAIR-PLACE, PAIR:KIND, PART=MOTION, #ID, terminal, rest, cycle or transient, not 'bogus'"}}) {
         Diagnostics bad;
         CHECK(!parse_behaviour(e, text, "--path", {}, bad).has_value());
         CHECK_MESSAGE(printed(bad).find(message) != std::string::npos, printed(bad));
     }
+}
+
+TEST_CASE("envision/behaviour_query: terms for where behaviour ends and for cycles match the graph's own lists") {
+    const auto& e = envisioned_once("scenarios/clock/cam_free.def");
+    const auto& c = e.chains.at(0);
+    auto set_of = [&](const std::string& text) {
+        Diagnostics d;
+        const auto b = parse_behaviour(e, text, "--path", {}, d);
+        REQUIRE_MESSAGE(b.has_value(), printed(d));
+        std::set<std::uint32_t> out;
+        for (std::uint32_t s = 0; s < c.states.size(); ++s)
+            if (matches(e, c, StateId{s}, b->steps.at(0))) out.insert(s);
+        return out;
+    };
+    std::set<std::uint32_t> terminal, rest, cycle, transient;
+    for (const auto s : c.graph.terminal) terminal.insert(s.value), rest.insert(s.value);
+    for (const auto s : c.graph.possible_rests) rest.insert(s.value);
+    for (const auto& x : c.graph.cycles)
+        for (const auto s : x) cycle.insert(s.value);
+    for (const auto& x : c.graph.transient)
+        for (const auto s : x.states) transient.insert(s.value);
+    REQUIRE(!cycle.empty());
+    REQUIRE(!transient.empty());
+    CHECK(set_of("terminal") == terminal);
+    CHECK(set_of("rest") == rest);
+    CHECK(set_of("cycle") == cycle);
+    CHECK(set_of("transient") == transient);
+    // A conjunction narrows them.
+    std::set<std::uint32_t> still;
+    for (const auto s : transient)
+        if (c.states[StateId{s}].motions[0] == 1) still.insert(s);
+    CHECK(set_of("transient cam=+") == still);
+    const auto& r = envisioned_once("scenarios/clock/ratchet.def");
+    Diagnostics d;
+    const auto b = parse_behaviour(r, "ratchet-wheel/pawl:free ratchet-wheel=0 pawl=0 ; terminal", "--path", {}, d);
+    REQUIRE(b.has_value());
+    const auto a = find_behaviour(r, *b);
+    REQUIRE(!a.path.empty());
+    CHECK(std::binary_search(r.chains[0].graph.terminal.begin(), r.chains[0].graph.terminal.end(), a.path.back()));
 }
