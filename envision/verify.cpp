@@ -72,23 +72,34 @@ public:
     }
 
 private:
-    // Whether o's motion along its force, with its shaft-mates', is into blocked space at a place.
+    // Whether o's motion along its force, with its shaft-mates', is into blocked space at a place,
+    // alone, or together with the pair's other part moving along its own definite force where that
+    // part alone is free (two parts pressed into each other at their contact).
     [[nodiscard]] bool held(const State& s, std::size_t o) const {
         const g::PartId part = c_.chain.objects[o];
         for (std::size_t k = 0; k < c_.chain.pairs.size(); ++k) {
             const auto& p = e_.pairs[c_.chain.pairs[k]];
-            g::QualDirection v{{0, 0}};
+            g::QualDirection v{{0, 0}}, both{{0, 0}};
             bool touches = false;
             for (std::size_t i = 0; i < 2; ++i) {
                 const g::PartId x = i == 0 ? p.spec.a : p.spec.b;
                 if (x == part || m_.same_shaft(x, part)) {
-                    v.s[i] = s.net_force[o];
+                    v.s[i] = both.s[i] = s.net_force[o];
                     touches = true;
+                } else if (const std::size_t other = c_.chain.object_index(x); other < s.net_force.size() &&
+                                                                              (s.net_force[other] == 1 || s.net_force[other] == -1)) {
+                    both.s[i] = s.net_force[other];
                 }
             }
             if (!touches) continue;
-            const g::Adjacency* a = adjacency(p, s.places[k], v);
-            if (a && a->constrained) return true;
+            const auto blocked = [&](g::QualDirection w) {
+                const g::Adjacency* a = adjacency(p, s.places[k], w);
+                return a && a->constrained;
+            };
+            if (blocked(v)) return true;
+            // Pressed together: each free to go its own way alone, not both at once.
+            const g::QualDirection other{{static_cast<std::int8_t>(both.s[0] - v.s[0]), static_cast<std::int8_t>(both.s[1] - v.s[1])}};
+            if (other != g::QualDirection{{0, 0}} && blocked(both) && !blocked(other)) return true;
         }
         return false;
     }

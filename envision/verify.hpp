@@ -4,7 +4,9 @@
 //             laws that produced it (`envision --verify`, and the tests on every mechanism):
 //             - a terminal state is a jam: every part still, and every part's definite net force
 //               held, its motion along that force (alone, or with the parts on its shaft) into
-//               blocked space at some pair's place (Law 2: the adjacency marks it constrained);
+//               blocked space at some pair's place (Law 2: the adjacency marks it constrained),
+//               or with the pair's other part moving along its own definite force where that part
+//               alone is free (the two pressed into each other at their contact);
 //             - a state in which some part moves has a transition: a pair's motion that its place
 //               does not block leads to a next place (the adjacency has one) or the state changes;
 //             - a behavioural cycle can repeat: no part whose coordinate is bounded (an axis that is

@@ -272,16 +272,26 @@ void Builder::emit_divisions() {
     }
 }
 
+std::array<std::vector<double>, 2> Builder::feature_coordinates() const {
+    std::array<std::vector<double>, 2> out;
+    for (const auto& d : divisions) out[static_cast<std::size_t>(1 - d.axis)].push_back(d.start[1 - d.axis]);
+    for (const auto& p : v.places)
+        if (p.kind == PlaceKind::join)
+            for (std::size_t k = 0; k < 2; ++k) out[k].push_back(p.points.front()[static_cast<Eigen::Index>(k)]);
+    return out;
+}
+
 }  // namespace qm::geometry::detail
 
 namespace qm::geometry {
 namespace {
 
-// The values of an axis' coordinate that a face covering the samples marked in `rows` spans: each
-// run of samples, widened by two steps either side (a face reaches its boundary between samples).
-std::vector<Span> covered_values(const CSpaceAxis& axis, const std::vector<bool>& rows) {
+// The values of axis k's coordinate that a face covering the grid lines marked in `rows` spans:
+// each run of lines, widened by two steps either side (a face reaches its boundary between samples).
+std::vector<Span> covered_values(const detail::FaceGrid& grid, int k, const std::vector<bool>& rows) {
     std::vector<Span> out;
-    const int n = axis.samples;
+    const auto& axis = grid.request().axes[static_cast<std::size_t>(k)];
+    const int n = grid.size(k);
     const double wide = 2 * axis.step();
     if (std::all_of(rows.begin(), rows.end(), [](bool x) { return x; })) return {{axis.lo, axis.hi}};
     for (int a = 0; a < n;) {
@@ -291,7 +301,7 @@ std::vector<Span> covered_values(const CSpaceAxis& axis, const std::vector<bool>
         }
         int b = a;
         while (b + 1 < n && rows[static_cast<std::size_t>(b + 1)]) ++b;
-        out.push_back({axis.sample(a) - wide, axis.sample(b) + wide});
+        out.push_back({grid.coordinate(k, a) - wide, grid.coordinate(k, b) + wide});
         a = b + 1;
     }
     return out;
@@ -327,7 +337,8 @@ PlaceResult build_place_vocabulary(const PairOracle& oracle, const PlaceRequest&
     b.emit_csegs();
     b.emit_divisions();
     b.add_stops();
-    detail::FaceLocator faces(out.space, b.divisions, b.barriers_at_joins());
+    const detail::FaceGrid grid(oracle, out.space, b.feature_coordinates());
+    detail::FaceLocator faces(grid, b.divisions, b.barriers_at_joins());
     const int n_faces = faces.label();
     std::vector<PlaceId> face_places;
     std::vector<int> size(static_cast<std::size_t>(n_faces), 0);
@@ -336,12 +347,12 @@ PlaceResult build_place_vocabulary(const PairOracle& oracle, const PlaceRequest&
     // A face's representative sample: the one nearest the mean of its samples (for labels).
     std::vector<Eigen::Vector2d> sum(static_cast<std::size_t>(n_faces), Eigen::Vector2d::Zero());
     for (int pass = 0; pass < 2; ++pass)
-        for (int j = 0; j < r.axes[1].samples; ++j)
-            for (int i = 0; i < r.axes[0].samples; ++i) {
+        for (int j = 0; j < grid.size(1); ++j)
+            for (int i = 0; i < grid.size(0); ++i) {
                 const int f = faces.face_of_sample(i, j);
                 if (f < 0) continue;
                 const auto fi = static_cast<std::size_t>(f);
-                const Eigen::Vector2d x(r.axes[0].sample(i), r.axes[1].sample(j));
+                const Eigen::Vector2d x = grid.point(i, j);
                 if (pass == 0) {
                     ++size[fi];
                     sum[fi] += x;
@@ -354,9 +365,9 @@ PlaceResult build_place_vocabulary(const PairOracle& oracle, const PlaceRequest&
     // (Def 34: pairs sharing a part correlate their places by these).
     std::array<std::vector<std::vector<bool>>, 2> rows;
     for (std::size_t k = 0; k < 2; ++k)
-        rows[k].assign(static_cast<std::size_t>(n_faces), std::vector<bool>(static_cast<std::size_t>(r.axes[k].samples), false));
-    for (int j = 0; j < r.axes[1].samples; ++j)
-        for (int i = 0; i < r.axes[0].samples; ++i)
+        rows[k].assign(static_cast<std::size_t>(n_faces), std::vector<bool>(static_cast<std::size_t>(grid.size(static_cast<int>(k))), false));
+    for (int j = 0; j < grid.size(1); ++j)
+        for (int i = 0; i < grid.size(0); ++i)
             if (const int f = faces.face_of_sample(i, j); f >= 0) {
                 rows[0][static_cast<std::size_t>(f)][static_cast<std::size_t>(i)] = true;
                 rows[1][static_cast<std::size_t>(f)][static_cast<std::size_t>(j)] = true;
@@ -366,11 +377,11 @@ PlaceResult build_place_vocabulary(const PairOracle& oracle, const PlaceRequest&
         p.kind = PlaceKind::face;
         p.points = {sample[static_cast<std::size_t>(f)]};
         p.extent = size[static_cast<std::size_t>(f)];
-        for (std::size_t k = 0; k < 2; ++k) p.covers[k] = covered_values(r.axes[k], rows[k][static_cast<std::size_t>(f)]);
+        for (std::size_t k = 0; k < 2; ++k) p.covers[k] = covered_values(grid, static_cast<int>(k), rows[k][static_cast<std::size_t>(f)]);
         face_places.push_back(b.add(std::move(p)));
     }
     detail::add_adjacency(oracle, r, b.lines, faces, face_places, out.vocabulary);
-    detail::collapse_gaps(oracle, out.space, faces, face_places, request.gap_epsilon, out.vocabulary);
+    detail::collapse_gaps(oracle, faces, face_places, request.gap_epsilon, out.vocabulary);
     return out;
 }
 

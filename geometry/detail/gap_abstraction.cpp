@@ -5,9 +5,11 @@
 #include "geometry/detail/place_parts.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <tuple>
 
@@ -16,86 +18,80 @@ namespace {
 
 constexpr double unbounded = std::numeric_limits<double>::infinity();
 
-// The free run through sample (i, j) along `axis`, between the blocked samples that bound it,
-// its ends bisected onto the contact boundary: the play of one part with the other held still.
-// Unbounded when the run reaches a translation limit or goes all the way round a periodic axis.
-double free_run(const PairOracle& oracle, const CSpaceResult& space, int i, int j, int axis) {
-    const auto& r = space.request;
-    const auto& ax = r.axes[static_cast<std::size_t>(axis)];
-    const int n = ax.samples;
+// The free run through sample (i, j) of the faces' grid along `axis`, between the blocked samples
+// that bound it: its lines (lo, hi), or nothing when the run reaches a translation limit or goes
+// all the way round a periodic axis (unbounded).
+std::optional<std::array<int, 2>> run_lines(const FaceGrid& grid, int i, int j, int axis) {
+    const auto& ax = grid.request().axes[static_cast<std::size_t>(axis)];
+    const int n = grid.size(axis);
     auto blocked_at = [&](int k) {
         if (ax.periodic) k = ((k % n) + n) % n;
-        return axis == 0 ? space.is_blocked(k, j) : space.is_blocked(i, k);
-    };
-    auto point = [&](int k) {  // unwrapped along the axis
-        Eigen::Vector2d q(r.axes[0].sample(i), r.axes[1].sample(j));
-        q[axis] = ax.unwrapped_sample(k);
-        return q;
+        else if (k < 0 || k >= n) return true;
+        return axis == 0 ? grid.blocked(k, j) : grid.blocked(i, k);
     };
     const int self = axis == 0 ? i : j;
     int lo = self, hi = self;
     while (!blocked_at(lo - 1)) {
         --lo;
-        if (!ax.periodic && lo == 0) return unbounded;
-        if (self - lo >= n) return unbounded;
+        if (!ax.periodic && lo == 0) return std::nullopt;
+        if (self - lo >= n) return std::nullopt;
     }
     while (!blocked_at(hi + 1)) {
         ++hi;
-        if (!ax.periodic && hi == n - 1) return unbounded;
-        if (hi - self >= n) return unbounded;
+        if (!ax.periodic && hi == n - 1) return std::nullopt;
+        if (hi - self >= n) return std::nullopt;
     }
+    return std::array<int, 2>{lo, hi};
+}
+
+// The play of one part with the other held still through sample (i, j): the free run's ends
+// bisected onto the contact boundary.
+double free_run(const PairOracle& oracle, const FaceGrid& grid, int i, int j, int axis) {
+    const auto run = run_lines(grid, i, j, axis);
+    if (!run) return unbounded;
+    auto point = [&](int k) {  // unwrapped along the axis
+        Eigen::Vector2d q = grid.point(i, j);
+        q[axis] = grid.unwrapped(axis, k);
+        return q;
+    };
     std::uint64_t calls = 0;
-    const Eigen::Vector2d a = bisect_contact(oracle, point(lo - 1), true, point(lo), r.boundary_tolerance, calls);
-    const Eigen::Vector2d b = bisect_contact(oracle, point(hi + 1), true, point(hi), r.boundary_tolerance, calls);
+    const double tol = grid.request().boundary_tolerance;
+    const Eigen::Vector2d a = bisect_contact(oracle, point((*run)[0] - 1), true, point((*run)[0]), tol, calls);
+    const Eigen::Vector2d b = bisect_contact(oracle, point((*run)[1] + 1), true, point((*run)[1]), tol, calls);
     return b[axis] - a[axis];
 }
 
 // A face's gap: the widest, over its samples, of the narrower of the two free runs through it.
-// Cheap bounds from the grid first (a run of k free samples is between (k - 1) and (k + 1)
-// steps long); bisection only when they do not decide.
-bool narrower_than(const PairOracle& oracle, const CSpaceResult& space, const std::vector<std::array<int, 2>>& samples,
-                   double epsilon) {
-    const auto& r = space.request;
-    auto run_samples = [&](int i, int j, int axis) {
-        const auto& ax = r.axes[static_cast<std::size_t>(axis)];
-        const int n = ax.samples, self = axis == 0 ? i : j;
-        auto blocked_at = [&](int k) {
-            if (ax.periodic) k = ((k % n) + n) % n;
-            else if (k < 0 || k >= n) return true;
-            return axis == 0 ? space.is_blocked(k, j) : space.is_blocked(i, k);
-        };
-        int count = 1;
-        for (int k = self - 1; !blocked_at(k) && count <= n; --k) ++count;
-        for (int k = self + 1; !blocked_at(k) && count <= n; ++k) ++count;
-        return count;
-    };
+// Cheap bounds from the grid first (a run from line lo to line hi is longer than the lines' span
+// and shorter than that of the blocked lines either side); bisection only when they do not decide.
+bool narrower_than(const PairOracle& oracle, const FaceGrid& grid, const std::vector<std::array<int, 2>>& samples, double epsilon) {
     bool undecided = false;
     for (const auto& [i, j] : samples) {
         double upper = unbounded, lower = unbounded;
         for (int axis = 0; axis < 2; ++axis) {
-            const double step = r.axes[static_cast<std::size_t>(axis)].step();
-            const int k = run_samples(i, j, axis);
-            upper = std::min(upper, (k + 1) * step);
-            lower = std::min(lower, (k - 1) * step);
+            const auto run = run_lines(grid, i, j, axis);
+            if (!run) continue;
+            upper = std::min(upper, grid.unwrapped(axis, (*run)[1] + 1) - grid.unwrapped(axis, (*run)[0] - 1));
+            lower = std::min(lower, grid.unwrapped(axis, (*run)[1]) - grid.unwrapped(axis, (*run)[0]));
         }
         if (lower >= epsilon) return false;
         undecided = undecided || upper >= epsilon;
     }
     if (!undecided) return true;
     for (const auto& [i, j] : samples)
-        if (std::min(free_run(oracle, space, i, j, 0), free_run(oracle, space, i, j, 1)) >= epsilon) return false;
+        if (std::min(free_run(oracle, grid, i, j, 0), free_run(oracle, grid, i, j, 1)) >= epsilon) return false;
     return true;
 }
 
 }  // namespace
 
-void collapse_gaps(const PairOracle& oracle, const CSpaceResult& space, const FaceLocator& faces,
-                   const std::vector<PlaceId>& face_places, double epsilon, PlaceVocabulary& v) {
+void collapse_gaps(const PairOracle& oracle, const FaceLocator& faces, const std::vector<PlaceId>& face_places, double epsilon,
+                   PlaceVocabulary& v) {
     if (!(epsilon > 0)) return;
-    const auto& r = space.request;
+    const FaceGrid& grid = faces.grid();
     std::vector<std::vector<std::array<int, 2>>> samples(face_places.size());
-    for (int j = 0; j < r.axes[1].samples; ++j)
-        for (int i = 0; i < r.axes[0].samples; ++i)
+    for (int j = 0; j < grid.size(1); ++j)
+        for (int i = 0; i < grid.size(0); ++i)
             if (const int f = faces.face_of_sample(i, j); f >= 0) samples[static_cast<std::size_t>(f)].push_back({i, j});
     // Members of each collapsed gap: the face, the CSEGs whose free side it is, then the joins
     // and divisions that lead only to those.
@@ -103,7 +99,7 @@ void collapse_gaps(const PairOracle& oracle, const CSpaceResult& space, const Fa
     int groups = 0;
     std::vector<PlaceId> group_face;
     for (std::size_t f = 0; f < face_places.size(); ++f) {
-        if (!narrower_than(oracle, space, samples[f], epsilon)) continue;
+        if (!narrower_than(oracle, grid, samples[f], epsilon)) continue;
         const PlaceId face = face_places[f];
         group[face.value] = groups;
         for (const auto& a : v.adjacency)

@@ -104,6 +104,10 @@ struct Builder {
     void end_on_boundary(Division& d, double t, JoinKind kind);
     void cross_divisions();
     [[nodiscard]] std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> barriers_at_joins() const;
+    // Where along each axis the free space may be divided: the divisions' lines and the joins
+    // (where a CSEG turns back along an axis its normal changes, so its turning points are joins
+    // too): for the faces' grid, FaceGrid.
+    [[nodiscard]] std::array<std::vector<double>, 2> feature_coordinates() const;
     void add_stops();
     void emit_csegs();
     void emit_divisions();

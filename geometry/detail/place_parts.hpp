@@ -7,6 +7,7 @@
 #include "geometry/cspace.hpp"
 #include "geometry/pair_oracle.hpp"
 #include "geometry/place_vocabulary.hpp"
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -44,22 +45,60 @@ struct LineInfo {
 // reach this much further.
 inline constexpr double on_line_cells = 1e-6;
 
+// The grid the faces are found on: the configuration space's samples plus, along each axis, a
+// line between every two neighbouring feature coordinates (divisions, joins) closer than a step,
+// so that a strip thinner than a grid step (two divisions close together, a division just past a
+// corner's peak) has samples of its own, wherever the drawing lies on the grid.
+class FaceGrid {
+public:
+    // `features[k]`: coordinates along axis k where the free space may be divided.
+    FaceGrid(const PairOracle& oracle, const CSpaceResult& space, const std::array<std::vector<double>, 2>& features);
+    [[nodiscard]] const CSpaceRequest& request() const noexcept { return space_.request; }
+    [[nodiscard]] int size(int k) const noexcept { return static_cast<int>(at_[static_cast<std::size_t>(k)].size()); }
+    // Line i of axis k; on a periodic axis line size(k) is hi (the first, a period on).
+    [[nodiscard]] double coordinate(int k, int i) const noexcept;
+    // Line i of a periodic axis counted on past its ends; coordinate(k, i) on a translation axis.
+    [[nodiscard]] double unwrapped(int k, int i) const noexcept;
+    // The last line at or below x (x within the axis, wrapped on a periodic one); -1 below lo.
+    [[nodiscard]] int below(int k, double x) const noexcept;
+    [[nodiscard]] bool blocked(int i, int j) const { return blocked_[static_cast<std::size_t>(i + size(0) * j)] != 0; }
+    [[nodiscard]] Eigen::Vector2d point(int i, int j) const { return {coordinate(0, i), coordinate(1, j)}; }
+    // Whether line i of axis k is one of the configuration space's own samples (not inserted).
+    [[nodiscard]] bool sampled(int k, int i) const { return !inserted_[static_cast<std::size_t>(k)][static_cast<std::size_t>(i)]; }
+    // The uniform grid's step along axis k (tolerances are measured in it).
+    [[nodiscard]] double step(int k) const noexcept { return space_.request.axes[static_cast<std::size_t>(k)].step(); }
+
+private:
+    const CSpaceResult& space_;
+    std::array<std::vector<double>, 2> at_;
+    std::array<std::vector<bool>, 2> inserted_;
+    std::vector<std::uint8_t> blocked_;
+};
+
 class FaceLocator {
 public:
     // `barriers` are segments (start, start to end) of the boundary next to its normal-change
     // joins, which grid edges between free samples must not cross (cut_along).
-    FaceLocator(const CSpaceResult& space, const std::vector<Division>& divisions,
+    FaceLocator(const FaceGrid& grid, const std::vector<Division>& divisions,
                 const std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>>& barriers);
     // Labels the faces; returns the number of faces. face_of_sample() is valid afterwards.
     int label();
-    [[nodiscard]] std::optional<int> face_at(const Eigen::Vector2d& q) const;
+    // The face of the nearest sample to q on its side of every division; `sampled_only`: among
+    // the configuration space's own samples (a probe from a join: the lines inserted between
+    // close features lie too near the boundary to say which side a join's neighbourhood is on).
+    [[nodiscard]] std::optional<int> face_at(const Eigen::Vector2d& q, bool sampled_only = false) const;
+    // Does the segment from a to b cross a division? `leaving`: not counting a division a lies on.
+    [[nodiscard]] bool crosses_division(const Eigen::Vector2d& a, const Eigen::Vector2d& b, bool leaving) const;
+    // Where the segment from a to b first crosses a division, if it does (one a lies on, it leaves).
+    [[nodiscard]] std::optional<Eigen::Vector2d> division_crossing(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const;
     [[nodiscard]] int face_of_sample(int i, int j) const { return face_[static_cast<std::size_t>(i + n0_ * j)]; }
+    [[nodiscard]] const FaceGrid& grid() const noexcept { return grid_; }
 
 private:
     // Does the segment from a to sample (i, j) cross a division?
     [[nodiscard]] bool crosses_division(const Eigen::Vector2d& a, int i, int j) const;
     void cut_along(const std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>>& barriers);
-    const CSpaceResult& space_;
+    const FaceGrid& grid_;
     const std::vector<Division>& divisions_;
     int n0_, n1_;
     std::vector<std::uint8_t> cut_[2];  // cut_[k][s]: edge from sample s along axis k is cut
@@ -81,7 +120,7 @@ void add_adjacency(const PairOracle& oracle, const CSpaceRequest& request, const
 // one axis or the other, i.e. the play of one part with the other held still) becomes, with the
 // CSEGs bounding it and the joins and divisions that lead only to them, one face marked `gap`;
 // transitions are renamed. Blocked space is never collapsed. No effect when epsilon is 0.
-void collapse_gaps(const PairOracle& oracle, const CSpaceResult& space, const FaceLocator& faces,
+void collapse_gaps(const PairOracle& oracle, const FaceLocator& faces,
                    const std::vector<PlaceId>& face_places, double epsilon, PlaceVocabulary& vocabulary);
 
 }  // namespace qm::geometry::detail
