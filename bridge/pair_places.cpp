@@ -86,7 +86,7 @@ std::optional<PairPlaces> pair_places(const g::Mechanism& m, const g::PairSpec& 
         const g::FclPairOracle* fcl = oracle.get();
         if (!fcl) return std::nullopt;
         auto built = g::build_place_vocabulary(*fcl, out.request);
-        if (built.status != g::PlaceStatus::ok) throw InternalError("place vocabulary: " + built.message);
+        if (built.status != g::PlaceStatus::ok) throw InternalError("place vocabulary of pair " + out.name + ": " + built.message);
         if (cache) note = g::cache_note(*cache, material, loaded, cache->store(material, built.vocabulary));
         out.vocabulary = std::move(built.vocabulary);
         if (options.space) out.space = std::move(built.space);

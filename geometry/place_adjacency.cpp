@@ -429,4 +429,26 @@ void add_adjacency(const PairOracle& oracle, const CSpaceRequest& r, const std::
     v.adjacency = std::move(out);
 }
 
+std::optional<std::string> incompleteness(const CSpaceRequest& r, const PlaceVocabulary& v) {
+    std::vector<std::vector<const Adjacency*>> from(v.places.size());
+    for (const auto& a : v.adjacency) from[a.from.value].push_back(&a);
+    for (const auto& p : v.places)
+        for (const auto d : motions()) {
+            bool any = false, elsewhere = false, constrained = false;
+            for (const Adjacency* a : from[p.id.value])
+                if (a->motion == d) {
+                    any = true;
+                    elsewhere = elsewhere || a->to != p.id;
+                    constrained = constrained || a->constrained;
+                }
+            const std::string where = "place " + std::to_string(p.id.value) + " (" + to_string(p.kind) + ") under motion " + to_string(d);
+            if (!any) return where + " has neither a next place nor a constraint";
+            bool bounded_stops = false;
+            for (std::size_t k = 0; k < 2; ++k) bounded_stops = bounded_stops || (d.s[k] != 0 && !r.axes[k].periodic && r.axes[k].stops);
+            if (!elsewhere && !constrained && bounded_stops)
+                return where + " leads only back to itself, along an axis that ends in stops";
+        }
+    return std::nullopt;
+}
+
 }  // namespace qm::geometry::detail

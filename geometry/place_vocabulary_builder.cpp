@@ -382,6 +382,11 @@ PlaceResult build_place_vocabulary(const PairOracle& oracle, const PlaceRequest&
     }
     detail::add_adjacency(oracle, r, b.lines, faces, face_places, out.vocabulary);
     detail::collapse_gaps(oracle, faces, face_places, request.gap_epsilon, out.vocabulary);
+    if (const auto why = detail::incompleteness(request.cspace, out.vocabulary)) {
+        out.status = PlaceStatus::incomplete;
+        out.message = "the grid (" + std::to_string(request.cspace.axes[0].samples) + " x " + std::to_string(request.cspace.axes[1].samples) +
+                      ") left " + *why;
+    }
     return out;
 }
 

@@ -36,7 +36,9 @@ struct PlaceRequest {
     std::vector<ExternalDivision> external;
 };
 
-enum class PlaceStatus { ok, bad_request };
+// incomplete: the built adjacency leaves some place without a next place or a constraint under
+// some motion (a fault of the builder, not of the request: an internal error for the caller).
+enum class PlaceStatus { ok, bad_request, incomplete };
 
 struct PlaceResult {
     PlaceStatus status = PlaceStatus::ok;

@@ -9,6 +9,7 @@
 #include "geometry/place_vocabulary.hpp"
 #include <array>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace qm::geometry::detail {
@@ -115,6 +116,11 @@ private:
 // Adjacency of every place under every motion direction (8.1.3); appends to vocabulary.
 void add_adjacency(const PairOracle& oracle, const CSpaceRequest& request, const std::vector<LineInfo>& lines,
                    const FaceLocator& faces, const std::vector<PlaceId>& face_places, PlaceVocabulary& vocabulary);
+
+// Why the vocabulary is incomplete, if it is: a place with neither a next place nor a constraint
+// under some motion, or a place other than a face at the end of an axis without stops that leads
+// only back to itself under a motion along a bounded axis.
+[[nodiscard]] std::optional<std::string> incompleteness(const CSpaceRequest& request, const PlaceVocabulary& vocabulary);
 
 // 8.1.6: every full face narrower than epsilon (the free run through each of its samples along
 // one axis or the other, i.e. the play of one part with the other held still) becomes, with the

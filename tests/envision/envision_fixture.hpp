@@ -69,7 +69,8 @@ inline const std::vector<std::string>& bundled() {
                                               "scenarios/clock/ratchet.def", "scenarios/clock/scotch_yoke.def",
                                               "scenarios/clock/cam.def", "scenarios/clock/cam_free.def",
                                               "scenarios/clock/gear_pair.def", "scenarios/clock/gear_train.def",
-                                              "tests/envision/scenes/pendulum_stops.def", "tests/envision/scenes/two_chains.def"};
+                                              "tests/envision/scenes/pendulum_stops.def", "tests/envision/scenes/two_chains.def",
+                                              "tests/envision/scenes/square_cam.def"};
     return all;
 }
 

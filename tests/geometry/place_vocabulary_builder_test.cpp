@@ -3,6 +3,7 @@
 // when the space is moved, scaled or turned.
 #include "geometry/closed_form_pairs.hpp"
 #include "geometry/place_vocabulary_builder.hpp"
+#include "geometry/detail/place_parts.hpp"
 
 #include <doctest/doctest.h>
 #include <algorithm>
@@ -440,4 +441,32 @@ TEST_CASE("geometry/place_vocabulary_builder: stops on two ending axes meet at t
                 CHECK(a.constrained);
     }
     CHECK(corners == 4);
+}
+
+TEST_CASE("geometry/place_vocabulary_builder: a place without a next place or a constraint under some motion is incomplete") {
+    // Every vocabulary the builder returns is complete (the box, the band, a space with stops),
+    // and the check names what a broken one lacks.
+    for (const PlaceVocabulary& v : {build_place_vocabulary(Box(0.31, 0.61, 0.41, 0.71), square(0, 1, false, 41)).vocabulary,
+                                     build_place_vocabulary(Band(0.4, 0.6), square(0, 1, true)).vocabulary})
+        CHECK(!detail::incompleteness(square(0, 1, false).cspace, v));
+    PlaceVocabulary v = build_place_vocabulary(Box(0.31, 0.61, 0.41, 0.71), square(0, 1, false, 41)).vocabulary;
+    const QualDirection up{{0, 1}};
+    const auto dropped = std::find_if(v.adjacency.begin(), v.adjacency.end(), [&](const Adjacency& a) { return a.from == PlaceId{0} && a.motion == up; });
+    REQUIRE(dropped != v.adjacency.end());
+    v.adjacency.erase(std::remove_if(v.adjacency.begin(), v.adjacency.end(), [&](const Adjacency& a) { return a.from == PlaceId{0} && a.motion == up; }),
+                      v.adjacency.end());
+    const auto why = detail::incompleteness(square(0, 1, false).cspace, v);
+    REQUIRE(why);
+    CHECK(*why == "place 0 (join) under motion (0 +) has neither a next place nor a constraint");
+    // A face that leads only back to itself along an axis ending in stops: incomplete there.
+    auto stops = square(0, 1, false);
+    stops.cspace.axes[1].stops = true;
+    PlaceVocabulary one;
+    one.places.push_back(Place{});
+    for (std::int8_t a = -1; a <= 1; ++a)
+        for (std::int8_t b = -1; b <= 1; ++b)
+            if (a != 0 || b != 0) one.adjacency.push_back({PlaceId{0}, PlaceId{0}, QualDirection{{a, b}}, false, false});
+    CHECK(detail::incompleteness(stops.cspace, one).has_value());
+    stops.cspace.axes[1].stops = false;
+    CHECK(!detail::incompleteness(stops.cspace, one));
 }
