@@ -344,14 +344,21 @@ PlaceResult build_place_vocabulary(const PairOracle& oracle, const PlaceRequest&
     std::vector<int> size(static_cast<std::size_t>(n_faces), 0);
     std::vector<Eigen::Vector2d> sample(static_cast<std::size_t>(n_faces));
     const auto& r = request.cspace;
-    // A face's representative sample: the one nearest the mean of its samples (for labels).
+    // A face's representative sample: the one nearest the mean of its samples (for labels), and
+    // its size, counted on the configuration space's own grid where the face has samples there
+    // (a strip between close features only on the lines inserted for it).
     std::vector<Eigen::Vector2d> sum(static_cast<std::size_t>(n_faces), Eigen::Vector2d::Zero());
+    std::vector<bool> sampled(static_cast<std::size_t>(n_faces), false);
+    for (int j = 0; j < grid.size(1); ++j)
+        for (int i = 0; i < grid.size(0); ++i)
+            if (const int f = faces.face_of_sample(i, j); f >= 0 && grid.sampled(0, i) && grid.sampled(1, j)) sampled[static_cast<std::size_t>(f)] = true;
     for (int pass = 0; pass < 2; ++pass)
         for (int j = 0; j < grid.size(1); ++j)
             for (int i = 0; i < grid.size(0); ++i) {
                 const int f = faces.face_of_sample(i, j);
                 if (f < 0) continue;
                 const auto fi = static_cast<std::size_t>(f);
+                if (sampled[fi] && !(grid.sampled(0, i) && grid.sampled(1, j))) continue;
                 const Eigen::Vector2d x = grid.point(i, j);
                 if (pass == 0) {
                     ++size[fi];

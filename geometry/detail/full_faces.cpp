@@ -208,13 +208,18 @@ int FaceLocator::label() {
         }
     face_.assign(static_cast<std::size_t>(total), -1);
     std::vector<int> id_of_root(static_cast<std::size_t>(total), -1);
+    // Faces numbered in the order of their first sample of the configuration space's own grid,
+    // then those only inserted lines see: the numbers do not depend on the lines inserted.
     int faces = 0;
-    for (int s = 0; s < total; ++s) {
-        if (grid_.blocked(s % n0_, s / n0_) || on_division_[static_cast<std::size_t>(s)]) continue;
-        const int root = find_root(parent, s);
-        if (id_of_root[static_cast<std::size_t>(root)] < 0) id_of_root[static_cast<std::size_t>(root)] = faces++;
-        face_[static_cast<std::size_t>(s)] = id_of_root[static_cast<std::size_t>(root)];
-    }
+    for (const bool sampled_only : {true, false})
+        for (int s = 0; s < total; ++s) {
+            const int i = s % n0_, j = s / n0_;
+            if (grid_.blocked(i, j) || on_division_[static_cast<std::size_t>(s)]) continue;
+            if (sampled_only && !(grid_.sampled(0, i) && grid_.sampled(1, j))) continue;
+            const int root = find_root(parent, s);
+            if (id_of_root[static_cast<std::size_t>(root)] < 0) id_of_root[static_cast<std::size_t>(root)] = faces++;
+            face_[static_cast<std::size_t>(s)] = id_of_root[static_cast<std::size_t>(root)];
+        }
     return faces;
 }
 
