@@ -101,6 +101,12 @@ void collapse_gaps(const PairOracle& oracle, const FaceLocator& faces, const std
     for (std::size_t f = 0; f < face_places.size(); ++f) {
         if (!narrower_than(oracle, grid, samples[f], epsilon)) continue;
         const PlaceId face = face_places[f];
+        // The play between the parts: a face with CSEGs on its free side. A strip between two
+        // divisions alone divides free space, and is no gap.
+        bool bordered = false;
+        for (const auto& a : v.adjacency)
+            bordered = bordered || (a.to == face && !a.constrained && v.at(a.from).kind == PlaceKind::cseg && group[a.from.value] < 0);
+        if (!bordered) continue;
         group[face.value] = groups;
         for (const auto& a : v.adjacency)
             if (a.to == face && !a.constrained && v.at(a.from).kind == PlaceKind::cseg && group[a.from.value] < 0) group[a.from.value] = groups;
