@@ -52,7 +52,7 @@ std::string errors_of(const std::string& text) {
     read_rule_text(text, "p.rules", spec, d);
     (void)check_program(spec, d);
     std::string out;
-    for (const auto& x : d.items()) out += x.where.file + ":" + std::to_string(x.where.line) + ":" + std::to_string(x.where.column) + ": " + x.message + "\n";
+    for (const auto& x : d.items()) out += to_string(x.where) + ": " + x.message + "\n";
     return out;
 }
 }  // namespace

@@ -19,7 +19,7 @@ std::optional<LoadedProgram> compile_text(const std::string& text, qm::Diagnosti
 std::string messages(const qm::Diagnostics& d) {
     std::string out;
     for (const auto& x : d.sorted())
-        out += x.where.file + ":" + std::to_string(x.where.line) + ":" + std::to_string(x.where.column) + ": " + x.message + "\n";
+        out += to_string(x.where) + ": " + x.message + "\n";
     return out;
 }
 }  // namespace
