@@ -5,6 +5,7 @@
 // bindings; negation and aggregates are checked in both modes; a rule with a condition repeated
 // 1,000 times gives the answers of the rule written once.
 #include "compiled_program_builder.hpp"
+#include "run_rule_text.hpp"
 #include "engine/engine.hpp"
 #include "engine/rule_compiler.hpp"
 #include "engine/rule_spec_reader.hpp"
@@ -453,17 +454,7 @@ TEST_CASE("engine/engine: `not` and aggregates over many facts per predicate equ
 
 namespace {
 // The report of a rule program given as text.
-RunReport report_of(const std::string& text) {
-    qm::Diagnostics d;
-    ProgramSpec spec;
-    read_rule_text(text, "repeated.rules", spec, d);
-    auto p = compile_program(spec, d);
-    REQUIRE(p.has_value());
-    Engine e(std::move(p->program), std::move(p->values));
-    e.run(d);
-    REQUIRE(!d.has_errors());
-    return make_report(e);
-}
+RunReport report_of(const std::string& text) { return make_report(*run_rule_text(text, "repeated.rules")); }
 std::vector<std::pair<std::string, std::vector<EnvText>>> fact_lines(const RunReport& r) {
     std::vector<std::pair<std::string, std::vector<EnvText>>> out;
     for (const auto& f : r.facts) out.emplace_back(f.fact, f.label);
