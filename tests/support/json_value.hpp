@@ -17,6 +17,7 @@ struct Json {
     using Object = std::map<std::string, Json>;
     using Array = std::vector<Json>;
     std::variant<std::nullptr_t, bool, double, std::string, Array, Object> value;
+    std::vector<std::string> keys = {};  // an object's keys, in the order read
 
     [[nodiscard]] bool is_object() const { return std::holds_alternative<Object>(value); }
     [[nodiscard]] bool is_array() const { return std::holds_alternative<Array>(value); }
@@ -98,17 +99,18 @@ private:
             const char c = s[at];
             if (c == '{') {
                 ++at;
-                Object o;
-                if (eat('}')) return Json{o};
+                Json o{Object{}};
+                if (eat('}')) return o;
                 do {
                     auto k = string();
                     if (!k || !eat(':')) return std::nullopt;
                     auto v = value();
-                    if (!v || o.count(*k)) return std::nullopt;
-                    o.emplace(std::move(*k), std::move(*v));
+                    if (!v || o.has(*k)) return std::nullopt;
+                    o.keys.push_back(*k);
+                    std::get<Object>(o.value).emplace(std::move(*k), std::move(*v));
                 } while (eat(','));
                 if (!eat('}')) return std::nullopt;
-                return Json{std::move(o)};
+                return o;
             }
             if (c == '[') {
                 ++at;
