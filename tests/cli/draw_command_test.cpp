@@ -22,16 +22,11 @@ using qm::test::metric_scene;
 using qm::test::slurp;
 
 namespace {
+using qm::test::count;
 
 qm::test::Run draw(const std::string& args) { return qm::test::qm_atms("draw " + args, "draw_test"); }
 
 std::string out_file(const std::string& name) { return std::string(QM_BINARY_DIR) + "/" + name; }
-
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-    return n;
-}
 
 // The transform of the part's group.
 std::string transform_of(const std::string& svg, const std::string& part) {

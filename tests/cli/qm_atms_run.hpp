@@ -1,6 +1,6 @@
 // tests/cli/qm_atms_run.hpp: runs the built qm-atms (or another executable) with arguments (through
 // the shell), optionally in another folder and with text on standard input, and returns its exit
-// status, standard output and standard error; and reads a whole file. Every CLI test runs the
+// status, standard output and standard error; reads and writes whole files. Every CLI test runs the
 // executable through here, so the temporary files are named and removed one way.
 #pragma once
 #include <cstdio>
@@ -57,5 +57,19 @@ inline Run qm_atms(const std::string& args, const std::string& tag, const RunIn&
 }
 
 inline std::string metric_scene(const std::string& name) { return std::string(QM_SOURCE_DIR) + "/scenarios/metric/" + name; }
+
+// Writes `text` to the file `name` in the build folder; its path.
+inline std::string write_temp(const std::string& name, const std::string& text) {
+    const std::string path = std::string(QM_BINARY_DIR) + "/" + name;
+    std::ofstream(path) << text;
+    return path;
+}
+
+// How often `what` occurs in `text`.
+inline std::size_t count(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
+    return n;
+}
 
 }  // namespace qm::test

@@ -23,14 +23,7 @@ namespace {
 const std::string source = QM_SOURCE_DIR;
 std::string scene(const std::string& name) { return source + "/scenarios/alex/" + name; }
 
-qm::test::Run session(const std::string& args, const std::string& input) {
-    static int counter = 0;
-    const std::string in = std::string(QM_BINARY_DIR) + "/session_in_" + std::to_string(::getpid()) + "_" + std::to_string(++counter);
-    std::ofstream(in) << input;
-    auto r = qm::test::qm_atms(args + " -i <" + in, "session");
-    std::remove(in.c_str());
-    return r;
-}
+qm::test::Run session(const std::string& args, const std::string& input) { return qm::test::qm_atms(args + " -i", "session", {input, ""}); }
 
 // qm-atms on a pseudo-terminal: what it writes, read until `until` appears (or 20 s pass).
 class Terminal {
