@@ -1,10 +1,10 @@
 // tests/analysis/oracle_scenes.hpp: the scenes of the two test oracles (kinematics_oracle_test.cpp,
-// force_oracle_test.cpp): bundled ones read and analysed, and seeded random ones written as scene
-// text. Deterministic: std::mt19937 with fixed seeds, reduced with `%` (not the
+// force_oracle_test.cpp): bundled ones read (tests/support/scene_reading.hpp) and analysed, and
+// seeded random ones written as scene text. Deterministic: std::mt19937 with fixed seeds, reduced with `%` (not the
 // implementation-defined distributions).
 #pragma once
 #include "analysis/analysis.hpp"
-#include "scene/scene_parser.hpp"
+#include "../support/scene_reading.hpp"
 
 #include <doctest/doctest.h>
 
@@ -32,27 +32,10 @@ inline Direction opposite(Direction d) {
     return d;
 }
 
-inline std::string printed(const qm::Diagnostics& diags) {
-    std::ostringstream os;
-    diags.print(os);
-    return os.str();
-}
-inline Scene read_ok(const std::string& src) {
-    qm::Diagnostics diags;
-    auto s = read_scene("oracle.def", src, diags);
-    INFO(src);
-    INFO(printed(diags));
-    REQUIRE(s.has_value());
-    return *s;
-}
+using qm::test::printed;
+inline Scene read_ok(const std::string& src) { return qm::test::read_ok(src, "oracle.def"); }
 // A bundled scene of scenarios/alex/.
-inline Scene read_file_ok(const std::string& name) {
-    qm::Diagnostics diags;
-    auto s = read_scene_file(std::string(QM_SOURCE_DIR) + "/scenarios/alex/" + name, diags);
-    INFO(printed(diags));
-    REQUIRE(s.has_value());
-    return *s;
-}
+inline Scene read_file_ok(const std::string& name) { return qm::test::load_ok("scenarios/alex/" + name); }
 inline Analysis analyse_ok(const Scene& scene) {
     qm::analysis::AnalysisOptions options;
     options.rules_directory = std::string(QM_SOURCE_DIR) + "/rules";

@@ -5,6 +5,7 @@
 // spellings (a writer in this file, independent of scene/scene_printer) reads back equal.
 #include "scene/scene_parser.hpp"
 #include "scene/scene_printer.hpp"
+#include "../support/scene_reading.hpp"
 
 #include <doctest/doctest.h>
 
@@ -16,30 +17,10 @@
 using namespace qm::scene;
 
 namespace {
+using qm::test::printed;
+using qm::test::read_ok;
+Scene load(const std::string& path) { return qm::test::load_ok(path); }
 std::string source_dir() { return std::string(QM_SOURCE_DIR); }
-
-std::string report(const qm::Diagnostics& d) {
-    std::ostringstream os;
-    d.print(os);
-    return os.str();
-}
-
-Scene load(const std::string& path) {
-    qm::Diagnostics diags;
-    auto s = read_scene_file(source_dir() + "/" + path, diags);
-    INFO(path << "\n" << report(diags));
-    REQUIRE(s.has_value());
-    CHECK(diags.size() == 0);
-    return *s;
-}
-
-Scene read_ok(const std::string& text) {
-    qm::Diagnostics diags;
-    auto s = read_scene("test.def", text, diags);
-    INFO(text << "\n" << report(diags));
-    REQUIRE(s.has_value());
-    return *s;
-}
 
 // The first diagnostic as "line:col message", for inputs that must be rejected.
 std::string first_error(const std::string& text) {
@@ -480,7 +461,7 @@ TEST_CASE("scene/scene_parser: every bundled scene in random thesis spellings re
             for (const std::string& text : {w.sx(), w.keywords()}) {
                 qm::Diagnostics diags;
                 auto back = read_scene("spelled.def", text, diags);
-                INFO(file << "\n" << text << "\n" << report(diags));
+                INFO(file << "\n" << text << "\n" << printed(diags));
                 REQUIRE(back.has_value());
                 CHECK(*back == s);
                 ++written;

@@ -3,6 +3,7 @@
 // and the --given / query-fact forms.
 #include "scene/scene_parser.hpp"
 #include "scene/scene_printer.hpp"
+#include "../support/scene_reading.hpp"
 
 #include <doctest/doctest.h>
 
@@ -14,28 +15,11 @@
 using namespace qm::scene;
 
 namespace {
+using qm::test::printed;
+using qm::test::read_ok;
+
 std::string scenes_dir() { return std::string(QM_SOURCE_DIR) + "/scenarios/alex"; }
-
-Scene load(const std::string& file) {
-    qm::Diagnostics diags;
-    auto s = read_scene_file(scenes_dir() + "/" + file, diags);
-    std::ostringstream os;
-    diags.print(os);
-    INFO(os.str());
-    REQUIRE(s.has_value());
-    CHECK(diags.size() == 0);
-    return *s;
-}
-
-Scene read_ok(const std::string& text) {
-    qm::Diagnostics diags;
-    auto s = read_scene("test.def", text, diags);
-    std::ostringstream os;
-    diags.print(os);
-    INFO(os.str());
-    REQUIRE(s.has_value());
-    return *s;
-}
+Scene load(const std::string& file) { return qm::test::load_ok("scenarios/alex/" + file); }
 
 const Direction up{Sign::zero, Sign::plus};
 const Direction down{Sign::zero, Sign::minus};
@@ -361,9 +345,7 @@ TEST_CASE("scene/scene_parser: --given motions") {
 
     qm::Diagnostics bad;
     CHECK_FALSE(parse_given(s, "palet (0 0) (+)", bad).has_value());
-    std::ostringstream os;
-    bad.print(os);
-    CHECK(os.str() == "--given:1:1: error: object 'palet' in a motion is not declared in Individuals; did you mean 'pallet'?\n"
+    CHECK(printed(bad) == "--given:1:1: error: object 'palet' in a motion is not declared in Individuals; did you mean 'pallet'?\n"
                       "  palet (0 0) (+)\n  ^\n");
 
     qm::Diagnostics arity;
@@ -384,9 +366,7 @@ TEST_CASE("scene/scene_parser: query facts") {
     auto ok = [&](const std::string& text) {
         qm::Diagnostics d;
         auto q = parse_query_fact(s, text, d);
-        std::ostringstream os;
-        d.print(os);
-        INFO(text << "\n" << os.str());
+        INFO(text << "\n" << printed(d));
         REQUIRE(q.has_value());
         return *q;
     };
