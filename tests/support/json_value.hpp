@@ -1,5 +1,5 @@
-// tests/support/json_value.hpp: a small strict JSON reader for tests that check the schema of the
-// JSON the program prints (objects, arrays, strings with escapes, numbers, true/false/null).
+// tests/support/json_value.hpp: a small strict JSON reader (RFC 8259) for tests that check the JSON
+// the program prints (objects, arrays, strings with escapes, numbers, true/false/null).
 // parse() returns nullopt on any syntax error or trailing garbage.
 #pragma once
 #include <cctype>
@@ -79,13 +79,15 @@ private:
                     case 'r': out += '\r'; break;
                     case 'b': out += '\b'; break;
                     case 'f': out += '\f'; break;
-                    case 'u':
+                    case 'u': {  // a code point below 0x80 as itself, any other as '?'
                         if (at + 4 > s.size()) return std::nullopt;
                         for (int k = 0; k < 4; ++k)
                             if (!std::isxdigit(static_cast<unsigned char>(s[at + k]))) return std::nullopt;
-                        out += '?';
+                        const unsigned long v = std::stoul(std::string(s.substr(at, 4)), nullptr, 16);
+                        out += v < 0x80 ? static_cast<char>(v) : '?';
                         at += 4;
                         break;
+                    }
                     default: return std::nullopt;
                 }
             }
