@@ -640,12 +640,7 @@ Verdict compare(const Oracle& o, const Scene& scene, const force_oracle::Situati
             continue;
         }
         std::vector<std::vector<Motion2>> g;
-        for (const auto& combo : it->second->combinations) {
-            std::vector<Motion2> m;
-            for (const ObjectMotion& om : combo)
-                m.push_back({o.trans_id(qvec(om.translation)), o.rot_id(qvec(om.rotation))});
-            g.push_back(std::move(m));
-        }
+        for (const auto& combo : it->second->combinations) g.push_back(motions_of(combo));
         std::sort(g.begin(), g.end());
         if (g == ec.selected) continue;
         ++v.differing;
