@@ -52,7 +52,7 @@ int usage_error(std::ostream& err, const std::string& what) {
 
 // `; Alex scene of PATH at 'CONFIG' (qm-atms --emit-def)`: the path and CONFIG as typed may hold
 // line breaks or other control characters, which would end the `;` comment early and leave the
-// rest as text the reader refuses (issue 19); they are written as escapes (qm/printable_text.hpp).
+// rest as text the reader refuses; they are written as escapes (qm/printable_text.hpp).
 std::string emitted_scene_comment(const std::string& path, const std::string& config) {
     return "; Alex scene of " + printable_text(path) + " at " +
            (config.empty() ? std::string("the drawn configuration") : "'" + printable_text(config) + "'") + " (qm-atms --emit-def)\n";

@@ -1,4 +1,4 @@
-// tests/cli/check_command_test.cpp: rule files checked like code (issue 17 item 2) through the
+// tests/cli/check_command_test.cpp: rule files checked like code through the
 // built executable: `qm-atms check` on the bundled laws (clean), on small law folders whose
 // diagnostics are golden files (tests/cli/check/NAME/ with the exact standard error in NAME.err,
 // the folder's path written RULES/), and on copies of rules/ with the slips of the hand the issue
@@ -59,7 +59,7 @@ TEST_CASE("cli/check: the bundled laws have no error and no warning, in 2-D and 
         CHECK(r.err == "");
         CHECK(std::regex_search(r.out, std::regex("^checked [0-9]+ files, [0-9]+ rules: no errors, no warnings\n$")));
     }
-    // The envisioner's laws (chapters 5 and 8) too: every file cites the thesis (issue 17 item 1).
+    // The envisioner's laws (chapters 5 and 8) too: every file cites the thesis.
     auto clock = qm_atms("check " + source + "/rules/clock", "check");
     CHECK(clock.status == 0);
     CHECK(clock.err == "");

@@ -93,7 +93,7 @@ TEST_CASE("cli/draw_command: a pair's parts at the sample configuration of a pla
 }
 
 TEST_CASE("cli/draw_command: parts drawn overlapping are drawn, with a located warning") {
-    // The anchor turned upside down overlaps the wheel (issue 16 item 7).
+    // The anchor turned upside down overlaps the wheel.
     const std::string file = out_file("draw_overlap.svg");
     const auto r = draw(metric_scene("escapement.def") + " --config 'pallets=180' --svg " + file);
     CHECK(r.status == 0);

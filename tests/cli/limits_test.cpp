@@ -1,5 +1,5 @@
 // tests/cli/limits_test.cpp: the resource limits and the uniform option errors of the command
-// line (issue 19 items 3 and 4), end to end through the built qm-atms. A program that counts for
+// line, end to end through the built qm-atms. A program that counts for
 // ever, 40 binary choice sets (2^40 interpretations) and a scene analysed under a tiny limit stop
 // with `error: ... limit N reached while ...; raise it with --...`, exit 2 and an empty standard
 // output; every option error names the option and what it expected (exact texts); a scene or rule

@@ -223,7 +223,7 @@ TEST_CASE("cli/metric_command: --places prints each pair's vocabulary, reuses th
     CHECK(far.out.find("no configuration space for a b: their motion envelopes do not intersect, so they never touch (Def 20)") != std::string::npos);
 }
 
-// Issue 17 item 4: a coordinate a person reads is one they can type. The text of --places gives a
+// A coordinate a person reads is one they can type. The text of --places gives a
 // rotation in degrees, as --config and --emit-def take it: a join place's point, typed back as a
 // configuration, puts the two parts in contact; the JSON keeps radians and says so per axis.
 TEST_CASE("cli/metric_command: --places prints rotations in degrees, the unit --emit-def and --config take") {

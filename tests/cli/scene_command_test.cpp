@@ -316,8 +316,6 @@ TEST_CASE("cli/scene_command: interactive errors name the command, and whatif ch
     CHECK(r.out.find("9 consistent combinations") != std::string::npos);  // the last whatif still answers
 }
 
-// Regressions found by audit 5 (--why's reasons and responsible sets, corner contacts, duplicate
-// motions, --without's note, whole JSON entries as queries).
 TEST_CASE("cli/scene_command: --why lists the argument's reasons, the same in text and JSON") {
     const std::string args = scene("recoil_escapement.def") + " --situation 2 --why 'Rotational-Motion (gear (+))'";
     Result text = qm_atms(args);
@@ -327,7 +325,6 @@ TEST_CASE("cli/scene_command: --why lists the argument's reasons, the same in te
     auto w = Json::parse(json.out);
     REQUIRE(w.has_value());
     const auto& exclusions = (*w)["exclusions"].array();
-    // Before: 21 reasons, exclusions[0] a pin of the scape wheel's translation resting on nothing.
     CHECK(exclusions.size() <= 6);
     REQUIRE_FALSE(exclusions.empty());
     REQUIRE(exclusions[0]["responsible"].array().size() == 1);
@@ -343,7 +340,7 @@ TEST_CASE("cli/scene_command: --why lists the argument's reasons, the same in te
 
     Result given = qm_atms(scene("gears.def") + " --given 'driver (0 0) (-)' --why 'Rotational-Motion (follower (-))'");
     CHECK(given.out.find("  Reason 3:") != std::string::npos);
-    CHECK(given.out.find("  Reason 4:") == std::string::npos);  // before: 11
+    CHECK(given.out.find("  Reason 4:") == std::string::npos);
 }
 
 TEST_CASE("cli/scene_command: --why's responsible sets are the minimal ones, and say so") {
@@ -449,8 +446,7 @@ std::multiset<std::string> combinations_of(const Result& r, std::size_t situatio
     return out;
 }
 
-// Issue 17 item 3: the kinematically consistent combinations are those of the same scene with every
-// force taken away (computed here the other way: --without each force, a fresh analysis).
+// The kinematically consistent combinations are those of the same scene with every force taken away (computed here the other way: --without each force, a fresh analysis).
 TEST_CASE("cli/scene_command: --kinematic lists what blocking and pushing alone allow; both counts are shown") {
     const std::string crate = scene("crate_shim.def");
     Result text = qm_atms(crate);
@@ -475,7 +471,7 @@ TEST_CASE("cli/scene_command: --kinematic lists what blocking and pushing alone 
     // Where the forces rule nothing out, the heading says so.
     CHECK(qm_atms(scene("gears.def")).out.find("Motions: 6 consistent combinations (every kinematically consistent one: "
                                                 "the forces rule none out)\n") != std::string::npos);
-    // A stable verdict that only the forces hold says so (issue 17 item 6).
+    // A stable verdict that only the forces hold says so.
     Result block = qm_atms(scene("block.def") + " --situation 2");
     CHECK(block.out.find("  Stable: yes (the only possible motions are zero)\n  Note: stable only because of the forces: "
                          "blocking and pushing alone would let block translate (+ +), (+ 0), (0 +), (- +) or (- 0) (6 "
@@ -483,7 +479,7 @@ TEST_CASE("cli/scene_command: --kinematic lists what blocking and pushing alone 
           std::string::npos);
 }
 
-// Issue 17 item 5: --with adds; checked against the same scene written with the item.
+// --with adds; checked against the same scene written with the item.
 TEST_CASE("cli/scene_command: --with adds a contact or a force, and says so") {
     // Situation 1 of block.def with situation 2's contacts added is situation 2.
     Result added = qm_atms(scene("block.def") + " --json --situation 1 --with 'Contact tb block-b-l' --with 'Contact tb "
@@ -522,9 +518,9 @@ TEST_CASE("cli/scene_command: --with adds a contact or a force, and says so") {
                           "'block-t-m' are not opposite") == 0);
 }
 
-// Issue 17 item 1: a --why answer that reads like one. The arch query of the issue (292 lines
-// before) is a golden file, run from the source folder so that the scene's paths in it are relative
-// (QM_WRITE_GOLDEN=1 rewrites it); --full shows everything, bindings included.
+// A --why answer that reads like one. The arch query is a golden file, run from the source folder so
+// that the scene's paths in it are relative (QM_WRITE_GOLDEN=1 rewrites it); --full shows
+// everything, bindings included.
 TEST_CASE("cli/scene_command: --why starts with the verdict and stays short; --full shows it all (golden)") {
     const std::string golden = std::string(QM_SOURCE_DIR) + "/tests/cli/why/arch_cross_bar.txt";
     const std::string out = std::string(QM_BINARY_DIR) + "/scene_cli_why_arch.out";

@@ -1,9 +1,9 @@
-// tests/cli/session_test.cpp: the interactive mode (cli/session.hpp, cli/line_editor.hpp; issue 17
-// item 7) through the built executable, driven two ways: from standard input (a pipe: no prompt,
-// only the answers) for the messages: "did you mean" for commands and names, the usage of a
-// command given the wrong arguments, `with` and `kinematic`; and through a pseudo-terminal, as a
-// person types: the prompt, history recalled with the Up arrow (libedit), and a newline written
-// at Ctrl-D so the shell's prompt starts on its own line.
+// tests/cli/session_test.cpp: the interactive mode (cli/session.hpp, cli/line_editor.hpp) through
+// the built executable, driven two ways: from standard input (a pipe: no prompt, only the answers)
+// for the messages: "did you mean" for commands and names, the usage of a command given the wrong
+// arguments, `with` and `kinematic`; and through a pseudo-terminal, as a person types: the prompt,
+// history recalled with the Up arrow (libedit), and a newline written at Ctrl-D so the shell's
+// prompt starts on its own line.
 #include "qm_atms_run.hpp"
 #include <chrono>
 #include <csignal>
@@ -163,7 +163,7 @@ TEST_CASE("cli/session: on a terminal: prompt, history with the Up arrow, a newl
     CHECK(t.keep_.find('\n') != std::string::npos);
 }
 
-// Issue 17 item 5: `with` answers from the labels already computed when what it adds is a contact of
+// `with` answers from the labels already computed when what it adds is a contact of
 // another situation; the answer must be the one a fresh analysis gives (--with on the command line
 // analyses the larger scene afresh), in every part of the situation's JSON.
 TEST_CASE("cli/session: with, from the labels already computed, answers as a fresh analysis does") {
