@@ -134,10 +134,7 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     apply_memory_limit(options->limits);
     Diagnostics d;
     std::optional<scene::Scene> scene = load_scene(*options, d, err);
-    if (!scene || d.has_errors()) {
-        d.print(err);
-        return 2;
-    }
+    if (!scene || d.has_errors()) return bad_input(d, err);
     analysis::AnalysisOptions ao;
     ao.combination_limit = options->limit;
     ao.kinematic = options->kinematic;
@@ -189,10 +186,7 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     std::ostringstream answer;
     if (why) {
         auto w = analysed->why(*why, situation, d);
-        if (!w) {
-            d.print(err);
-            return 2;
-        }
+        if (!w) return bad_input(d, err);
         options->json ? analysis::write_why_json(answer, *w) : analysis::print_why(answer, *w, {.full = options->full});
     } else {
         print_results(*analysed, *options, ao.without, added, answer, err);
