@@ -179,9 +179,6 @@ TEST_CASE("cli/metric_command: bad input is located, exit status 2") {
     r = qm_atms("--places " + std::string(QM_BINARY_DIR) + "/no-such-file.def");
     CHECK(r.status == 2);
     CHECK(r.err.find("cannot read metric scene file") != std::string::npos);
-    r = qm_atms("--places " + metric_scene("cam.def") + " --colour");
-    CHECK(r.status == 2);
-    CHECK(r.err.find("unknown option '--colour'") != std::string::npos);
     r = qm_atms("--emit-def");
     CHECK(r.status == 2);
     const Result help = qm_atms("--help");
