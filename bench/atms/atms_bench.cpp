@@ -21,7 +21,6 @@
 // stdout is line buffered, so a run piped into a file or `tee` shows each row when it is done.
 // Usage: atms_bench [--quick] [--queens | --theories | --bases]   (--quick: fewer repetitions,
 //        smaller sizes, N up to 10; --queens, --theories, --bases: only that part)
-//        atms_bench --one NAME   one run of one configuration, for callgrind (see run_one)
 #include "atms/atms.hpp"
 #include "base_queries.hpp"
 #include "queens.hpp"
@@ -244,35 +243,6 @@ void base_table(bool quick) {
     }
 }
 
-// One run of one configuration, for instruction counts (valgrind --tool=callgrind atms_bench --one
-// NAME): queens-whole-pairwise-N, queens-whole-at-most-one-N (build + interpretations, interned),
-// queens-plain-N, bases-P (base_table's queries, P pairs), local-W, deep-S. Prints its count; false
-// if NAME is not one of these.
-bool run_one(const std::string& name) {
-    auto number = [&](const std::string& prefix) -> int {
-        return name.rfind(prefix, 0) == 0 ? std::atoi(name.c_str() + prefix.size()) : 0;
-    };
-    if (int n = number("queens-whole-pairwise-"); n >= 1 && n <= 14) {
-        Queens q(n, Encoding::pairwise);
-        std::printf("%zu\n", q.atms.interpretations(q.rows).size());
-    } else if (int m = number("queens-whole-at-most-one-"); m >= 1 && m <= 14) {
-        Queens q(m, Encoding::at_most_one);
-        std::printf("%zu\n", q.atms.interpretations(q.rows).size());
-    } else if (int p = number("queens-plain-"); p >= 1 && p <= 14) {
-        std::printf("%zu\n", queens_plain(p, 0, 0, 0, 0));
-    } else if (int b = number("bases-"); b >= 1) {  // bases-P: P pairs, P / 2 objects
-        const BaseQueries q(11, b, b / 2, 200);
-        std::printf("%zu\n", q.run(5000));
-    } else if (int w = number("local-"); w >= 1) {
-        std::printf("%zu\n", local_theory(7, w).envs);
-    } else if (int d = number("deep-"); d >= 1) {
-        std::printf("%zu\n", deep_theory(42, 20 * d, 100 * d, 200 * d).envs);
-    } else {
-        return false;
-    }
-    return true;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -287,10 +257,8 @@ int main(int argc, char** argv) {
             queens = bases = false;
         } else if (std::strcmp(argv[i], "--bases") == 0) {
             theories = queens = false;
-        } else if (std::strcmp(argv[i], "--one") == 0 && i + 1 < argc) {
-            return run_one(argv[i + 1]) ? 0 : 2;
         } else {
-            std::fprintf(stderr, "usage: atms_bench [--quick] [--queens | --theories | --bases] | --one NAME\n");
+            std::fprintf(stderr, "usage: atms_bench [--quick] [--queens | --theories | --bases]\n");
             return 2;
         }
     }
