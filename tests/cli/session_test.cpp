@@ -98,8 +98,6 @@ public:
         return -1;
     }
 
-    [[nodiscard]] pid_t pid() const noexcept { return pid_; }
-
 private:
     int fd_ = -1;
     pid_t pid_ = -1;
