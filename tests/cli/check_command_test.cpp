@@ -45,8 +45,7 @@ std::string mutated_rules(const std::string& tag, const std::string& file, const
 void check_golden(const std::string& name, const std::string& err) {
     const std::string golden = source + "/tests/cli/check/" + name + ".err";
     const std::string actual = replace_all(err, source + "/tests/cli/check/" + name + "/", "RULES/");
-    if (std::getenv("QM_WRITE_GOLDEN")) std::ofstream(golden) << actual;
-    CHECK(actual == qm::test::slurp(golden));
+    qm::test::check_golden(actual, golden);
 }
 
 }  // namespace

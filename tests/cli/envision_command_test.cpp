@@ -10,7 +10,6 @@
 #include <doctest/doctest.h>
 #include <fstream>
 #include <set>
-#include <sstream>
 #include <string>
 #include <sys/wait.h>
 
@@ -229,11 +228,9 @@ TEST_CASE("cli/envision: --from, --path, --why-not, --dot and --svg") {
     std::remove(dot.c_str());
     const auto d = envision(ratchet + " --dot " + dot);
     REQUIRE(d.status == 0);
-    std::ifstream in(dot);
-    std::stringstream graph;
-    graph << in.rdbuf();
-    CHECK(graph.str().find("digraph \"ratchet\"") == 0);
-    CHECK(graph.str().find("peripheries=2") != std::string::npos);  // the terminal state
+    const std::string graph = slurp(dot);
+    CHECK(graph.find("digraph \"ratchet\"") == 0);
+    CHECK(graph.find("peripheries=2") != std::string::npos);  // the terminal state
 }
 
 // --svg lays out and draws the graph with Graphviz's library: no program is run, so a quote or a
@@ -251,12 +248,10 @@ TEST_CASE("cli/envision: --svg draws the graph, into a file whose name holds a q
     const auto r = envision(std::string(QM_SOURCE_DIR) + "/scenarios/clock/ratchet.def --svg " + quoted(svg));
     REQUIRE(r.status == 0);
     CHECK(r.err.empty());
-    std::ifstream in(svg);
-    std::stringstream drawn;
-    drawn << in.rdbuf();
-    CHECK(drawn.str().find("<svg") != std::string::npos);
-    CHECK(drawn.str().find("<title>ratchet</title>") != std::string::npos);  // the graph's name
-    CHECK(drawn.str().find("</svg>") != std::string::npos);
+    const std::string drawn = slurp(svg);
+    CHECK(drawn.find("<svg") != std::string::npos);
+    CHECK(drawn.find("<title>ratchet</title>") != std::string::npos);  // the graph's name
+    CHECK(drawn.find("</svg>") != std::string::npos);
     CHECK(!std::filesystem::exists(svg + ".part"));  // written whole, then renamed
 }
 

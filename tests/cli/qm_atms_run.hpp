@@ -3,11 +3,11 @@
 // status, standard output and standard error; reads and writes whole files. Every CLI test runs the
 // executable through here, so the temporary files are named and removed one way.
 #pragma once
+#include "../support/golden.hpp"
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <sys/wait.h>
 
@@ -17,13 +17,6 @@ struct Run {
     int status = -1;
     std::string out, err;
 };
-
-inline std::string slurp(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 // How to run: `input`, when set, is written to a file and given as standard input (an interactive
 // session's lines); `folder`, when set, is the working folder (so that relative paths in messages

@@ -494,8 +494,7 @@ TEST_CASE("cli/scene_command: --why starts with the verdict and stays short; --f
                             " --why 'Rotational-Motion (cross-bar (+))'";
     REQUIRE(std::system((run + " >" + out).c_str()) == 0);
     const std::string text = slurp(out);
-    if (std::getenv("QM_WRITE_GOLDEN")) std::ofstream(golden) << text;
-    CHECK(text == slurp(golden));
+    qm::test::check_golden(text, golden);
     CHECK(std::count(text.begin(), text.end(), '\n') < 40);
     CHECK(text.find("in situation 1: ruled out by constraint-prevents-rotation (section 3.1, Table 3.1; Definition 23), resting on {") == 34);
     CHECK(text.find(" at contact_constraint.rules:") != std::string::npos);  // relative to the rules folder

@@ -3,14 +3,13 @@
 // and the --given / query-fact forms.
 #include "scene/scene_parser.hpp"
 #include "scene/scene_printer.hpp"
+#include "../support/golden.hpp"
 #include "../support/scene_reading.hpp"
 
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 using namespace qm::scene;
 
@@ -410,21 +409,15 @@ TEST_CASE("scene/scene_parser: never throws, whatever the input; syntax errors n
     // print a mangled C++ type name (N5boost6spirit...).
     std::vector<std::string> texts;
     for (const char* file : {"block.def", "gears.def", "corner_contacts.def", "linked_gears.def"}) {
-        std::ifstream in(scenes_dir() + "/" + file);
-        std::ostringstream ss;
-        ss << in.rdbuf();
-        texts.push_back(ss.str());
+        texts.push_back(qm::test::slurp(scenes_dir() + "/" + file));
         const Scene s = load(file);
         texts.push_back(print_scene_keywords(s));
     }
     // The thesis' own spellings (tests/scene/figures/): figure headers, bare constraint lists,
     // BNF surface groups, braces, defState, closing CONTACT lists.
     for (const char* file : {"fig7_2.def", "fig7_8.def", "fig7_12.def", "fig7_16.def", "fig6_1_bnf.def"}) {
-        std::ifstream in(std::string(QM_SOURCE_DIR) + "/tests/scene/figures/" + file);
-        std::ostringstream ss;
-        ss << in.rdbuf();
-        REQUIRE(!ss.str().empty());
-        texts.push_back(ss.str());
+        texts.push_back(qm::test::slurp(std::string(QM_SOURCE_DIR) + "/tests/scene/figures/" + file));
+        REQUIRE(!texts.back().empty());
     }
     std::size_t syntax_errors = 0;
     for (const std::string& text : texts)
