@@ -6,13 +6,10 @@
 // direction in a law run on a 2-D scene is a located warning). QM_WRITE_GOLDEN=1 rewrites the .err files.
 #include "qm_atms_run.hpp"
 #include <doctest/doctest.h>
-#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <string>
-#include <unistd.h>
 
-namespace fs = std::filesystem;
 using qm::test::qm_atms;
 
 namespace {
@@ -25,21 +22,8 @@ std::string replace_all(std::string text, const std::string& from, const std::st
     return text;
 }
 
-// A copy of rules/ in which `file` has `from` replaced by `to` (once); the copy's path.
 std::string mutated_rules(const std::string& tag, const std::string& file, const std::string& from, const std::string& to) {
-    const fs::path dir = fs::path(QM_BINARY_DIR) / ("check_" + tag + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    for (const auto& e : fs::directory_iterator(source + "/rules"))
-        if (e.path().extension() == ".rules") fs::copy_file(e.path(), dir / e.path().filename());
-    if (!file.empty()) {
-        std::string text = qm::test::slurp((dir / file).string());
-        const std::size_t at = text.find(from);
-        REQUIRE(at != std::string::npos);
-        text.replace(at, from.size(), to);
-        std::ofstream(dir / file) << text;
-    }
-    return dir.string();
+    return qm::test::mutated_rules("rules", "check_" + tag, file, from, to);
 }
 
 void check_golden(const std::string& name, const std::string& err) {

@@ -155,8 +155,6 @@ TEST_CASE("cli/envision: --why-not cites the settling law that refutes a motion 
 }
 
 TEST_CASE("cli/envision: laws that prefer among motions without a step-allows for each are an error at the `prefer`") {
-    namespace fs = std::filesystem;
-    const fs::path from = fs::path(QM_SOURCE_DIR) / "rules/clock";
     // The nearness rule that assumes (step-allows O H) for every motion narrowed to (+), and made a
     // plain conclusion: each a faulty law file, refused where it is written (exit 2), not a crash.
     const std::string assumed = "  when (possible-motions ?o ?motions) (motion-value ?h)\n  then assume (step-allows ?o ?h)";
@@ -171,15 +169,9 @@ TEST_CASE("cli/envision: laws that prefer among motions without a step-allows fo
     };
     for (std::size_t i = 0; i < broken.size(); ++i) {
         CAPTURE(i);
-        const fs::path dir = fs::path(QM_BINARY_DIR) / ("envision_broken_rules_" + std::to_string(i));
-        fs::remove_all(dir);
-        fs::copy(from, dir);
-        std::string text = slurp((dir / "nearness.rules").string());
-        const auto at = text.find(assumed);
-        REQUIRE(at != std::string::npos);
-        text.replace(at, assumed.size(), broken[i].first);
-        std::ofstream(dir / "nearness.rules") << text;
-        const auto r = envision(metric_scene("escapement.def") + " --rules " + dir.string());
+        const std::string dir = qm::test::mutated_rules("rules/clock", "envision_" + std::to_string(i), "nearness.rules",
+                                                        assumed, broken[i].first);
+        const auto r = envision(metric_scene("escapement.def") + " --rules " + dir);
         CHECK(r.status == 2);
         CHECK(r.out.empty());
         CHECK_MESSAGE(r.err.find(broken[i].second) != std::string::npos, r.err);

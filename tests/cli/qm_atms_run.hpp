@@ -6,10 +6,12 @@
 #include "../support/golden.hpp"
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace qm::test {
 
@@ -56,6 +58,26 @@ inline std::string write_temp(const std::string& name, const std::string& text) 
     const std::string path = std::string(QM_BINARY_DIR) + "/" + name;
     std::ofstream(path) << text;
     return path;
+}
+
+// A copy of the .rules files of `folder` (relative to the source tree, e.g. "rules") in which `file`
+// has `from` replaced by `to` (once; nothing when `file` is empty): laws with one slip; its path.
+inline std::string mutated_rules(const std::string& folder, const std::string& tag, const std::string& file,
+                                 const std::string& from, const std::string& to) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::path(QM_BINARY_DIR) / ("mutated_" + tag + "_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    for (const auto& e : fs::directory_iterator(std::string(QM_SOURCE_DIR) + "/" + folder))
+        if (e.path().extension() == ".rules") fs::copy_file(e.path(), dir / e.path().filename());
+    if (!file.empty()) {
+        std::string text = slurp((dir / file).string());
+        const std::size_t at = text.find(from);
+        REQUIRE(at != std::string::npos);
+        text.replace(at, from.size(), to);
+        std::ofstream(dir / file) << text;
+    }
+    return dir.string();
 }
 
 // How often `what` occurs in `text`.
