@@ -13,7 +13,7 @@
 namespace qm::analysis::detail {
 namespace v = scene::vocabulary;
 
-std::string located(const SourceLocation& w) { return w.file + ":" + std::to_string(w.line); }
+std::string located(const SourceLocation& w) { return w.file.str() + ":" + std::to_string(w.line); }
 
 namespace {
 
@@ -77,7 +77,7 @@ public:
             const engine::CompiledRule& rule = e.program().rules[*firing.rule];
             d.law = rule.name;
             d.source = law_location(*firing.where);
-            if (auto c = st_.laws->citations.find(firing.where->file); c != st_.laws->citations.end()) d.citation = c->second;
+            if (auto c = st_.laws->citations.find(firing.where->file.str()); c != st_.laws->citations.end()) d.citation = c->second;
             for (std::size_t i = 0; i < firing.binding.size(); ++i)
                 if (firing.binding[i]) d.bindings.push_back(rule.slot_names[i] + " = " + e.values().print(*firing.binding[i]));
             d.absent = engine::absent_conditions(*st_.engine, firing);
@@ -136,9 +136,9 @@ private:
 
     // A law's file:line relative to the rules folder, when it is in it (else as loaded).
     [[nodiscard]] std::string law_location(const SourceLocation& w) const {
-        const std::filesystem::path rel = std::filesystem::path(w.file).lexically_relative(st_.options.rules_directory);
+        const std::filesystem::path rel = std::filesystem::path(w.file.str()).lexically_relative(st_.options.rules_directory);
         const bool inside = !rel.empty() && *rel.begin() != "..";
-        return (inside ? rel.generic_string() : w.file) + ":" + std::to_string(w.line);
+        return (inside ? rel.generic_string() : w.file.str()) + ":" + std::to_string(w.line);
     }
     static constexpr const char* closed_world_text = "the closed world of the situation (what it does not say is false)";
 

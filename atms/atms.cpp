@@ -20,7 +20,7 @@ Atms::Atms() : scratch_(std::make_unique<detail::WeaveScratch>()) {
 Atms::~Atms() = default;
 
 NodeId Atms::new_node(DatumId d) {
-    const NodeId n = nodes_.push_back(NodeData{d, std::nullopt, false, {}, {}, {}});
+    const NodeId n = nodes_.push_back(NodeData{d, std::nullopt, false, {}, {}});
     labels_.push_back(Label{});
     return n;
 }
@@ -144,23 +144,6 @@ void Atms::run_events() {
     } reset{running_events_};
     // A consumer that a callback removed (and perhaps destroyed) gets no further event.
     auto still_registered = [&](Consumer* c) { return std::find(consumers_.begin(), consumers_.end(), c) != consumers_.end(); };
-    // Run a node's waiting callbacks one by one; if one throws, the ones after it keep waiting
-    // (requeued) and the exception goes on: one failing callback loses no other.
-    auto run_callbacks = [&](NodeId n) {
-        auto callbacks = std::move(nodes_[n].first_label_callbacks);
-        nodes_[n].first_label_callbacks.clear();
-        for (std::size_t i = 0; i < callbacks.size(); ++i) {
-            try {
-                callbacks[i](n);
-            } catch (...) {
-                auto& waiting = nodes_[n].first_label_callbacks;
-                waiting.insert(waiting.begin(), std::make_move_iterator(callbacks.begin() + static_cast<std::ptrdiff_t>(i) + 1),
-                               std::make_move_iterator(callbacks.end()));
-                if (!waiting.empty()) events_.push_front(Event{Event::Kind::callbacks, n.value});
-                throw;
-            }
-        }
-    };
     while (!events_.empty()) {
         const Event ev = events_.front();
         events_.pop_front();
@@ -170,13 +153,6 @@ void Atms::run_events() {
             if (labels_[n].empty()) continue;  // emptied by a nogood before delivery
             for (Consumer* c : consumers)
                 if (still_registered(c)) c->label_became_nonempty(n);
-            run_callbacks(n);
-        } else if (ev.kind == Event::Kind::callbacks) {
-            // Registered while the label was non-empty, but an earlier event's callback may have
-            // emptied it since: then the node holds in no consistent environment, and the
-            // callbacks keep waiting for the label_nonempty event of its next fill.
-            if (labels_[NodeId{ev.id}].empty()) continue;
-            run_callbacks(NodeId{ev.id});
         } else {
             for (Consumer* c : consumers)
                 if (still_registered(c)) c->environment_became_nogood(EnvId{ev.id});
@@ -205,10 +181,6 @@ NodeId Atms::node_of(AssumptionId a) const {
 const std::vector<JustId>& Atms::justifications(NodeId n) const {
     require_node(n);
     return nodes_[n].justifications;
-}
-const std::vector<JustId>& Atms::consequences(NodeId n) const {
-    require_node(n);
-    return nodes_[n].consequences;
 }
 const Justification& Atms::justification(JustId j) const {
     QM_REQUIRE(j.value < justs_.size(), "unknown justification id");
@@ -293,18 +265,6 @@ Explanation Atms::explain(NodeId n, EnvId env) const {
 }
 
 // ---- consumers --------------------------------------------------------------------------------
-
-void Atms::on_first_label(NodeId n, std::function<void(NodeId)> f) {
-    require_node(n);
-    QM_REQUIRE(n != contradiction_, "the contradiction node never gets a label");
-    QM_REQUIRE(static_cast<bool>(f), "empty callback");
-    nodes_[n].first_label_callbacks.push_back(std::move(f));
-    if (!labels_[n].empty()) {
-        // Consumers already heard about this label; only the waiting callbacks run.
-        events_.push_back(Event{Event::Kind::callbacks, n.value});
-        run_events();  // a no-op inside a callback: the outer drain loop delivers it
-    }
-}
 
 void Atms::add_consumer(Consumer& c) {
     QM_REQUIRE(std::find(consumers_.begin(), consumers_.end(), &c) == consumers_.end(),

@@ -18,11 +18,10 @@
 //               minimal    no label env is a superset of another,
 //               complete   every consistent env deriving the node is a superset of a label env;
 //             the contradiction node's label is always empty (its would-be envs become nogoods).
-// Reentrancy: consumers and on_first_label callbacks never run during propagation; they are queued
-//             and run, FIFO, just before the public call that caused them returns. They may call any
-//             member (including justify); events they cause are appended to the same queue. A
-//             consumer removed by a callback gets no further event; if a callback throws, the
-//             exception reaches the caller and the node's remaining callbacks run at the next call.
+// Reentrancy: consumers never run during propagation; their events are queued and delivered, FIFO,
+//             just before the public call that caused them returns. They may call any member
+//             (including justify); events they cause are appended to the same queue. A consumer
+//             removed by another's callback gets no further event.
 // Errors:     every violated `Pre:` throws qm::InternalError (QM_REQUIRE), never UB.
 // Knows nothing of rules, patterns or mechanics.
 #pragma once
@@ -102,7 +101,6 @@ public:
     // Pre: a was issued by this Atms.
     [[nodiscard]] NodeId node_of(AssumptionId a) const;
     [[nodiscard]] const std::vector<JustId>& justifications(NodeId n) const;  // those concluding n
-    [[nodiscard]] const std::vector<JustId>& consequences(NodeId n) const;    // those using n
     [[nodiscard]] const Justification& justification(JustId j) const;        // Pre: j valid
 
     // ---- labels and consistency -----------------------------------------------------------------
@@ -160,10 +158,6 @@ public:
     [[nodiscard]] Explanation explain_nogood(EnvId env);
 
     // ---- consumers ------------------------------------------------------------------------------
-    // Runs f(n) exactly once: when n's label next becomes non-empty, or, if it is non-empty now,
-    // before this call returns (or, if called from inside a callback, after that callback).
-    // Pre: n valid and not the contradiction node (whose label is always empty).
-    void on_first_label(NodeId n, std::function<void(NodeId)> f);
     // Pre: c is not already registered. c must outlive this Atms or be removed first.
     void add_consumer(Consumer& c);
     void remove_consumer(Consumer& c);  // Pre: c is registered
@@ -175,7 +169,6 @@ private:
         bool premise = false;
         std::vector<JustId> justifications;  // concluding this node
         std::vector<JustId> consequences;    // having this node as an antecedent
-        std::vector<std::function<void(NodeId)>> first_label_callbacks;
     };
     struct Pending {  // a propagation work item (the BPS `propagate` call, made iterative)
         JustId just;
@@ -183,7 +176,7 @@ private:
         std::vector<EnvId> envs;        // its new label envs
     };
     struct Event {
-        enum class Kind { label_nonempty, callbacks, nogood } kind;
+        enum class Kind { label_nonempty, nogood } kind;
         std::uint32_t id;
     };
 

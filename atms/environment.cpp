@@ -1,5 +1,5 @@
 // atms/environment.cpp: the set operations of Environment, on its listed non-zero words; the free
-// functions on raw word windows and on SparseWords.
+// functions on raw bitsets and on SparseWords.
 #include "atms/environment.hpp"
 
 #include "qm/assert.hpp"
@@ -51,14 +51,6 @@ void Environment::assign_listed(std::span<const std::uint64_t> words, std::span<
     }
 }
 
-Environment Environment::from_words(std::span<const std::uint64_t> words) { return from_words(words, 0); }
-
-Environment Environment::from_words(std::span<const std::uint64_t> words, std::size_t first_word) {
-    Environment e;
-    e.assign_words(words, first_word);
-    return e;
-}
-
 void Environment::assign_words(std::span<const std::uint64_t> words, std::size_t first_word) {
     std::size_t k = 0;
     for (std::size_t i = 0; i < words.size(); ++i) {
@@ -98,45 +90,10 @@ bool Environment::contains(AssumptionId a) const noexcept {
     return (data_[at] & bit_of(a)) != 0;
 }
 
-bool window_subset(std::span<const std::uint64_t> x, std::size_t x_first, std::span<const std::uint64_t> y,
-                   std::size_t y_first) noexcept {
-    for (std::size_t i = 0; i < x.size(); ++i) {
-        if (x[i] == 0) continue;
-        const std::size_t w = x_first + i;  // absolute word index
-        if (w < y_first || w - y_first >= y.size() || (x[i] & ~y[w - y_first]) != 0) return false;
-    }
+bool words_subset(std::span<const std::uint64_t> x, std::span<const std::uint64_t> y) noexcept {
+    for (std::size_t i = 0; i < x.size(); ++i)
+        if (x[i] != 0 && (i >= y.size() || (x[i] & ~y[i]) != 0)) return false;
     return true;
-}
-
-bool window_intersects(std::span<const std::uint64_t> x, std::size_t x_first, std::span<const std::uint64_t> y,
-                       std::size_t y_first) noexcept {
-    const std::size_t lo = std::max(x_first, y_first);
-    const std::size_t hi = std::min(x_first + x.size(), y_first + y.size());
-    for (std::size_t w = lo; w < hi; ++w)
-        if ((x[w - x_first] & y[w - y_first]) != 0) return true;
-    return false;
-}
-
-bool window_subset(std::span<const std::uint64_t> x, std::size_t x_first, SparseWords y) noexcept {
-    // Both walks go up: x's words in order, y's index by a cursor (a merge, no search).
-    std::size_t j = 0;
-    for (std::size_t i = 0; i < x.size(); ++i) {
-        if (x[i] == 0) continue;
-        const std::size_t w = x_first + i;
-        while (j < y.index.size() && y.index[j] < w) ++j;
-        if (j == y.index.size() || y.index[j] != w || (x[i] & ~y.words[j]) != 0) return false;
-    }
-    return true;
-}
-
-bool window_intersects(std::span<const std::uint64_t> x, std::size_t x_first, SparseWords y) noexcept {
-    for (std::size_t j = 0; j < y.index.size(); ++j) {
-        const std::size_t w = y.index[j];
-        if (w < x_first) continue;
-        if (w - x_first >= x.size()) break;
-        if ((x[w - x_first] & y.words[j]) != 0) return true;
-    }
-    return false;
 }
 
 bool sparse_subset(SparseWords x, SparseWords y) noexcept {
@@ -161,16 +118,6 @@ bool sparse_intersects(SparseWords x, SparseWords y) noexcept {
     return false;
 }
 
-bool sparse_intersects(SparseWords x, std::span<const std::uint64_t> y, std::size_t y_first) noexcept {
-    for (std::size_t i = 0; i < x.words.size(); ++i) {
-        const std::size_t w = x.index[i];
-        if (w < y_first) continue;
-        if (w - y_first >= y.size()) break;
-        if ((x.words[i] & y[w - y_first]) != 0) return true;
-    }
-    return false;
-}
-
 bool Environment::subset_of(const Environment& other) const noexcept {
     if (count() > other.count()) return false;  // a word other lacks
     return sparse_subset(sparse(), other.sparse());
@@ -185,12 +132,6 @@ std::uint32_t Environment::size() const noexcept {
 Environment Environment::with(AssumptionId a) const {
     Environment e = *this;
     e.insert(a);
-    return e;
-}
-
-Environment Environment::without(AssumptionId a) const {
-    Environment e = *this;
-    e.erase(a);
     return e;
 }
 

@@ -4,7 +4,7 @@
 //             tests) what it holds, however far apart its assumptions are and however many the ATMS
 //             has (docs/perf/engine.md, "Sparse environments"). SparseWords, a set given by its
 //             listed words (an Environment's own form, and weave's unions); free functions on
-//             sparse sets and on raw word windows for the hot loops.
+//             sparse sets and raw bitsets for the hot loops.
 // Ownership:  a value type; canonical copies are interned by EnvironmentTable (environment_table.hpp).
 // Invariants: words() holds no zero word; index()[i] is the word index of words()[i], strictly
 //             increasing; so the defaulted == is set equality and the hash of equal sets is equal.
@@ -32,14 +32,11 @@ public:
     Environment() = default;  // the empty environment {}
     // Builds the set {as...}; duplicates are allowed and collapse.
     [[nodiscard]] static Environment of(std::span<const AssumptionId> as);
-    // Builds a set from raw words (bit i <=> AssumptionId{i}); zero words at either end are dropped.
-    [[nodiscard]] static Environment from_words(std::span<const std::uint64_t> words);
-    // The same for a window: words[i] is word first_word + i, every word outside it zero.
-    [[nodiscard]] static Environment from_words(std::span<const std::uint64_t> words, std::size_t first_word);
-    // The set y (SparseWords above), as a window.
+    // The set y (SparseWords above).
     [[nodiscard]] static Environment from_sparse(SparseWords y);
-    // *this = from_words(words, first_word), reusing the storage it has (no allocation once it has
-    // grown): for a loop that forms many environments one after another.
+    // *this = the set of the window words (words[i] is word first_word + i, every word outside it
+    // zero), reusing the storage it has (no allocation once it has grown): for a loop that forms
+    // many environments one after another.
     void assign_words(std::span<const std::uint64_t> words, std::size_t first_word);
 
     [[nodiscard]] bool contains(AssumptionId a) const noexcept;
@@ -47,9 +44,8 @@ public:
     [[nodiscard]] bool empty() const noexcept { return data_.empty(); }
     [[nodiscard]] std::uint32_t size() const noexcept;  // number of assumptions
     [[nodiscard]] Environment with(AssumptionId a) const;
-    [[nodiscard]] Environment without(AssumptionId a) const;
     void insert(AssumptionId a);  // in place: *this = with(a)
-    void erase(AssumptionId a);   // in place: *this = without(a)
+    void erase(AssumptionId a);   // in place: *this without a
     friend Environment join(const Environment& x, const Environment& y);  // x ∪ y
     // The assumptions in increasing id order.
     [[nodiscard]] std::vector<AssumptionId> assumptions() const;
@@ -77,24 +73,12 @@ private:
     std::vector<std::uint64_t> data_;
 };
 
-// True iff the set of window x (x[i] is word x_first + i) is a subset of the set of window y.
-[[nodiscard]] bool window_subset(std::span<const std::uint64_t> x, std::size_t x_first,
-                                 std::span<const std::uint64_t> y, std::size_t y_first) noexcept;
-// The same for two windows that both start at word 0 (raw bitsets, any lengths).
-[[nodiscard]] inline bool words_subset(std::span<const std::uint64_t> x, std::span<const std::uint64_t> y) noexcept {
-    return window_subset(x, 0, y, 0);
-}
-// True iff the two windows share an assumption.
-[[nodiscard]] bool window_intersects(std::span<const std::uint64_t> x, std::size_t x_first,
-                                     std::span<const std::uint64_t> y, std::size_t y_first) noexcept;
+// True iff the raw bitset x (bit i <=> AssumptionId{i}) is a subset of the raw bitset y (any lengths).
+[[nodiscard]] bool words_subset(std::span<const std::uint64_t> x, std::span<const std::uint64_t> y) noexcept;
 
-// True iff the set of window x (x[i] is word x_first + i) is a subset of y.
-[[nodiscard]] bool window_subset(std::span<const std::uint64_t> x, std::size_t x_first, SparseWords y) noexcept;
-// True iff the set of window x and y share an assumption.
-[[nodiscard]] bool window_intersects(std::span<const std::uint64_t> x, std::size_t x_first, SparseWords y) noexcept;
-
-// The same questions with x given by its listed words: they cost what x lists (and, for y sparse,
-// what y lists), never the width of a window.
+// Subset and intersection with x given by its listed words: they cost what x lists (and, for y
+// sparse, what y lists), never the width of a window; y is a window (y[i] is word y_first + i) or
+// listed words.
 [[nodiscard]] bool sparse_subset(SparseWords x, SparseWords y) noexcept;
 // (inline: the backtracking search of interpretations calls it per nogood per pick)
 [[nodiscard]] inline bool sparse_subset(SparseWords x, std::span<const std::uint64_t> y, std::size_t y_first = 0) noexcept {
@@ -106,7 +90,6 @@ private:
     return true;
 }
 [[nodiscard]] bool sparse_intersects(SparseWords x, SparseWords y) noexcept;
-[[nodiscard]] bool sparse_intersects(SparseWords x, std::span<const std::uint64_t> y, std::size_t y_first = 0) noexcept;
 
 [[nodiscard]] Environment join(const Environment& x, const Environment& y);
 

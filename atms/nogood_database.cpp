@@ -24,79 +24,32 @@ std::uint64_t signature(std::span<const std::uint64_t> words) noexcept {
 }
 }  // namespace
 
-namespace {
-// The two forms a query set comes in, for subsumes_set: a raw window of words (words[i] is word
-// first + i) and a set given by its listed words. Each answers the three questions subsumes_set
-// asks of it at the cost of the stored nogood's (or constraint's) listed words.
-struct WindowSet {
-    std::span<const std::uint64_t> words;
-    std::size_t first;
-    [[nodiscard]] std::size_t count() const noexcept { return words.size(); }
-    [[nodiscard]] std::size_t index(std::size_t j) const noexcept { return first + j; }
-    [[nodiscard]] std::uint64_t word(std::size_t j) const noexcept { return words[j]; }
-    [[nodiscard]] std::span<const std::uint64_t> all_words() const noexcept { return words; }
-    [[nodiscard]] bool holds(const Environment& n) const noexcept { return sparse_subset(n.sparse(), words, first); }
-    [[nodiscard]] bool meets(const Environment& p) const noexcept { return sparse_intersects(p.sparse(), words, first); }
-    [[nodiscard]] bool other_member(const AtMostOneIndex& i, AssumptionId a) const noexcept {
-        return i.other_member(a, words, first);
-    }
-};
-struct ListedSet {
-    SparseWords set;
-    [[nodiscard]] std::size_t count() const noexcept { return set.words.size(); }
-    [[nodiscard]] std::size_t index(std::size_t j) const noexcept { return set.index[j]; }
-    [[nodiscard]] std::uint64_t word(std::size_t j) const noexcept { return set.words[j]; }
-    [[nodiscard]] std::span<const std::uint64_t> all_words() const noexcept { return set.words; }
-    [[nodiscard]] bool holds(const Environment& n) const noexcept { return sparse_subset(n.sparse(), set); }
-    [[nodiscard]] bool meets(const Environment& p) const noexcept { return sparse_intersects(p.sparse(), set); }
-    [[nodiscard]] bool other_member(const AtMostOneIndex& i, AssumptionId a) const noexcept {
-        return i.other_member(a, set);
-    }
-};
-}  // namespace
-
-template <class Set>
-bool NogoodDatabase::subsumes_set(const Set& set) const noexcept {
+bool NogoodDatabase::subsumes_sparse(SparseWords set) const noexcept {
     if (empty_nogood_) return true;
     // A stated nogood N of size 1 or >= 3 is filed under one of its assumptions: N is a subset of e
     // only if that one is in e, so only the buckets of e's assumptions are visited, and in them the
     // signature rejects most without touching N. A pair {a, b} is found from either member through
     // the partners of a.
-    const std::uint64_t sig = signature(set.all_words());
-    for (std::size_t j = 0; j < set.count(); ++j) {
-        for (std::uint64_t bits = set.word(j); bits != 0; bits &= bits - 1) {
-            const std::size_t a = set.index(j) * word_bits + static_cast<std::size_t>(std::countr_zero(bits));
+    const std::uint64_t sig = signature(set.words);
+    for (std::size_t j = 0; j < set.words.size(); ++j) {
+        for (std::uint64_t bits = set.words[j]; bits != 0; bits &= bits - 1) {
+            const std::size_t a = set.index[j] * word_bits + static_cast<std::size_t>(std::countr_zero(bits));
             if (a < partners_.size()) {
                 const Environment& p = partners_[a];
-                if (!p.empty() && set.meets(p)) return true;
+                if (!p.empty() && sparse_intersects(p.sparse(), set)) return true;
             }
             if (a < filed_.size()) {
                 for (const Filed& f : filed_[a]) {
                     if ((f.sig & ~sig) != 0) continue;
-                    if (set.holds(entries_[f.entry].env)) return true;
+                    if (sparse_subset(entries_[f.entry].env.sparse(), set)) return true;
                 }
             }
-            // A constraint with two members in e is found from either (AtMostOneIndex::violated_by,
-            // folded into this one pass over e).
+            // A constraint with two members in e is found from either, folded into this one pass.
             const AssumptionId id{static_cast<std::uint32_t>(a)};
-            if (!at_most_one_.of(id).empty() && set.other_member(at_most_one_, id)) return true;
+            if (!at_most_one_.of(id).empty() && at_most_one_.other_member(id, set)) return true;
         }
     }
     return false;
-}
-
-bool NogoodDatabase::subsumes_words(std::span<const std::uint64_t> words, std::size_t first_word) const noexcept {
-    return subsumes_set(WindowSet{words, first_word});
-}
-
-bool NogoodDatabase::subsumes_sparse(SparseWords set) const noexcept { return subsumes_set(ListedSet{set}); }
-
-bool NogoodDatabase::subsumes_with(std::span<const std::uint64_t> words, AssumptionId a) const noexcept {
-    if (empty_nogood_) return true;
-    if (a.value < partners_.size()) {
-        if (sparse_intersects(partners_[a.value].sparse(), words)) return true;
-    }
-    return larger_with(words, a) || at_most_one_.other_member(a, words);
 }
 
 bool NogoodDatabase::excludes(const Environment& base, AssumptionId a) const noexcept {

@@ -10,14 +10,9 @@
 //                                    visited, and a one-word signature (members modulo 64) rejects
 //                                    most there; two-assumption nogoods {a, b}, the usual
 //                                    exclusions, by one bitset of the partners b of each a of e;
-//                                    constraints by their listed members. subsumes_words(w, first)
-//                                    is the same question for a raw bitset window from word first,
-//                                    subsumes_sparse(set) for a set given by its listed words.
-//               subsumes_with(w, a)  is some nogood or constraint containing a violated by w?  When
-//                                    w minus a is consistent (the backtracking step of
-//                                    interpretations), this equals subsumes(w).
+//                                    constraints by their listed members. subsumes_sparse(set) is
+//                                    the same question for a set given by its listed words.
 //               excludes(base, a)    is base + a inconsistent, base being consistent without a?
-//                                    (the same question as subsumes_with, on base's listed words)
 //               within(e)            the live stated nogoods that are subsets of e.
 // Ownership:  owns copies of its nogood environments; EnvIds refer to the owner's EnvironmentTable.
 // Invariants: live stated nogoods are pairwise incomparable (a new nogood retires its supersets), and
@@ -36,13 +31,9 @@ namespace qm::atms {
 class NogoodDatabase {
 public:
     [[nodiscard]] bool subsumes(const Environment& e) const noexcept { return subsumes_sparse(e.sparse()); }
-    // words[i] is word first_word + i of the set; words outside the window are zero.
-    [[nodiscard]] bool subsumes_words(std::span<const std::uint64_t> words, std::size_t first_word = 0) const noexcept;
     // The same for a set given by its listed words (environment.hpp): costs what the listed words
     // hold, not the width of the window from its lowest to its highest assumption.
     [[nodiscard]] bool subsumes_sparse(SparseWords set) const noexcept;
-    // words is a raw bitset from word 0 (the mutable partial choice of interpretations).
-    [[nodiscard]] bool subsumes_with(std::span<const std::uint64_t> words, AssumptionId a) const noexcept;
     // Pre: base is consistent and does not hold a.
     [[nodiscard]] bool excludes(const Environment& base, AssumptionId a) const noexcept;
     // Adds env as a minimal nogood, retiring the live nogoods that are supersets of it.
@@ -75,10 +66,6 @@ public:
                                    std::uint64_t sig = ~std::uint64_t{0}) const noexcept;
 
 private:
-    // subsumes_words and subsumes_sparse: one pass over the query set's words, whichever form it
-    // comes in (nogood_database.cpp: a raw window or listed words).
-    template <class Set>
-    [[nodiscard]] bool subsumes_set(const Set& set) const noexcept;
     void set_partner(AssumptionId a, AssumptionId b, bool on);
     void retire(std::uint32_t entry);
     struct Entry {

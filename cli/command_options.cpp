@@ -169,6 +169,11 @@ int CommandOptions::bad_value(std::ostream& err, const std::string& option, cons
 
 std::string version_text() { return std::string("qm-atms ") + QM_ATMS_VERSION; }
 
+int bad_input(const Diagnostics& diagnostics, std::ostream& err) {
+    diagnostics.print(err);
+    return 2;
+}
+
 std::optional<std::size_t> positive(std::string_view s) {
     std::size_t v = 0;
     auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);

@@ -15,6 +15,7 @@
 // Ownership:  the targets given to the declarations are the caller's; they must outlive parse(),
 //             which writes them. CLI11 is included by command_options.cpp only.
 #pragma once
+#include "qm/diagnostics.hpp"
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -66,6 +67,10 @@ private:
 
 // "qm-atms VERSION" (the CMake project's version), as --version prints it.
 [[nodiscard]] std::string version_text();
+
+// Bad input found after parse() (a scene that does not read, say): prints the diagnostics and
+// returns 2, its exit status.
+int bad_input(const Diagnostics& diagnostics, std::ostream& err);
 
 // A positive decimal number (no sign, no blanks); nullopt otherwise.
 [[nodiscard]] std::optional<std::size_t> positive(std::string_view s);

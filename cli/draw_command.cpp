@@ -146,10 +146,7 @@ int draw_place(const g::Mechanism& m, const DrawArgs& a, std::ostream& os, std::
 int draw_history(const g::Mechanism& m, const DrawArgs& a, std::ostream& os, std::ostream& err) {
     Diagnostics diags;
     const auto e = envision_for_drawing(m, a.use_cache, a.cache_dir, diags);
-    if (!e || diags.has_errors()) {
-        diags.print(err);
-        return 2;
-    }
+    if (!e || diags.has_errors()) return bad_input(diags, err);
     const auto h = parse_history(*e, a.history, diags);
     diags.print(err);
     if (!h) return 2;
@@ -164,10 +161,7 @@ int draw_command(std::span<const std::string> args, std::ostream& out, std::ostr
     if (auto status = parse_args(args, a, out, err)) return *status;
     Diagnostics diags;
     const auto m = g::read_mechanism_file(a.scene, diags);
-    if (!m) {
-        diags.print(err);
-        return 2;
-    }
+    if (!m) return bad_input(diags, err);
     std::ostringstream svg;
     std::string title;
     if (a.has_history) {
@@ -176,10 +170,7 @@ int draw_command(std::span<const std::string> args, std::ostream& out, std::ostr
         if (const int status = draw_place(*m, a, svg, err, title)) return status;
     } else {
         const auto q = g::parse_configuration(*m, a.config, diags);
-        if (!q) {
-            diags.print(err);
-            return 2;
-        }
+        if (!q) return bad_input(diags, err);
         std::vector<g::PartId> drawn;
         for (std::uint32_t i = 0; i < m->parts.size(); ++i) drawn.push_back(g::PartId{i});
         const auto contacts = g::mechanism_contacts(*m, *q, drawn);

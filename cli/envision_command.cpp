@@ -232,17 +232,11 @@ int envision_command(std::span<const std::string> args, std::ostream& out, std::
     if (auto status = parse_options(args, o, out, err)) return *status;
     Diagnostics diags;
     const auto m = g::read_mechanism_file(o.scene, diags);
-    if (!m) {
-        diags.print(err);
-        return 2;
-    }
+    if (!m) return bad_input(diags, err);
     ev::EnvisionOptions options;
     for (const auto& w : o.without)
         if (auto ref = parse_without(*m, w, diags)) options.without.push_back(*ref);
-    if (diags.has_errors()) {
-        diags.print(err);
-        return 2;
-    }
+    if (diags.has_errors()) return bad_input(diags, err);
     if (o.rules) {
         options.rules = *o.rules;
     } else if (const auto dir = default_rules_directory()) {
@@ -272,10 +266,7 @@ int envision_command(std::span<const std::string> args, std::ostream& out, std::
     }
     if (o.from) {
         const auto s = ev::find_state(*e, *o.from, "--from", diags);
-        if (!s) {
-            diags.print(err);
-            return 2;
-        }
+        if (!s) return bad_input(diags, err);
         ev::restrict_to_reachable(*e, s->chain, s->state);
     }
     if (o.dot || o.svg) {

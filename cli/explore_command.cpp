@@ -51,23 +51,14 @@ int explore_command(std::span<const std::string> args, std::ostream& out, std::o
     const bool use_cache = !no_cache, envisioned = !no_envision;
     Diagnostics diags;
     const auto m = g::read_mechanism_file(scenes[0], diags);
-    if (!m) {
-        diags.print(err);
-        return 2;
-    }
+    if (!m) return bad_input(diags, err);
     const auto cache = bridge::open_place_cache(use_cache, cache_dir);
     const auto selection = g::kinematic_pairs(*m);
     std::vector<ExplorePair> pairs;
-    if (!g::check_grid_limit(*m, selection, diags)) {
-        diags.print(err);
-        return 2;
-    }
+    if (!g::check_grid_limit(*m, selection, diags)) return bad_input(diags, err);
     for (const auto& pair : selection.modelled) {
         auto places = bridge::pair_places(*m, pair, {.cache = cache ? &*cache : nullptr, .space = true, .oracle = true}, diags);
-        if (!places) {
-            diags.print(err);
-            return 2;
-        }
+        if (!places) return bad_input(diags, err);
         pairs.push_back({pair, std::move(*places)});
     }
     // The envisionment, as `qm-atms envision` computes it (the same ids), and the behaviours asked for.
@@ -82,10 +73,7 @@ int explore_command(std::span<const std::string> args, std::ostream& out, std::o
         }
         for (const auto& text : path_texts) {
             const auto b = qm::envision::parse_behaviour(*e, text, "--path", avoid, diags);
-            if (!b) {
-                diags.print(err);
-                return 2;
-            }
+            if (!b) return bad_input(diags, err);
             const auto answer = qm::envision::find_behaviour(*e, *b);
             if (answer.path.empty()) err << "qm-atms: explore: no path matches '" << text << "' (envision --path says how far one gets)\n";
             paths.push_back({text, b->chain, answer.path});

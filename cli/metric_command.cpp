@@ -52,7 +52,7 @@ int usage_error(std::ostream& err, const std::string& what) {
 
 // `; Alex scene of PATH at 'CONFIG' (qm-atms --emit-def)`: the path and CONFIG as typed may hold
 // line breaks or other control characters, which would end the `;` comment early and leave the
-// rest as text the reader refuses (issue 19); they are written as escapes (qm/printable_text.hpp).
+// rest as text the reader refuses; they are written as escapes (qm/printable_text.hpp).
 std::string emitted_scene_comment(const std::string& path, const std::string& config) {
     return "; Alex scene of " + printable_text(path) + " at " +
            (config.empty() ? std::string("the drawn configuration") : "'" + printable_text(config) + "'") + " (qm-atms --emit-def)\n";
@@ -93,10 +93,7 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
     if (cache_text) cache_dir = *cache_text;
     Diagnostics diags;
     const auto m = g::read_mechanism_file(scenes[0], diags);
-    if (!m) {
-        diags.print(err);
-        return 2;
-    }
+    if (!m) return bad_input(diags, err);
     const std::optional<g::PlaceCache> cache = bridge::open_place_cache(use_cache, cache_dir);
     if (svg_dir) {
         std::error_code ec;
@@ -104,10 +101,7 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
         if (ec) return usage_error(err, "cannot create the SVG directory '" + svg_dir->string() + "'");
     }
     const auto selection = g::kinematic_pairs(*m);
-    if (!g::check_grid_limit(*m, selection, diags)) {
-        diags.print(err);
-        return 2;
-    }
+    if (!g::check_grid_limit(*m, selection, diags)) return bad_input(diags, err);
     std::ostringstream text, js;
     text << "mechanism " << m->name << ": " << selection.modelled.size() << " kinematic pair" << (selection.modelled.size() == 1 ? "" : "s") << '\n';
     js << "{\"schema\":\"qm-metric-places/1\",\"mechanism\":";
@@ -116,10 +110,7 @@ int places_command(std::span<const std::string> args, std::ostream& out, std::os
     for (std::size_t k = 0; k < selection.modelled.size(); ++k) {
         const auto& pair = selection.modelled[k];
         auto found = bridge::pair_places(*m, pair, {.cache = cache ? &*cache : nullptr, .space = svg_dir.has_value(), .oracle = svg_dir.has_value()}, diags);
-        if (!found) {
-            diags.print(err);
-            return 2;
-        }
+        if (!found) return bad_input(diags, err);
         auto& places = *found;
         if (svg_dir) {  // the picture needs the sampled space, which the cache does not keep
             const std::string name = m->parts[pair.a].name + "--" + m->parts[pair.b].name + ".svg";

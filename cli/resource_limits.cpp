@@ -118,8 +118,7 @@ void apply_memory_limit(const ResourceLimits& limits) {
 
 std::string limit_message(const LimitReached& limit, const std::string& doing) {
     std::string where = "qm-atms: ";
-    if (limit.where)
-        where = limit.where->file + ":" + std::to_string(limit.where->line) + ":" + std::to_string(limit.where->column) + ": ";
+    if (limit.where) where = to_string(*limit.where) + ": ";
     const bool facts = limit.kind == LimitReached::Kind::facts;
     return where + "error: " + limit_noun(limit.kind) + " limit " + std::to_string(limit.limit) + " reached while " +
            (limit.doing.empty() ? doing : limit.doing) + "; raise it with " + (facts ? "--max-facts" : "--max-environments") + "\n";

@@ -46,8 +46,8 @@ std::optional<int> parse(std::span<const std::string> args, RunOptions& o, std::
 void print_diagnostics(const Diagnostics& diagnostics, std::ostream& err) {
     engine::SourceTexts texts;
     for (const Diagnostic& d : diagnostics.items()) {
-        if (!d.source_line.empty() || texts.find(d.where.file)) continue;
-        std::ifstream in(d.where.file, std::ios::binary);
+        if (!d.source_line.empty() || texts.find(d.where.file.str())) continue;
+        std::ifstream in(d.where.file.str(), std::ios::binary);
         std::stringstream text;
         text << in.rdbuf();
         texts.add(engine::SourceText(d.where.file, text.str()));

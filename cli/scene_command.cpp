@@ -6,7 +6,6 @@
 #include "analysis/analysis.hpp"
 #include "analysis/result_printer.hpp"
 #include "analysis/why_printer.hpp"
-#include "exit_owned.hpp"
 #include "bridge/scene_at_config.hpp"
 #include "query_text.hpp"
 #include "rules_location.hpp"
@@ -135,10 +134,7 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     apply_memory_limit(options->limits);
     Diagnostics d;
     std::optional<scene::Scene> scene = load_scene(*options, d, err);
-    if (!scene || d.has_errors()) {
-        d.print(err);
-        return 2;
-    }
+    if (!scene || d.has_errors()) return bad_input(d, err);
     analysis::AnalysisOptions ao;
     ao.combination_limit = options->limit;
     ao.kinematic = options->kinematic;
@@ -174,31 +170,26 @@ int scene_command(std::span<const std::string> args, std::istream& in, std::ostr
     auto analysed = analysis::analyse(*scene, ao, d);
     d.print(err);  // errors, or warnings about the laws (engine/law_check.hpp, engine/predicate_check.hpp)
     if (!analysed) return 2;
-    // Lives until the process ends: not freed piece by piece at return (cli/exit_owned.hpp).
-    const ExitOwned<analysis::Analysis> analysis(std::move(*analysed));
     d = Diagnostics{};
     // Contacts the laws cannot use (a corner against a surface it cannot touch, Def 25): warned, located.
     Diagnostics inert;
-    for (std::size_t s = 1; s <= analysis->situations().size(); ++s)
+    for (std::size_t s = 1; s <= analysed->situations().size(); ++s)
         if (!options->situation || s == situation)
-            for (Diagnostic& w : analysis->inert_contacts(s)) inert.add(std::move(w));
+            for (Diagnostic& w : analysed->inert_contacts(s)) inert.add(std::move(w));
     inert.print(err);
     if (options->interactive) {
-        run_session(*analysis, options->json, situation, in, out, err);
+        run_session(*analysed, options->json, situation, in, out, err);
         return 0;
     }
     // The answer is written whole or not at all: a limit reached while it is being made
     // (qm/limit_reached.hpp, --max-memory) leaves standard output empty.
     std::ostringstream answer;
     if (why) {
-        auto w = analysis->why(*why, situation, d);
-        if (!w) {
-            d.print(err);
-            return 2;
-        }
+        auto w = analysed->why(*why, situation, d);
+        if (!w) return bad_input(d, err);
         options->json ? analysis::write_why_json(answer, *w) : analysis::print_why(answer, *w, {.full = options->full});
     } else {
-        print_results(*analysis, *options, ao.without, added, answer, err);
+        print_results(*analysed, *options, ao.without, added, answer, err);
     }
     out << answer.str();
     return 0;

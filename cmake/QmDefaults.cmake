@@ -44,8 +44,7 @@ if(QM_SANITIZE)
   add_link_options(-fsanitize=address,undefined)
   add_compile_definitions(QM_ENABLE_ASSERTS=1)
   # Tests that do a Release-sized amount of geometry check a smaller sample under the sanitizers
-  # (they run 30x slower there); they ask this, not the compiler's own macros. The CLI asks it too:
-  # there it frees at exit what a release build leaves to the operating system (cli/exit_owned.hpp).
+  # (they run 30x slower there); they ask this, not the compiler's own macros.
   add_compile_definitions(QM_SANITIZED_BUILD=1)
 endif()
 

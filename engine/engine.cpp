@@ -179,10 +179,6 @@ std::optional<FactId> Engine::fact_of(atms::NodeId n) const {
 
 std::vector<atms::EnvId> Engine::interpretations() { return atms_.interpretations(choice_sets_); }
 
-std::vector<atms::EnvId> Engine::interpretations(atms::EnvId base) {
-    return atms_.interpretations(choice_sets_, base);
-}
-
 const Firing& Engine::firing(atms::InformantId i) const {
     QM_REQUIRE(i.value < firings_.size(), "informant id out of range");
     return firings_[i.value];

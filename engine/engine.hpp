@@ -108,7 +108,6 @@ public:
     [[nodiscard]] atms::JustId choice_set_constraint(std::size_t i) const { return choice_set_constraints_.at(i); }
     [[nodiscard]] const SourceLocation& choice_set_where(std::size_t i) const { return choice_set_where_.at(i); }
     [[nodiscard]] std::vector<atms::EnvId> interpretations();
-    [[nodiscard]] std::vector<atms::EnvId> interpretations(atms::EnvId base);
 
     // ---- provenance -----------------------------------------------------------------------------
     [[nodiscard]] const CompiledProgram& program() const noexcept { return program_; }

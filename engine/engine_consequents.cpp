@@ -161,8 +161,7 @@ void Engine::declare_choice_set(const CompiledConsequent& c, const CompiledRule&
         const SourceLocation& at = choice_set_where_[owner->second];
         diagnostics.error(c.where, "rule '" + rule.name + "': `exactly one` would put " + print(a) +
                                        " in a second choice set: it is already in the choice set {" + members +
-                                       "} declared at " + at.file + ":" + std::to_string(at.line) + ":" +
-                                       std::to_string(at.column) + "; choice sets must be disjoint or identical");
+                                       "} declared at " + to_string(at) + "; choice sets must be disjoint or identical");
         return;
     }
     choice_set_constraints_.push_back(atms_.add_at_most_one(why, set));

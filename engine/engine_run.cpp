@@ -182,7 +182,7 @@ void Engine::match_rule(RuleId r, std::optional<Seed> seed, std::optional<std::u
                 s->engine.agenda_.push(s->r, b, ants, s->rule_context, s->urgent);
             },
             [s = &sink](const MatchError& e) {
-                std::string where = e.where.file + ":" + std::to_string(e.where.line) + ":" + std::to_string(e.where.column);
+                std::string where = to_string(e.where);
                 if (s->reported.insert({where, e.message}).second)
                     s->diagnostics.error(e.where, "rule '" + s->rule.name + "': " + e.message);
             },

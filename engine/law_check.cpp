@@ -76,13 +76,13 @@ void check_laws(const ProgramSpec& spec, const LawCheckOptions& options, Diagnos
     if (options.require_citations) {
         std::set<std::string> cited, warned;
         for (const CitationSpec& c : spec.citations) {
-            cited.insert(c.where.file);
+            cited.insert(c.where.file.str());
             if (!names_part_of_thesis(c.text))
                 warn(diagnostics, c.where, "a citation names the part of the thesis the file encodes, with its number (e.g. \"section 3.2, "
                                            "Table 3.2\", \"Definition 24\", \"Law 5\"), but '" + c.text + "' names none");
         }
         for (const RuleSpec& r : spec.rules)
-            if (!cited.contains(r.where.file) && warned.insert(r.where.file).second)
+            if (!cited.contains(r.where.file.str()) && warned.insert(r.where.file.str()).second)
                 warn(diagnostics, r.where, "a law file cites the thesis: add a line `cite \"section ..., Table ...\"` to this "
                                            "file naming what its rules encode (explanations print it beside each law)");
     }
@@ -99,7 +99,7 @@ void check_laws(const ProgramSpec& spec, const LawCheckOptions& options, Diagnos
 std::map<std::string, std::string> citations(const ProgramSpec& spec) {
     std::map<std::string, std::string> out;
     for (const CitationSpec& c : spec.citations) {
-        std::string& text = out[c.where.file];
+        std::string& text = out[c.where.file.str()];
         text += (text.empty() ? "" : "; ") + c.text;
     }
     return out;

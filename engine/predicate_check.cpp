@@ -12,10 +12,6 @@
 namespace qm::engine {
 namespace {
 
-std::string at(const SourceLocation& w) {
-    return w.file + ":" + std::to_string(w.line) + ":" + std::to_string(w.column);
-}
-
 void warn(Diagnostics& d, const SourceLocation& where, std::string message) {
     d.add({Severity::warning, where, std::move(message), {}, {}});
 }
@@ -108,7 +104,7 @@ private:
     // An unknown predicate is almost always a misspelling: no fact of it can ever exist.
     void known(const AtomSpec& a, const std::string& where_used) {
         // A builtin test's name as a predicate is rule_checker.hpp's error.
-        if (is_known(a.predicate) || tests_.contains(a.predicate) || !reported_.insert(at(a.where)).second) return;
+        if (is_known(a.predicate) || tests_.contains(a.predicate) || !reported_.insert(to_string(a.where)).second) return;
         ok_ = false;
         std::vector<std::string> candidates;
         for (const std::string& p : stated_) candidates.push_back(p);

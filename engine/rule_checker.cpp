@@ -6,10 +6,6 @@
 namespace qm::engine {
 namespace {
 
-std::string at(const SourceLocation& w) {
-    return w.file + ":" + std::to_string(w.line) + ":" + std::to_string(w.column);
-}
-
 class Checker {
 public:
     Checker(Diagnostics& diagnostics, const BuiltinRegistry& builtins) : diagnostics_(diagnostics), builtins_(builtins) {}
@@ -28,14 +24,14 @@ public:
         ok_ = false;
         diagnostics_.error(a.where, "predicate '" + a.predicate + "' is used here with " + std::to_string(a.args.size()) +
                                         " argument(s) but with " + std::to_string(it->second->args.size()) +
-                                        " at " + at(it->second->where));
+                                        " at " + to_string(it->second->where));
     }
 
     void rule(const RuleSpec& r) {
         auto [it, fresh] = first_rule_.try_emplace(r.name, &r);
         if (!fresh) {
             ok_ = false;
-            diagnostics_.error(r.where, "rule '" + r.name + "' is already defined at " + at(it->second->where));
+            diagnostics_.error(r.where, "rule '" + r.name + "' is already defined at " + to_string(it->second->where));
         }
         for (const ConditionSpec& c : r.conditions) {
             switch (c.kind) {
@@ -83,7 +79,7 @@ public:
             return fail(p.rank.where, "the rank atom must have exactly one variable that the chosen atom does not have "
                                       "(the rank), but has " + std::to_string(extra.size()));
         if (auto [it, fresh] = preferred_.try_emplace(p.choice.predicate, &p); !fresh)
-            return fail(p.choice.where, "(" + p.choice.predicate + " ...) already has a preference at " + at(it->second->where));
+            return fail(p.choice.where, "(" + p.choice.predicate + " ...) already has a preference at " + to_string(it->second->where));
         // A warning, not an error: such a preference chooses nothing (e.g. a few laws loaded alone,
         // their motions stated as inputs, as tests/rules/law_harness.hpp does).
         if (!chosen.contains(p.choice.predicate))

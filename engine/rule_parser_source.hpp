@@ -22,7 +22,7 @@ using SourceText = qm::SourceText;  // qm/source_text.hpp
 class SourceTexts {
 public:
     void add(SourceText text) {
-        std::string key = text.file();
+        std::string key = text.file().str();
         texts_.insert_or_assign(std::move(key), std::move(text));
     }
     [[nodiscard]] const SourceText* find(const std::string& file) const {
@@ -35,7 +35,7 @@ public:
     // it points at, when its file was read.
     void attach_lines(const Diagnostics& from, Diagnostics& to) const {
         for (const Diagnostic& d : from.items()) {
-            const SourceText* t = d.source_line.empty() ? find(d.where.file) : nullptr;
+            const SourceText* t = d.source_line.empty() ? find(d.where.file.str()) : nullptr;
             if (t) to.add(d.severity, d.where, d.message, t->line(d.where.line), d.notes);
             else to.add(d);
         }

@@ -47,7 +47,7 @@ public:
 private:
     void include(const ast::Include& inc, const SourceText& from) {
         const std::string target =
-            normal((std::filesystem::path(from.file()).parent_path() / inc.file.text).string());
+            normal((std::filesystem::path(from.file().str()).parent_path() / inc.file.text).string());
         if (open_.count(target)) {
             diagnostics_.error(from.locate(static_cast<std::size_t>(inc.id_first)),
                                "include cycle: '" + target + "' is already being read",

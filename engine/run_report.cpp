@@ -67,7 +67,7 @@ RunReport make_report(Engine& engine) {
         for (atms::AssumptionId a : set) alone += atms.is_consistent(atms.environment({a})) ? 1 : 0;
         const SourceLocation& at = engine.choice_set_where(i);
         r.unlisted.push_back({env_text(engine, atms::Environment::of(set)),
-                              at.file + ":" + std::to_string(at.line) + ":" + std::to_string(at.column),
+                              to_string(at),
                               alone * (alone - (alone == 0 ? 0 : 1)) / 2});
     }
     r.nogoods = sorted_envs(engine, nogoods);

@@ -55,7 +55,7 @@ WhyStep step_of(Engine& e, atms::JustId j) {
     const atms::Justification& just = e.atms().justification(j);
     const Firing& firing = e.firing(just.informant);
     WhyStep s;
-    std::string at = firing.where->file + ":" + std::to_string(firing.where->line);
+    std::string at = firing.where->file.str() + ":" + std::to_string(firing.where->line);
     switch (firing.kind) {
         case Firing::Kind::rule: {
             const CompiledRule& rule = e.program().rules[*firing.rule];

@@ -171,7 +171,7 @@ bool read_preference(engine::Engine& e, const g::Mechanism& m, const Chain& chai
         if (meaning.empty() || meaning.front().is_place) continue;
         const engine::CompiledPreference* p = engine::choosing_preference(e, ordered.sets[k]);
         if (!p) continue;
-        tables.preference_where = p->where.file + ":" + std::to_string(p->where.line);
+        tables.preference_where = p->where.file.str() + ":" + std::to_string(p->where.line);
         const std::size_t o = meaning.front().index;
         std::vector<atms::AssumptionId> refs;
         for (const auto& r : (*references)[o]) {
@@ -275,7 +275,7 @@ bool read_settling(engine::Engine& e, const g::Mechanism& m, const Chain& chain,
                             const auto refuted = refutations.of(e.atms().environment(env));
                             std::optional<ChainTables::Refuter> r;
                             if (refuted)
-                                r = ChainTables::Refuter{refuted->rule, refuted->where.file + ":" + std::to_string(refuted->where.line)};
+                                r = ChainTables::Refuter{refuted->rule, refuted->where.file.str() + ":" + std::to_string(refuted->where.line)};
                             tables.set_settling(o, mask, c, fixes, reach, x, r);
                         }
     }

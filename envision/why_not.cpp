@@ -35,7 +35,7 @@ std::string step_text(engine::Engine& e, atms::JustId j) {
     };
     std::string out = node(just.consequent) + " <= ";
     if (f.kind == engine::Firing::Kind::rule && f.rule)
-        out += "rule " + e.program().rules[*f.rule].name + " at " + f.where->file + ":" + std::to_string(f.where->line);
+        out += "rule " + e.program().rules[*f.rule].name + " at " + f.where->file.str() + ":" + std::to_string(f.where->line);
     else
         out += f.kind == engine::Firing::Kind::premise ? "premise" : "assumption";
     for (std::size_t i = 0; i < just.antecedents.size(); ++i) out += (i ? ", " : ": ") + node(just.antecedents[i]);

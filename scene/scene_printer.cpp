@@ -1,20 +1,12 @@
 // scene/scene_printer.cpp: writes a checked Scene back in either notation (scene/scene_printer.hpp).
 #include "scene/scene_printer.hpp"
+#include "scene/direction_text.hpp"
 
 #include <algorithm>
 #include <sstream>
 #include <utility>
 
 namespace qm::scene {
-
-std::string print_direction(const Direction& d) {
-    std::string out = "(";
-    for (std::size_t i = 0; i < d.size(); ++i) {
-        if (i) out += ' ';
-        out += sign_char(d[i]);
-    }
-    return out + ")";
-}
 
 std::string print_pattern(const DirectionPattern& p) {
     std::string out = "(";
@@ -29,7 +21,7 @@ namespace {
 
 // `obj (dir) (origin) [cause]`, the body shared by every force form.
 std::string force_body(const Scene& s, const Force& f) {
-    std::string out = s.objects[f.object].name + " " + print_direction(f.direction) + " " + print_direction(f.origin);
+    std::string out = s.objects[f.object].name + " " + thesis_text(f.direction) + " " + thesis_text(f.origin);
     if (s.causes[f.cause].is_explicit) out += " " + s.causes[f.cause].name;
     return out;
 }
@@ -38,12 +30,12 @@ std::string force_body(const Scene& s, const Force& f) {
 std::string surface_body(const Scene& s, const Surface& f) {
     if (f.corner)
         return "(" + f.name + " " + s.surfaces[f.corner->first].name + " " + s.surfaces[f.corner->second].name + " " +
-               print_direction(f.origin) + ")";
-    return "(" + f.name + " " + print_direction(f.normal) + " " + print_direction(f.origin) + ")";
+               thesis_text(f.origin) + ")";
+    return "(" + f.name + " " + thesis_text(f.normal) + " " + thesis_text(f.origin) + ")";
 }
 
 std::string motion_body(const Scene& s, const Motion& m) {
-    return s.objects[m.object].name + " " + print_direction(m.translation) + " " + print_direction(m.rotation);
+    return s.objects[m.object].name + " " + thesis_text(m.translation) + " " + thesis_text(m.rotation);
 }
 
 // One object's faces (corners == false) or corners, in SurfaceId order.

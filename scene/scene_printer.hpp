@@ -1,7 +1,7 @@
 // scene/scene_printer.hpp
 // Provides:   print_scene (a checked Scene in the s-expression notation of Figure 6.1) and
 //             print_scene_keywords (the `Keyword : items` notation of Figures 7.12/7.16), both as
-//             documented in docs/SCENE_FORMAT.md, plus print_direction / print_pattern. Corners and
+//             documented in docs/SCENE_FORMAT.md, plus print_pattern. Corners and
 //             Linkages sections are written only when the scene has corners or linkages.
 // Invariants: for every checked Scene s, reading print_scene(s) or print_scene_keywords(s) back
 //             gives a Scene equal to s (tests/scene/scene_printer_test.cpp). Implicit causes
@@ -13,7 +13,6 @@
 
 namespace qm::scene {
 
-[[nodiscard]] std::string print_direction(const Direction& d);        // "(0 -)"
 [[nodiscard]] std::string print_pattern(const DirectionPattern& p);   // "(?x 0)"
 [[nodiscard]] std::string print_scene(const Scene& scene);
 [[nodiscard]] std::string print_scene_keywords(const Scene& scene);

@@ -2,16 +2,17 @@
 """Compares two qm-atms builds on every bundled scene, byte for byte (standard output, standard error
 and exit status), for a change that must not change behaviour (docs/PERFORMANCE.md, "Same
 outputs"). The commands:
-  - every command of bench/bridge/compare_outputs.py (scenarios/alex/*.def text and --json; every
-    metric scene as drawn and at one configuration per place, --emit-def, text and --json);
-  - scenarios/alex/*.def with --kinematic, text and --json;
+  - scenarios/alex/*.def, text and --json, and with --kinematic, text and --json;
+  - every metric scene (scenarios/metric/*.def, scenarios/clock/*.def): --emit-def and the text and
+    --json analysis as drawn, and --emit-def, text and --json analysis at one configuration per
+    place of every kinematic pair (bench/bridge/configurations.py, from the BEFORE build's --places);
   - `--why` on every object's motions in every situation of scenarios/alex/*.def: every
     translation of a 2-D scene (the zero and the six axis directions of a 3-D one) and every
     rotation (the zero and the six axis turns in 3-D), text, and --json for the first object;
   - `check` of the rules folder.
 usage: compare_outputs.py BEFORE-QM-ATMS BEFORE-RULES AFTER-QM-ATMS AFTER-RULES OUT-DIR [--every K] [--jobs J]
                           [--before-root DIR]
-  Run from the source tree's root. --every K as in bench/bridge/compare_outputs.py (default 4).
+  Run from the source tree's root. --every K keeps every K-th place of scenarios/clock/ (default 4).
   --before-root DIR: run the BEFORE build from DIR (default: here), e.g. a folder whose `rules`
   links to the old laws and whose `scenarios` and `bench` link to this tree's, so that both builds
   are given the same relative paths (`rules`) and print the same locations.
@@ -25,8 +26,6 @@ import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "bridge"))
-import compare_outputs as bridge  # noqa: E402
 
 
 def run(binary, rules, args, cwd=None):
@@ -36,6 +35,12 @@ def run(binary, rules, args, cwd=None):
         full = [binary] + args + (["--rules", rules] if args[0] != "--emit-def" else [])
     r = subprocess.run(full, capture_output=True, cwd=cwd)
     return r.returncode, r.stdout, r.stderr
+
+
+def configurations(binary, scene, every):
+    out = subprocess.run([sys.executable, os.path.join(HERE, "..", "bridge", "configurations.py"), binary, scene, "--every",
+                          str(every)], check=True, capture_output=True, text=True).stdout
+    return [line.split(" ", 3)[3] for line in out.splitlines()]
 
 
 def directions(dims, rotation):
@@ -88,7 +93,7 @@ def main():
         commands += why_commands(before, before_rules, s, root)
     for s in sorted(glob.glob("scenarios/metric/*.def")) + sorted(glob.glob("scenarios/clock/*.def")):
         commands += [["--emit-def", s], [s], [s, "--json"]]
-        for c in bridge.configurations(before, s, every if s.startswith("scenarios/clock/") else 1):
+        for c in configurations(before, s, every if s.startswith("scenarios/clock/") else 1):
             commands += [["--emit-def", s, c], [s, "--config", c], [s, "--config", c, "--json"]]
 
     def both(c):

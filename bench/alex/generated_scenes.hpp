@@ -4,8 +4,8 @@
 //             Figure 7.2's block (three surfaces on top, three below, three contacts per level, a
 //             force on every block); train(N), N pinned gears, each meshing the next on one tooth
 //             (teeth alternate so that the train turns), with a driving torque on the first.
-// Used by:    alex_bench (whole-process timings) and scene_gen (writes one scene for scripts such as
-//             bench/engine/linear_fit.sh).
+// Used by:    scene_gen (writes one scene for bench/startup/startup.py --args and
+//             bench/engine/linear_fit.sh) and scene_read_bench.
 #pragma once
 #include <string>
 

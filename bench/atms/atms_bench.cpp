@@ -9,13 +9,9 @@
 //             are the ones that finish (from 6x the smallest on, a run takes minutes: labels any
 //             ATMS keeping them complete must compute);
 //      clauses are given in random order, so labels are revised, not built bottom-up;
-//   2. N-queens as ATMS interpretations, N = 4 ... 14: one choice set per row (assumption = column),
-//      attacks as pairwise nogoods ("pw") or as one at-most-one constraint per column and diagonal
-//      ("amo"; queens.hpp); timed: the whole run (build the ATMS, enumerate and intern every
-//      solution), the build alone, Atms::interpretations alone on a built ATMS (interned), and
-//      for_each_interpretation alone on a built ATMS (streamed, nothing interned); and a plain
-//      bitmask backtracking N-queens, the floor, in the same run with the same flags. The ratios
-//      are the at-most-one encoding's times over the floor's;
+//   2. N-queens as ATMS interpretations, N = 4 ... 14 (queens.hpp, the at-most-one encoding): the
+//      whole run (build the ATMS, enumerate and intern every solution), against a plain bitmask
+//      backtracking N-queens, the floor; atms_gbench times each encoding and step apart;
 //   3. interpretations on a base environment (base_queries.hpp): 200 queries of an envisioner's
 //      kind (places of kinematic pairs x motions of objects, on top of a state's facts), each
 //      streamed up to 5,000 interpretations;
@@ -25,7 +21,6 @@
 // stdout is line buffered, so a run piped into a file or `tee` shows each row when it is done.
 // Usage: atms_bench [--quick] [--queens | --theories | --bases]   (--quick: fewer repetitions,
 //        smaller sizes, N up to 10; --queens, --theories, --bases: only that part)
-//        atms_bench --one NAME   one run of one configuration, for callgrind (see run_one)
 #include "atms/atms.hpp"
 #include "base_queries.hpp"
 #include "queens.hpp"
@@ -197,43 +192,6 @@ void theory_row(int reps, F&& build) {
 }
 
 // ---- 2. N-queens on the ATMS -------------------------------------------------------------------
-// Wall time of f() alone, after setup() (untimed) builds what it works on: median and minimum.
-template <class Setup, class F>
-Timing time_after(int reps, Setup&& setup, F&& f) {
-    std::vector<double> t;
-    for (int i = 0; i < reps; ++i) {
-        auto state = setup();
-        const auto t0 = Clock::now();
-        f(*state);
-        t.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
-    }
-    std::sort(t.begin(), t.end());
-    return {t[t.size() / 2], t.front()};
-}
-
-struct QueensRow {
-    std::size_t solutions = 0, streamed = 0;
-    Timing whole, build, interpretations, streaming;
-};
-
-// whole: build the ATMS and intern every interpretation; build: assumptions and nogoods (or
-// constraints) only; interpretations: Atms::interpretations (interned) on a built ATMS;
-// streaming: for_each_interpretation (nothing interned) on a built ATMS.
-QueensRow queens_row(int n, Encoding encoding, int reps) {
-    QueensRow row;
-    auto built = [&] { return std::make_unique<Queens>(n, encoding); };
-    row.whole = time_runs(reps, [&] {
-        Queens q(n, encoding);
-        row.solutions = q.atms.interpretations(q.rows).size();
-    });
-    row.build = time_runs(reps, [&] { Queens q(n, encoding); });
-    row.interpretations = time_after(reps, built, [&](Queens& q) { row.solutions = q.atms.interpretations(q.rows).size(); });
-    row.streaming = time_after(reps, built, [&](Queens& q) {
-        row.streamed = q.atms.for_each_interpretation(q.rows, q.atms.empty_environment(), [](const Environment&) { return true; });
-    });
-    return row;
-}
-
 void theory_tables(bool quick) {
     const int reps = quick ? 3 : 7;
     std::printf("== label propagation, local theories: 8 layers, growing width (median of %d) ==\n", reps);
@@ -250,29 +208,21 @@ void theory_tables(bool quick) {
 const std::size_t queens_solutions[] = {0, 1, 0, 0, 2, 10, 4, 40, 92, 352, 724, 2680, 14200, 73712, 365596};
 
 void queens_table(bool quick) {
-    std::printf("\n== N-queens as interpretations: ms, median of runs (plain: bitmask backtracking, the floor) ==\n");
-    std::printf("%3s %9s %9s | %9s %9s %9s %9s | %9s %9s %9s %9s | %8s %8s %8s | %9s\n", "N", "solutions", "plain",
-                "pw whole", "pw build", "pw interp", "pw stream", "amo whole", "amo build", "amo inter", "amo strm",
-                "whole/pl", "inter/pl", "strm/pl", "peak KiB");
+    std::printf("\n== N-queens as interpretations, at-most-one encoding: ms, median of runs (plain: the floor) ==\n");
+    std::printf("%3s %9s %9s %9s %8s %9s\n", "N", "solutions", "plain", "amo whole", "whole/pl", "peak KiB");
     for (int n = 4; n <= (quick ? 10 : 14); ++n) {
         const int r = quick ? 3 : (n <= 10 ? 9 : n <= 12 ? 5 : 3);
-        const std::size_t expected = queens_solutions[n];
-        std::size_t plain = 0;
+        std::size_t plain = 0, solutions = 0;
         const Timing t_plain = time_runs(r, [&] { plain = queens_plain(n, 0, 0, 0, 0); });
-        const QueensRow pw = queens_row(n, Encoding::pairwise, r);
-        const QueensRow amo = queens_row(n, Encoding::at_most_one, r);
-        const long peak = peak_growth_kib([&] {
+        auto whole = [&] {
             Queens q(n, Encoding::at_most_one);
-            (void)q.atms.interpretations(q.rows).size();
-        });
-        const bool right = plain == expected && amo.solutions == expected && amo.streamed == expected &&
-                           pw.solutions == expected && pw.streamed == expected;
-        std::printf("%3d %9zu %9.3f | %9.3f %9.3f %9.3f %9.3f | %9.3f %9.3f %9.3f %9.3f | %8.1f %8.1f %8.1f | %9ld%s\n", n,
-                    plain, t_plain.median_ms, pw.whole.median_ms, pw.build.median_ms, pw.interpretations.median_ms,
-                    pw.streaming.median_ms, amo.whole.median_ms, amo.build.median_ms, amo.interpretations.median_ms,
-                    amo.streaming.median_ms, amo.whole.median_ms / t_plain.median_ms,
-                    amo.interpretations.median_ms / t_plain.median_ms, amo.streaming.median_ms / t_plain.median_ms, peak,
-                    right ? "" : "  WRONG COUNT");
+            solutions = q.atms.interpretations(q.rows).size();
+        };
+        const Timing t = time_runs(r, whole);
+        const long peak = peak_growth_kib(whole);
+        const bool right = plain == queens_solutions[n] && solutions == queens_solutions[n];
+        std::printf("%3d %9zu %9.3f %9.3f %8.1f %9ld%s\n", n, solutions, t_plain.median_ms, t.median_ms,
+                    t.median_ms / t_plain.median_ms, peak, right ? "" : "  WRONG COUNT");
     }
 }
 
@@ -293,35 +243,6 @@ void base_table(bool quick) {
     }
 }
 
-// One run of one configuration, for instruction counts (valgrind --tool=callgrind atms_bench --one
-// NAME): queens-whole-pairwise-N, queens-whole-at-most-one-N (build + interpretations, interned),
-// queens-plain-N, bases-P (base_table's queries, P pairs), local-W, deep-S. Prints its count; false
-// if NAME is not one of these.
-bool run_one(const std::string& name) {
-    auto number = [&](const std::string& prefix) -> int {
-        return name.rfind(prefix, 0) == 0 ? std::atoi(name.c_str() + prefix.size()) : 0;
-    };
-    if (int n = number("queens-whole-pairwise-"); n >= 1 && n <= 14) {
-        Queens q(n, Encoding::pairwise);
-        std::printf("%zu\n", q.atms.interpretations(q.rows).size());
-    } else if (int m = number("queens-whole-at-most-one-"); m >= 1 && m <= 14) {
-        Queens q(m, Encoding::at_most_one);
-        std::printf("%zu\n", q.atms.interpretations(q.rows).size());
-    } else if (int p = number("queens-plain-"); p >= 1 && p <= 14) {
-        std::printf("%zu\n", queens_plain(p, 0, 0, 0, 0));
-    } else if (int b = number("bases-"); b >= 1) {  // bases-P: P pairs, P / 2 objects
-        const BaseQueries q(11, b, b / 2, 200);
-        std::printf("%zu\n", q.run(5000));
-    } else if (int w = number("local-"); w >= 1) {
-        std::printf("%zu\n", local_theory(7, w).envs);
-    } else if (int d = number("deep-"); d >= 1) {
-        std::printf("%zu\n", deep_theory(42, 20 * d, 100 * d, 200 * d).envs);
-    } else {
-        return false;
-    }
-    return true;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -336,10 +257,8 @@ int main(int argc, char** argv) {
             queens = bases = false;
         } else if (std::strcmp(argv[i], "--bases") == 0) {
             theories = queens = false;
-        } else if (std::strcmp(argv[i], "--one") == 0 && i + 1 < argc) {
-            return run_one(argv[i + 1]) ? 0 : 2;
         } else {
-            std::fprintf(stderr, "usage: atms_bench [--quick] [--queens | --theories | --bases] | --one NAME\n");
+            std::fprintf(stderr, "usage: atms_bench [--quick] [--queens | --theories | --bases]\n");
             return 2;
         }
     }

@@ -5,7 +5,8 @@
 //                each added with add_nogood, as a rule program's `false` rules make them;
 //   at_most_one  one at-most-one constraint per column and per diagonal (Atms::add_at_most_one, 38
 //                at N = 8), the exclusions a bitboard keeps, stated as such.
-// Both have the same minimal nogoods and interpretations (tests/atms/at_most_one_test.cpp).
+// Both state the same exclusions (tests/atms/at_most_one_test.cpp checks a constraint against an
+// oracle that reads it as its pairs).
 #pragma once
 #include "atms/atms.hpp"
 #include <cstdint>

@@ -6,7 +6,7 @@
 # share of the N^2 term in I at the largest N (the budget: below 5% at N = 400), for the whole
 # run and for the instructions spent in each module (engine, ATMS, Alex driver). It also
 # prints each run's wall time and peak memory, measured without valgrind (one run each: for
-# figures to quote, take medians of several runs, e.g. with bench/alex/interleave.py or alex_bench).
+# figures to quote, take medians of several runs, e.g. with bench/startup/startup.py --args).
 # Prints numbers; passes or fails nothing (STYLE.md section 8).
 #
 # Usage: bench/engine/linear_fit.sh [BUILD_DIR] [N...]

@@ -10,8 +10,11 @@
 # median of minor page faults (wait4's ru_minflt) of each.
 # Prints numbers; passes or fails nothing (STYLE.md section 8).
 #
-# Usage: bench/startup/startup.py [--reps N] [--callgrind] [--rules DIR] [--all-alex] [--only NAME] QM_ATMS...
+# Usage: bench/startup/startup.py [--reps N] [--callgrind] [--rules DIR] [--all-alex] [--only NAME] [--args ARGS] QM_ATMS...
 #   e.g. bench/startup/startup.py --reps 101 /tmp/old/qm-atms build/cli/qm-atms
+#        bench/startup/startup.py --reps 15 --args 'stack200.def' /tmp/old/qm-atms build/cli/qm-atms
+#   --args times that one command line (split on spaces) instead of the ones below, e.g. a scene
+#   written by build/bench/alex/scene_gen stack 200.
 #   Each QM_ATMS is an executable. The laws are given with --rules (default: this tree's rules/) so that every build reads the same.
 import argparse
 import glob
@@ -32,6 +35,7 @@ parser.add_argument("--callgrind", action="store_true")
 parser.add_argument("--rules", default=os.path.join(root, "rules"))
 parser.add_argument("--only", help="run only the command lines whose name contains this")
 parser.add_argument("--all-alex", action="store_true", help="every scene of scenarios/alex, not only the three below")
+parser.add_argument("--args", help="time this command line instead")
 parser.add_argument("builds", nargs="+")
 a = parser.parse_args()
 
@@ -51,14 +55,13 @@ if a.all_alex:
     commands = commands[:1] + scenes + [c for c in commands[1:] if not c[0].endswith(".def") or c[0].startswith("--")]
 if a.only:
     commands = [c for c in commands if a.only in c[0]]
+if a.args:
+    commands = [(a.args, a.args.split())]
 
 
-environments = {b: dict(os.environ) for b in a.builds}
-
-
-def spawn(argv, env=os.environ):
+def spawn(argv):
     start = time.perf_counter()
-    pid = os.posix_spawn(argv[0], argv, env, file_actions=[(os.POSIX_SPAWN_OPEN, 1, "/dev/null", os.O_WRONLY, 0),
+    pid = os.posix_spawn(argv[0], argv, os.environ, file_actions=[(os.POSIX_SPAWN_OPEN, 1, "/dev/null", os.O_WRONLY, 0),
                                                            (os.POSIX_SPAWN_OPEN, 2, "/dev/null", os.O_WRONLY, 0)])
     _, status, usage = os.wait4(pid, 0)
     return time.perf_counter() - start, usage.ru_utime + usage.ru_stime, status, usage.ru_minflt
@@ -90,11 +93,11 @@ for name, args in commands:
     runs = {b: [] for b in a.builds}
     own_true = []
     for b in a.builds:  # a warm-up run each
-        spawn([b] + args, environments[b])
+        spawn([b] + args)
     for rep in range(a.reps):
         order = a.builds if rep % 2 == 0 else a.builds[::-1]
         for b in order:
-            runs[b].append(spawn([b] + args, environments[b]))
+            runs[b].append(spawn([b] + args))
         own_true.append(spawn(["/bin/true"]))
     true_runs += own_true
     true_med = statistics.median(r[0] * 1000 for r in own_true)

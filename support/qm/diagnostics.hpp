@@ -1,8 +1,11 @@
 // support/qm/diagnostics.hpp
-// Provides:   SourceLocation (file, 1-based line and column), Diagnostic (a located error or
-//             note) and Diagnostics, a sink that collects them so one run reports every error
-//             in source order (STYLE.md section 6). Printing is `file:line:col: error: msg`.
-// Ownership:  value types. Library code reports into a Diagnostics& and never prints or exits;
+// Provides:   FileName (the name of an input, shared), SourceLocation (file, 1-based line and
+//             column), Diagnostic (a located error or note) and Diagnostics, a sink that collects
+//             them so one run reports every error in source order (STYLE.md section 6). Printing
+//             is `file:line:col: error: msg`.
+// Ownership:  value types. A FileName is made once per input (SourceText, source_text.hpp) and
+//             every location read from that input shares it, so a location costs a pointer, not a
+//             copy of the name. Library code reports into a Diagnostics& and never prints or exits;
 //             only main() picks the exit status (2 for bad input).
 // Bounds:     what a diagnostic keeps of its source line, and what print() writes, is bounded
 //             whatever the input (a small scene with a surface duplicated many times must not
@@ -12,22 +15,49 @@
 //             print() writes everything in one call of the stream's write().
 #pragma once
 #include <algorithm>
+#include <compare>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <string_view>
-#include <tuple>
 #include <vector>
 
 namespace qm {
 
+// Compares and prints as the name it holds; copies share it. Implicit from a string, so that a
+// location can be written {"--why", 1, 1}.
+class FileName {
+public:
+    FileName() = default;  // ""
+    FileName(std::string name) : name_(std::make_shared<const std::string>(std::move(name))) {}
+    FileName(const char* name) : FileName(std::string(name)) {}
+    [[nodiscard]] const std::string& str() const noexcept {
+        static const std::string none;
+        return name_ ? *name_ : none;
+    }
+    [[nodiscard]] bool empty() const noexcept { return str().empty(); }
+    friend bool operator==(const FileName& a, const FileName& b) noexcept { return a.name_ == b.name_ || a.str() == b.str(); }
+    friend std::strong_ordering operator<=>(const FileName& a, const FileName& b) noexcept { return a.str() <=> b.str(); }
+    friend std::ostream& operator<<(std::ostream& os, const FileName& f) { return os << f.str(); }
+
+private:
+    std::shared_ptr<const std::string> name_;
+};
+
 struct SourceLocation {
-    std::string file;
+    FileName file;
     std::uint32_t line = 1;    // 1-based
     std::uint32_t column = 1;  // 1-based
     friend bool operator==(const SourceLocation&, const SourceLocation&) = default;
+    friend auto operator<=>(const SourceLocation&, const SourceLocation&) = default;  // file, line, column
 };
+
+// "file:line:col", as diagnostics print a location.
+[[nodiscard]] inline std::string to_string(const SourceLocation& w) {
+    return w.file.str() + ':' + std::to_string(w.line) + ':' + std::to_string(w.column);
+}
 
 enum class Severity { error, warning, note };
 
@@ -46,13 +76,17 @@ struct Diagnostic {
 inline constexpr std::size_t excerpt_bytes = 160;
 inline constexpr std::size_t excerpt_before = 60;
 
+// Where the excerpt of a line of n bytes starts, for a caret at its byte `at`.
+[[nodiscard]] inline std::size_t excerpt_start(std::size_t n, std::size_t at) noexcept {
+    return n <= excerpt_bytes ? 0 : std::min(at > excerpt_before ? at - excerpt_before : 0, n - excerpt_bytes);
+}
+
 // Keeps of d.source_line (whose first byte is at column d.source_column) only the excerpt around
 // d.where.column; a no-op for a line that fits.
 inline void trim_source_line(Diagnostic& d) {
     const std::size_t n = d.source_line.size();
     if (n <= excerpt_bytes) return;
-    const std::size_t at = d.where.column > d.source_column ? d.where.column - d.source_column : 0;
-    const std::size_t first = std::min(at > excerpt_before ? at - excerpt_before : 0, n - excerpt_bytes);
+    const std::size_t first = excerpt_start(n, d.where.column > d.source_column ? d.where.column - d.source_column : 0);
     d.source_continues = d.source_continues || first + excerpt_bytes < n;
     d.source_line = d.source_line.substr(first, excerpt_bytes);
     d.source_column += static_cast<std::uint32_t>(first);
@@ -63,10 +97,7 @@ inline void trim_source_line(Diagnostic& d) {
 [[nodiscard]] inline Diagnostic make_diagnostic(Severity severity, SourceLocation where, std::string message,
                                                 std::string_view source_line = {}, std::vector<std::string> notes = {}) {
     Diagnostic d{severity, std::move(where), std::move(message), {}, std::move(notes), 1, false};
-    const std::size_t at = d.where.column > 0 ? d.where.column - 1 : 0;
-    std::size_t first = 0;
-    if (source_line.size() > excerpt_bytes)
-        first = std::min(at > excerpt_before ? at - excerpt_before : 0, source_line.size() - excerpt_bytes);
+    const std::size_t first = excerpt_start(source_line.size(), d.where.column > 0 ? d.where.column - 1 : 0);
     d.source_line = std::string(source_line.substr(first, excerpt_bytes));
     d.source_column = static_cast<std::uint32_t>(first + 1);
     d.source_continues = first + excerpt_bytes < source_line.size();
@@ -102,10 +133,7 @@ public:
     // Sorted by file, line, column; stable so equal locations keep report order.
     [[nodiscard]] std::vector<Diagnostic> sorted() const {
         auto out = items_;
-        std::stable_sort(out.begin(), out.end(), [](const Diagnostic& a, const Diagnostic& b) {
-            return std::tie(a.where.file, a.where.line, a.where.column) <
-                   std::tie(b.where.file, b.where.line, b.where.column);
-        });
+        std::stable_sort(out.begin(), out.end(), [](const Diagnostic& a, const Diagnostic& b) { return a.where < b.where; });
         return out;
     }
 
@@ -115,10 +143,7 @@ public:
         std::vector<const Diagnostic*> order;
         order.reserve(items_.size());
         for (const Diagnostic& d : items_) order.push_back(&d);
-        std::stable_sort(order.begin(), order.end(), [](const Diagnostic* a, const Diagnostic* b) {
-            return std::tie(a->where.file, a->where.line, a->where.column) <
-                   std::tie(b->where.file, b->where.line, b->where.column);
-        });
+        std::stable_sort(order.begin(), order.end(), [](const Diagnostic* a, const Diagnostic* b) { return a->where < b->where; });
         std::string out;
         std::size_t errors_left = 0, others_left = 0;
         for (std::size_t i = 0; i < order.size(); ++i) {
@@ -143,7 +168,7 @@ private:
         }
     }
     static void append(std::string& out, const Diagnostic& d) {
-        const std::string at = d.where.file + ':' + std::to_string(d.where.line) + ':' + std::to_string(d.where.column) + ": ";
+        const std::string at = to_string(d.where) + ": ";
         out += at;
         out += d.severity == Severity::error ? "error" : d.severity == Severity::warning ? "warning" : "note";
         out += ": ";

@@ -3,7 +3,8 @@
 //             offset -> 1-based line/column lookup and the whole line for the caret display of a
 //             diagnostic (qm/diagnostics.hpp). Every reader of the project (scenes, metric scenes,
 //             rule files) locates its errors through it.
-// Ownership:  a value type owning its text.
+// Ownership:  a value type owning its text; the file name is made once here and shared by every
+//             location locate() gives (qm/diagnostics.hpp, FileName).
 // Invariants: a column counts bytes from the start of the line (a tab is one column); offsets past
 //             the end are clamped to the end. A UTF-8 byte-order mark at the start of the text (which
 //             some editors write) is not part of it: every reader sees the text after it, and columns
@@ -21,13 +22,13 @@ namespace qm {
 
 class SourceText {
 public:
-    SourceText(std::string file, std::string text) : file_(std::move(file)), text_(std::move(text)) {
+    SourceText(FileName file, std::string text) : file_(std::move(file)), text_(std::move(text)) {
         if (text_.starts_with(byte_order_mark)) text_.erase(0, byte_order_mark.size());
         line_starts_.push_back(0);
         for (std::size_t i = 0; i < text_.size(); ++i)
             if (text_[i] == '\n') line_starts_.push_back(i + 1);
     }
-    [[nodiscard]] const std::string& file() const noexcept { return file_; }
+    [[nodiscard]] const FileName& file() const noexcept { return file_; }
     [[nodiscard]] const std::string& text() const noexcept { return text_; }
     [[nodiscard]] SourceLocation locate(std::size_t offset) const {
         const std::size_t line = line_index(offset);
@@ -61,7 +62,7 @@ private:
         auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), std::min(offset, text_.size()));
         return static_cast<std::size_t>(it - line_starts_.begin()) - 1;
     }
-    std::string file_;
+    FileName file_;
     std::string text_;
     std::vector<std::size_t> line_starts_;
 };

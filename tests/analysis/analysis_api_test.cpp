@@ -6,6 +6,7 @@
 // replaces the situation's motion of the same object.
 #include "analysis/analysis.hpp"
 #include "scene/scene_parser.hpp"
+#include "../support/scene_reading.hpp"
 #include <algorithm>
 #include <doctest/doctest.h>
 #include <filesystem>
@@ -18,14 +19,7 @@ using namespace qm;
 
 namespace {
 
-scene::Scene scene_of(const std::string& text) {
-    Diagnostics d;
-    auto s = scene::read_scene("api.def", text, d);
-    std::ostringstream os;
-    d.print(os);
-    REQUIRE_MESSAGE(s, os.str());
-    return std::move(*s);
-}
+scene::Scene scene_of(const std::string& text) { return test::read_ok(text, "api.def"); }
 
 analysis::AnalysisOptions default_options() {
     analysis::AnalysisOptions o;
@@ -60,9 +54,7 @@ TEST_CASE("analysis/api: a scene with no situations is analysed (laws checked), 
     o.rules_directory = dir;
     Diagnostics bad;
     CHECK_FALSE(analysis::analyse(s, o, bad));
-    std::ostringstream os;
-    bad.print(os);
-    CHECK(os.str().find("scene_facts.rules:26:8: error: unknown predicate 'trans-motion', read back by a driver (`output`)") !=
+    CHECK(test::printed(bad).find("scene_facts.rules:26:8: error: unknown predicate 'trans-motion', read back by a driver (`output`)") !=
           std::string::npos);
     std::filesystem::remove_all(dir);
 }
@@ -108,12 +100,7 @@ TEST_CASE("analysis/api: why cites constraint entries and descriptions where the
 
 namespace {
 
-scene::Scene scene_file(const std::string& name) {
-    Diagnostics d;
-    auto s = scene::read_scene_file(std::string(QM_SOURCE_DIR) + "/scenarios/alex/" + name, d);
-    REQUIRE(s);
-    return std::move(*s);
-}
+scene::Scene scene_file(const std::string& name) { return test::load_ok("scenarios/alex/" + name); }
 
 scene::QueryFact motion_query(const scene::Scene& s, const std::string& object, bool translational,
                              std::vector<scene::Sign> direction) {
@@ -154,7 +141,6 @@ TEST_CASE("analysis/api: why a motion is ruled out by case analysis lists the ar
     auto w = a->why(motion_query(s, "gear", false, {scene::Sign::plus}), 2, d);
     REQUIRE(w);
     REQUIRE(w->status == analysis::WhyAnswer::Status::ruled_out);
-    // Before: 21 reasons, the first 16 the pins of the scape wheel's and the pallet's translations.
     CHECK(w->exclusions.size() <= 6);
     REQUIRE_FALSE(w->exclusions.empty());
     for (const auto& x : w->exclusions) CHECK_FALSE(x.responsible.empty());
@@ -206,7 +192,6 @@ TEST_CASE("analysis/api: the responsible sets of a motion ruled out by nearness 
     REQUIRE(w);
     REQUIRE(w->status == analysis::WhyAnswer::Status::ruled_out);
     CHECK(w->responsible_minimal);
-    // Before: one set of 4 (both forces and two contacts), labelled as if each set sufficed.
     const Sets expected{{"Force (wedge (0 -) (0 0))"},
                         {"Contact (bl-b-l w-t-l)", "Force (block (0 -) (0 0))"},
                         {"Contact (bl-b-r w-t-r)", "Force (block (0 -) (0 0))"}};
@@ -345,7 +330,6 @@ TEST_CASE("analysis/api: why an undriven object's motion is not selected names t
     auto w = a->why(motion_query(s, "gear-c", false, {scene::Sign::zero}), 3, d);
     REQUIRE(w);
     REQUIRE(w->status == analysis::WhyAnswer::Status::ruled_out);
-    // Before: no reason at all.
     REQUIRE_FALSE(w->exclusions.empty());
     for (const auto& x : w->exclusions) {
         CHECK(x.derivation.fact.find("(rot-nearness ") == 0);

@@ -1,13 +1,10 @@
 // tests/atms/at_most_one_test.cpp: Atms::add_at_most_one, the native form of a choice set's
-// exclusions, checked two ways on seeded random Horn theories with constraints of 1 to 8 members
+// exclusions, checked on seeded random Horn theories with constraints of 1 to 8 members
 // (overlapping ones too) declared between the theory's steps (500 theories, 60 of them checked after
-// every step; 300 compared; longer soaks: raise the seed ranges):
-//   - against the brute-force oracle (random_theory.hpp) that treats an environment holding two
-//     members of a constraint as inconsistent: labels, consistency, minimal nogoods (also those
-//     within an environment), nogood explanations and interpretations with and without a base;
-//   - against the same theory with each constraint written as today's pairwise nogoods (add_nogood
-//     of every two member nodes): labels, nogoods, interpretations (in order) and the informant and
-//     antecedents of every explanation step are the same.
+// every step; longer soaks: raise the seed range) against the brute-force oracle (random_theory.hpp)
+// that treats an environment holding two members of a constraint as inconsistent: labels,
+// consistency, minimal nogoods (also those within an environment), nogood explanations and
+// interpretations, in order, with and without a base.
 #include "atms/atms.hpp"
 
 #include "random_theory.hpp"
@@ -23,8 +20,7 @@ using namespace qm::atms::test;
 namespace {
 constexpr std::uint32_t constraint_informant = 100000;
 
-// Random constraints over the tracked assumptions, drawn from their own generator so that two
-// theories built from one seed get the same ones.
+// Random constraints over the tracked assumptions, drawn from their own generator.
 struct Constraints {
     std::mt19937 rng;
     std::vector<std::uint32_t> masks;               // oracle bits of each constraint
@@ -34,8 +30,8 @@ struct Constraints {
     explicit Constraints(std::uint32_t seed) : rng(seed * 7919U + 1) {}
     int pick(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); }
 
-    // Maybe declares one constraint on t (natively, or as pairwise nogoods of the member nodes).
-    void maybe_declare(RandomTheory& t, bool native, int percent) {
+    // Maybe declares one constraint on t.
+    void maybe_declare(RandomTheory& t, int percent) {
         if (t.assumptions.empty() || pick(1, 100) > percent) return;
         const int n = static_cast<int>(t.assumptions.size());
         const int k = pick(1, std::min(8, n));
@@ -51,13 +47,7 @@ struct Constraints {
         }
         if (pick(0, 3) == 0) set.push_back(set.front());  // a repeated member collapses
         const InformantId why{constraint_informant + static_cast<std::uint32_t>(masks.size())};
-        if (native) {
-            records.push_back(t.atms.add_at_most_one(why, set));
-        } else {
-            for (std::size_t i = 0; i < set.size(); ++i)
-                for (std::size_t j = i + 1; j < set.size(); ++j)
-                    if (set[i] != set[j]) t.atms.add_nogood(why, {t.atms.node_of(set[i]), t.atms.node_of(set[j])});
-        }
+        records.push_back(t.atms.add_at_most_one(why, set));
         masks.push_back(mask);
         members.push_back(set);
     }
@@ -164,14 +154,14 @@ void check_against_oracle(RandomTheory& t, const Constraints& c, std::mt19937& r
     check_interpretations(t, oracle, rng);
 }
 
-TheoryShape shape_of(std::uint32_t seed, bool justify_assumptions) {
+TheoryShape shape_of(std::uint32_t seed) {
     TheoryShape shape;
     shape.assumptions = 4 + static_cast<int>(seed % 5);
     shape.derived = 8 + static_cast<int>(seed % 9);
     shape.clauses = 15 + static_cast<int>(seed % 20);
     shape.interleave = seed % 3 != 0;
     shape.max_padding = seed % 4 == 1 ? 90 : 0;
-    shape.justify_assumptions = justify_assumptions;
+    shape.justify_assumptions = true;
     return shape;
 }
 }  // namespace
@@ -180,68 +170,20 @@ TEST_CASE("atms/at_most_one: labels, nogoods, explanations and interpretations e
     std::size_t theories = 0, constraints = 0;
     for (std::uint32_t seed = 1; seed <= 500; ++seed) {
         CAPTURE(seed);
-        RandomTheory t(seed, shape_of(seed, true));
+        RandomTheory t(seed, shape_of(seed));
         Constraints c(seed);
         std::mt19937 rng(seed);
         const bool every_step = seed <= 60;
         do {
-            c.maybe_declare(t, true, 12);
+            c.maybe_declare(t, 12);
             if (every_step) check_against_oracle(t, c, rng);
         } while (t.add_next());
-        c.maybe_declare(t, true, 50);
+        c.maybe_declare(t, 50);
         check_against_oracle(t, c, rng);
         ++theories;
         constraints += c.masks.size();
     }
     MESSAGE("theories: " << theories << ", constraints: " << constraints);
-}
-
-TEST_CASE("atms/at_most_one: the same results as the pairwise nogoods a choice set used to make") {
-    for (std::uint32_t seed = 1; seed <= 300; ++seed) {
-        CAPTURE(seed);
-        RandomTheory native(seed, shape_of(seed, false)), pairwise(seed, shape_of(seed, false));
-        Constraints cn(seed), cp(seed);
-        bool more = true;
-        while (more) {
-            cn.maybe_declare(native, true, 15);
-            cp.maybe_declare(pairwise, false, 15);
-            more = native.add_next();
-            REQUIRE(pairwise.add_next() == more);
-        }
-        const std::vector<NodeId>* groups[] = {&native.assumptions, &native.premises, &native.derived};
-        for (const auto* group : groups)
-            for (NodeId n : *group) REQUIRE(native.masks_of(native.atms.label(n)) == pairwise.masks_of(pairwise.atms.label(n)));
-        const std::vector<EnvId> ng_native = native.atms.minimal_nogoods(), ng_pairwise = pairwise.atms.minimal_nogoods();
-        REQUIRE(native.masks_of(ng_native) == pairwise.masks_of(ng_pairwise));
-        // Explanations: the same steps (informant, antecedents, consequent) for each nogood.
-        for (EnvId e : ng_native) {
-            const EnvId f = pairwise.env_of_mask(native.mask_of(native.atms.env(e)));
-            const Explanation x = native.atms.explain_nogood(e), y = pairwise.atms.explain_nogood(f);
-            REQUIRE(x.steps.size() == y.steps.size());
-            for (std::size_t i = 0; i < x.steps.size(); ++i) {
-                const Justification& a = native.atms.justification(x.steps[i]);
-                const Justification& b = pairwise.atms.justification(y.steps[i]);
-                CHECK(a.informant == b.informant);
-                CHECK(a.antecedents == b.antecedents);
-                CHECK(a.consequent == b.consequent);
-                CHECK((a.kind == Justification::Kind::at_most_one) == (a.informant.value >= constraint_informant));
-            }
-        }
-        // Interpretations over the constraints' own members as choice sets (first occurrence each,
-        // disjoint), in order.
-        std::vector<std::vector<AssumptionId>> sets;
-        std::set<AssumptionId> used;
-        for (const auto& m : cn.members) {
-            std::vector<AssumptionId> set;
-            for (AssumptionId a : m)
-                if (used.insert(a).second) set.push_back(a);
-            if (!set.empty()) sets.push_back(set);
-        }
-        std::vector<std::uint32_t> a, b;
-        for (EnvId e : native.atms.interpretations(sets)) a.push_back(native.mask_of(native.atms.env(e)));
-        for (EnvId e : pairwise.atms.interpretations(sets)) b.push_back(pairwise.mask_of(pairwise.atms.env(e)));
-        REQUIRE(a == b);
-    }
 }
 
 TEST_CASE("atms/at_most_one: a large constraint is one record, and its pairs are still nogoods") {

@@ -196,7 +196,6 @@ TEST_CASE("atms/atms: justify records the clause, ignoring duplicate antecedents
     CHECK(just.antecedents == std::vector<NodeId>{t.a, t.b});
     CHECK(just.consequent == x);
     CHECK(t.atms.justifications(x) == std::vector<JustId>{j});
-    CHECK(t.atms.consequences(t.a) == std::vector<JustId>{j});
     CHECK(t.atms.justification_count() == 1);
     const JustId empty = t.atms.justify(InformantId{1}, std::span<const NodeId>{}, x);  // x is true
     CHECK(t.atms.is_true(x));
@@ -229,7 +228,6 @@ TEST_CASE("atms/atms: every precondition violation is an InternalError") {
     CHECK_THROWS_AS((void)atms.assumption_of(bad), qm::InternalError);
     CHECK_THROWS_AS((void)atms.node_of(AssumptionId{77}), qm::InternalError);
     CHECK_THROWS_AS((void)atms.justifications(bad), qm::InternalError);
-    CHECK_THROWS_AS((void)atms.consequences(bad), qm::InternalError);
     CHECK_THROWS_AS((void)atms.justification(JustId{5}), qm::InternalError);
     CHECK_THROWS_AS((void)atms.holds_in(t.a, EnvId{12345}), qm::InternalError);
     CHECK_THROWS_AS((void)atms.holds_in(bad, atms.empty_environment()), qm::InternalError);

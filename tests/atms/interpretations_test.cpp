@@ -1,11 +1,10 @@
-// tests/atms/interpretations_test.cpp: interpretation enumeration against brute-force products,
-// and N-queens solution counts (one choice set per row, pairwise nogoods for attacks).
+// tests/atms/interpretations_test.cpp: interpretation enumeration against brute-force products
+// (N-queens, through the rule engine: tests/cli/run_command_test.cpp).
 #include "atms/interpretations.hpp"
 
 #include "atms/atms.hpp"
 #include <algorithm>
 #include <bit>
-#include <cstdlib>
 #include <doctest/doctest.h>
 #include <random>
 
@@ -35,39 +34,7 @@ void brute_force(const std::vector<std::vector<AssumptionId>>& sets, std::size_t
     }
     for (AssumptionId a : sets[depth]) brute_force(sets, depth + 1, acc | (std::uint64_t{1} << a.value), nogoods, out);
 }
-
-std::size_t queens(int n) {
-    Atms atms;
-    std::vector<std::vector<AssumptionId>> rows(static_cast<std::size_t>(n));
-    std::vector<NodeId> node(static_cast<std::size_t>(n * n));
-    for (int r = 0; r < n; ++r)
-        for (int c = 0; c < n; ++c) {
-            node[static_cast<std::size_t>(r * n + c)] = atms.add_assumption(DatumId{static_cast<std::uint32_t>(r * n + c)});
-            rows[static_cast<std::size_t>(r)].push_back(*atms.assumption_of(node[static_cast<std::size_t>(r * n + c)]));
-        }
-    for (int r1 = 0; r1 < n; ++r1)
-        for (int c1 = 0; c1 < n; ++c1)
-            for (int r2 = r1 + 1; r2 < n; ++r2)
-                for (int c2 = 0; c2 < n; ++c2)
-                    if (c1 == c2 || std::abs(r1 - r2) == std::abs(c1 - c2))
-                        atms.add_nogood(InformantId{0}, {node[static_cast<std::size_t>(r1 * n + c1)],
-                                                         node[static_cast<std::size_t>(r2 * n + c2)]});
-    const auto solutions = atms.interpretations(rows);
-    for (EnvId e : solutions) {
-        REQUIRE(atms.is_consistent(e));
-        REQUIRE(atms.env(e).size() == static_cast<std::uint32_t>(n));
-    }
-    return solutions.size();
-}
 }  // namespace
-
-TEST_CASE("atms/interpretations: N-queens counts for N = 4..8") {
-    CHECK(queens(4) == 2);
-    CHECK(queens(5) == 10);
-    CHECK(queens(6) == 4);
-    CHECK(queens(7) == 40);
-    CHECK(queens(8) == 92);
-}
 
 TEST_CASE("atms/interpretations: random choice sets and nogoods agree with brute force") {
     // Half the rounds spread the assumption ids over several words (unused assumptions between

@@ -1,9 +1,10 @@
 // tests/atms/sparse_words.hpp
 // Test helper (not a test): an Environment written as SparseWords (atms/environment.hpp), the form
-// weave's unions take, so that the nogood database's and the at-most-one index's sparse questions
-// can be asked of the same sets as their window questions. Shared by those two tests.
+// weave's unions take, zero words listed or not, for the nogood database's and the at-most-one
+// index's sparse questions; and an Environment without one assumption. Shared by those two tests.
 #pragma once
 #include "atms/environment.hpp"
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -22,6 +23,13 @@ inline SparseWords sparse(const Environment& e, bool all_words, std::vector<std:
         index.push_back(e.first_word() + w);
     }
     return {words, index};
+}
+
+// e without a.
+inline Environment without(const Environment& e, AssumptionId a) {
+    std::vector<AssumptionId> rest = e.assumptions();
+    rest.erase(std::remove(rest.begin(), rest.end(), a), rest.end());
+    return Environment::of(rest);
 }
 
 }  // namespace qm::atms::test

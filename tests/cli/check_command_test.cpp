@@ -1,4 +1,4 @@
-// tests/cli/check_command_test.cpp: rule files checked like code (issue 17 item 2) through the
+// tests/cli/check_command_test.cpp: rule files checked like code through the
 // built executable: `qm-atms check` on the bundled laws (clean), on small law folders whose
 // diagnostics are golden files (tests/cli/check/NAME/ with the exact standard error in NAME.err,
 // the folder's path written RULES/), and on copies of rules/ with the slips of the hand the issue
@@ -6,13 +6,10 @@
 // direction in a law run on a 2-D scene is a located warning). QM_WRITE_GOLDEN=1 rewrites the .err files.
 #include "qm_atms_run.hpp"
 #include <doctest/doctest.h>
-#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <string>
-#include <unistd.h>
 
-namespace fs = std::filesystem;
 using qm::test::qm_atms;
 
 namespace {
@@ -25,28 +22,14 @@ std::string replace_all(std::string text, const std::string& from, const std::st
     return text;
 }
 
-// A copy of rules/ in which `file` has `from` replaced by `to` (once); the copy's path.
 std::string mutated_rules(const std::string& tag, const std::string& file, const std::string& from, const std::string& to) {
-    const fs::path dir = fs::path(QM_BINARY_DIR) / ("check_" + tag + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    for (const auto& e : fs::directory_iterator(source + "/rules"))
-        if (e.path().extension() == ".rules") fs::copy_file(e.path(), dir / e.path().filename());
-    if (!file.empty()) {
-        std::string text = qm::test::slurp((dir / file).string());
-        const std::size_t at = text.find(from);
-        REQUIRE(at != std::string::npos);
-        text.replace(at, from.size(), to);
-        std::ofstream(dir / file) << text;
-    }
-    return dir.string();
+    return qm::test::mutated_rules("rules", "check_" + tag, file, from, to);
 }
 
 void check_golden(const std::string& name, const std::string& err) {
     const std::string golden = source + "/tests/cli/check/" + name + ".err";
     const std::string actual = replace_all(err, source + "/tests/cli/check/" + name + "/", "RULES/");
-    if (std::getenv("QM_WRITE_GOLDEN")) std::ofstream(golden) << actual;
-    CHECK(actual == qm::test::slurp(golden));
+    qm::test::check_golden(actual, golden);
 }
 
 }  // namespace
@@ -59,7 +42,7 @@ TEST_CASE("cli/check: the bundled laws have no error and no warning, in 2-D and 
         CHECK(r.err == "");
         CHECK(std::regex_search(r.out, std::regex("^checked [0-9]+ files, [0-9]+ rules: no errors, no warnings\n$")));
     }
-    // The envisioner's laws (chapters 5 and 8) too: every file cites the thesis (issue 17 item 1).
+    // The envisioner's laws (chapters 5 and 8) too: every file cites the thesis.
     auto clock = qm_atms("check " + source + "/rules/clock", "check");
     CHECK(clock.status == 0);
     CHECK(clock.err == "");

@@ -22,16 +22,11 @@ using qm::test::metric_scene;
 using qm::test::slurp;
 
 namespace {
+using qm::test::count;
 
 qm::test::Run draw(const std::string& args) { return qm::test::qm_atms("draw " + args, "draw_test"); }
 
 std::string out_file(const std::string& name) { return std::string(QM_BINARY_DIR) + "/" + name; }
-
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-    return n;
-}
 
 // The transform of the part's group.
 std::string transform_of(const std::string& svg, const std::string& part) {
@@ -98,7 +93,7 @@ TEST_CASE("cli/draw_command: a pair's parts at the sample configuration of a pla
 }
 
 TEST_CASE("cli/draw_command: parts drawn overlapping are drawn, with a located warning") {
-    // The anchor turned upside down overlaps the wheel (issue 16 item 7).
+    // The anchor turned upside down overlaps the wheel.
     const std::string file = out_file("draw_overlap.svg");
     const auto r = draw(metric_scene("escapement.def") + " --config 'pallets=180' --svg " + file);
     CHECK(r.status == 0);

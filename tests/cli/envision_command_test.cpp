@@ -10,13 +10,14 @@
 #include <doctest/doctest.h>
 #include <fstream>
 #include <set>
-#include <sstream>
 #include <string>
 #include <sys/wait.h>
 
 using qm::test::Json;
 
 namespace {
+using qm::test::write_temp;
+using qm::test::metric_scene;
 
 using Result = qm::test::Run;
 using qm::test::slurp;
@@ -25,18 +26,11 @@ Result envision(const std::string& args) {
     return qm::test::qm_atms("envision " + args + " --cache " + QM_BINARY_DIR + "/envision-test-place-cache", "envision_test");
 }
 
-std::string scene(const std::string& name) { return std::string(QM_SOURCE_DIR) + "/scenarios/metric/" + name; }
-
-std::string write_temp(const std::string& name, const std::string& text) {
-    const std::string path = std::string(QM_BINARY_DIR) + "/" + name;
-    std::ofstream(path) << text;
-    return path;
-}
 
 }  // namespace
 
 TEST_CASE("cli/envision: the text summary names the chain, its pairs, states, transitions, cycles and terminal states") {
-    const auto r = envision(scene("cam.def"));
+    const auto r = envision(metric_scene("cam.def"));
     REQUIRE(r.status == 0);
     CHECK(r.out.find("mechanism cam: 1 kinematic pair, 1 kinematic chain\n") == 0);
     CHECK(r.out.find("  objects: cam follower\n") != std::string::npos);
@@ -46,7 +40,7 @@ TEST_CASE("cli/envision: the text summary names the chain, its pairs, states, tr
 }
 
 TEST_CASE("cli/envision: --json follows qm-envisionment/1") {
-    const auto r = envision(scene("escapement.def") + " --json");
+    const auto r = envision(metric_scene("escapement.def") + " --json");
     REQUIRE(r.status == 0);
     const auto j = Json::parse(r.out);
     REQUIRE(j.has_value());
@@ -94,14 +88,14 @@ TEST_CASE("cli/envision: --json follows qm-envisionment/1") {
 }
 
 TEST_CASE("cli/envision: --table has the columns of Appendices A-D") {
-    const auto r = envision(scene("cam.def") + " --table");
+    const auto r = envision(metric_scene("cam.def") + " --table");
     REQUIRE(r.status == 0);
     CHECK(r.out.find("chain 1: rows: place of cam/follower; columns: motions of cam / follower\n") != std::string::npos);
     CHECK(r.out.find("place | --       | -0       | -+       | 0-       | 00       | 0+       | +-       | +0       | ++") != std::string::npos);
 }
 
 TEST_CASE("cli/envision: --next, --previous and --without") {
-    const auto next = envision(scene("cam.def") + " --next 'cam/follower-0 0 0'");
+    const auto next = envision(metric_scene("cam.def") + " --next 'cam/follower-0 0 0'");
     REQUIRE(next.status == 0);
     CHECK(next.out.find("state #") == 0);
     // At rest in the cam's lowest join, the follower's weight rests on both flanks and comes back to
@@ -109,11 +103,11 @@ TEST_CASE("cli/envision: --next, --previous and --without") {
     CHECK(next.out.find("  forces: cam (+) motor; follower (-) gravity;") != std::string::npos);
     CHECK(next.out.find("  net force: cam (+), follower (+)") != std::string::npos);
     CHECK(next.out.find("  next (") != std::string::npos);
-    const auto previous = envision(scene("cam.def") + " --previous 0");
+    const auto previous = envision(metric_scene("cam.def") + " --previous 0");
     REQUIRE(previous.status == 0);
     CHECK(previous.out.find("  previous (") != std::string::npos);
     // The cam without the follower's return force (9.4): the follower feels no force of its own.
-    const auto without = envision(scene("cam.def") + " --without 'Force follower' --next 'cam/follower-0 0 0'");
+    const auto without = envision(metric_scene("cam.def") + " --without 'Force follower' --next 'cam/follower-0 0 0'");
     REQUIRE(without.status == 0);
     CHECK(without.out.find("  forces: cam (+) motor; follower (+) motor\n") != std::string::npos);
     CHECK(without.out.find("gravity") == std::string::npos);
@@ -130,7 +124,7 @@ TEST_CASE("cli/envision: --why-not cites the laws' preference where it keeps ano
         if (line.rfind("prefer (motion ", 0) == 0) at = n;
     }
     REQUIRE(at > 0);
-    const auto r = envision(scene("escapement.def") + " --why-not '#28 -> #218'");
+    const auto r = envision(metric_scene("escapement.def") + " --why-not '#28 -> #218'");
     REQUIRE(r.status == 0);
     CHECK(r.out.find("no transition #28 ") == 0);
     CHECK(r.out.find("state #217 has these places too and the laws prefer it: it is nearer to what the step allows for every part (the `prefer` at ") !=
@@ -154,15 +148,13 @@ TEST_CASE("cli/envision: --why-not cites the settling law that refutes a motion 
     // rule collision-fixes-motion). Goldens: tests/cli/why_not/*.txt.
     for (const auto& [question, golden] : {std::pair{"#113 -> #114", "must_change.txt"}, std::pair{"#188 -> #40", "collision.txt"}}) {
         CAPTURE(question);
-        const auto r = envision(scene("escapement.def") + " --why-not '" + question + "'");
+        const auto r = envision(metric_scene("escapement.def") + " --why-not '" + question + "'");
         REQUIRE(r.status == 0);
         CHECK(reasons_of(r.out) == slurp(std::string(QM_SOURCE_DIR) + "/tests/cli/why_not/" + golden));
     }
 }
 
 TEST_CASE("cli/envision: laws that prefer among motions without a step-allows for each are an error at the `prefer`") {
-    namespace fs = std::filesystem;
-    const fs::path from = fs::path(QM_SOURCE_DIR) / "rules/clock";
     // The nearness rule that assumes (step-allows O H) for every motion narrowed to (+), and made a
     // plain conclusion: each a faulty law file, refused where it is written (exit 2), not a crash.
     const std::string assumed = "  when (possible-motions ?o ?motions) (motion-value ?h)\n  then assume (step-allows ?o ?h)";
@@ -177,15 +169,9 @@ TEST_CASE("cli/envision: laws that prefer among motions without a step-allows fo
     };
     for (std::size_t i = 0; i < broken.size(); ++i) {
         CAPTURE(i);
-        const fs::path dir = fs::path(QM_BINARY_DIR) / ("envision_broken_rules_" + std::to_string(i));
-        fs::remove_all(dir);
-        fs::copy(from, dir);
-        std::string text = slurp((dir / "nearness.rules").string());
-        const auto at = text.find(assumed);
-        REQUIRE(at != std::string::npos);
-        text.replace(at, assumed.size(), broken[i].first);
-        std::ofstream(dir / "nearness.rules") << text;
-        const auto r = envision(scene("escapement.def") + " --rules " + dir.string());
+        const std::string dir = qm::test::mutated_rules("rules/clock", "envision_" + std::to_string(i), "nearness.rules",
+                                                        assumed, broken[i].first);
+        const auto r = envision(metric_scene("escapement.def") + " --rules " + dir);
         CHECK(r.status == 2);
         CHECK(r.out.empty());
         CHECK_MESSAGE(r.err.find(broken[i].second) != std::string::npos, r.err);
@@ -234,11 +220,9 @@ TEST_CASE("cli/envision: --from, --path, --why-not, --dot and --svg") {
     std::remove(dot.c_str());
     const auto d = envision(ratchet + " --dot " + dot);
     REQUIRE(d.status == 0);
-    std::ifstream in(dot);
-    std::stringstream graph;
-    graph << in.rdbuf();
-    CHECK(graph.str().find("digraph \"ratchet\"") == 0);
-    CHECK(graph.str().find("peripheries=2") != std::string::npos);  // the terminal state
+    const std::string graph = slurp(dot);
+    CHECK(graph.find("digraph \"ratchet\"") == 0);
+    CHECK(graph.find("peripheries=2") != std::string::npos);  // the terminal state
 }
 
 // --svg lays out and draws the graph with Graphviz's library: no program is run, so a quote or a
@@ -256,12 +240,10 @@ TEST_CASE("cli/envision: --svg draws the graph, into a file whose name holds a q
     const auto r = envision(std::string(QM_SOURCE_DIR) + "/scenarios/clock/ratchet.def --svg " + quoted(svg));
     REQUIRE(r.status == 0);
     CHECK(r.err.empty());
-    std::ifstream in(svg);
-    std::stringstream drawn;
-    drawn << in.rdbuf();
-    CHECK(drawn.str().find("<svg") != std::string::npos);
-    CHECK(drawn.str().find("<title>ratchet</title>") != std::string::npos);  // the graph's name
-    CHECK(drawn.str().find("</svg>") != std::string::npos);
+    const std::string drawn = slurp(svg);
+    CHECK(drawn.find("<svg") != std::string::npos);
+    CHECK(drawn.find("<title>ratchet</title>") != std::string::npos);  // the graph's name
+    CHECK(drawn.find("</svg>") != std::string::npos);
     CHECK(!std::filesystem::exists(svg + ".part"));  // written whole, then renamed
 }
 
@@ -280,25 +262,24 @@ TEST_CASE("cli/envision: bad input is a located error, exit status 2, and nothin
         {lonely, "envision_lonely.def:1:1: error: mechanism 'lonely' has no kinematic pair"},
         {apart, "envision_apart.def:4:10: error: the parts 'a' and 'b' never touch"},
         {free, "envision_free.def:4:10: error: 'crank' and 'hub' never touch: their configuration space is all free"},
-        {scene("cam.def") + " --max-states 10", "has more than 10 states (the limit of --max-states): nothing was written"},
-        {scene("cam.def") + " --max-states 0", "--max-states expects a positive whole number, not '0'"},
-        {scene("cam.def") + " --next 'cam/follower-99 0 0'", "--next:1:1: error: pair 'cam/follower' has no place 99"},
-        {scene("cam.def") + " --next 'wheel/follower-1 0 0'", "--next:1:1: error: unknown pair 'wheel/follower'"},
-        {scene("cam.def") + " --next 'cam/follower-1 0'", "--next:1:16: error: expected 2 motions"},
-        {scene("cam.def") + " --next 'cam/follower-1 x 0'", "--next:1:16: error: expected a motion +, 0 or -, not 'x'"},
-        {scene("cam.def") + " --next '#100000'", "--next:1:1: error: no state 100000"},
-        {scene("cam.def") + " --previous ''", "--previous:1:1: error: expected a state"},
-        {scene("cam.def") + " --without 'Force wheel'", "--without:1:7: error: unknown part 'wheel'"},
-        {scene("cam.def") + " --without 'Force cam wind'", "--without:1:11: error: no force of cause 'wind' acts on 'cam'"},
-        {scene("cam.def") + " --without 'Contact cam follower'", "--without:1:1: error: expected 'Force PART [CAUSE]'"},
-        {scene("cam.def") + " --table --json", "--table and --json are two different outputs"},
-        {scene("cam.def") + " --avoid 'cam=+'", "--avoid goes with --path"},
-        {scene("cam.def") + " --path 'cam=x'", "--path:1:5: error: expected a motion +, 0 or -, not 'x'"},
-        {scene("cam.def") + " --why-not '#0 #1'", "--why-not:1:1: error: expected 'STATE -> STATE'"},
-        {scene("cam.def") + " --why-not '#0 -> cam/follower-0 + x'", "--why-not:1:24: error: expected a motion +, 0 or -, not 'x'"},
-        {scene("cam.def") + " --from 'cam/follower-1'", "--from:1:1: error: expected 2 motions (one per part of the chain) after the places, found 0"},
-        {scene("cam.def") + " --frobnicate", "unknown option '--frobnicate'"},
-        {scene("cam.def") + " --rules /nonexistent", "/nonexistent:1:1: error: expected a folder of .rules files"},
+        {metric_scene("cam.def") + " --max-states 10", "has more than 10 states (the limit of --max-states): nothing was written"},
+        {metric_scene("cam.def") + " --max-states 0", "--max-states expects a positive whole number, not '0'"},
+        {metric_scene("cam.def") + " --next 'cam/follower-99 0 0'", "--next:1:1: error: pair 'cam/follower' has no place 99"},
+        {metric_scene("cam.def") + " --next 'wheel/follower-1 0 0'", "--next:1:1: error: unknown pair 'wheel/follower'"},
+        {metric_scene("cam.def") + " --next 'cam/follower-1 0'", "--next:1:16: error: expected 2 motions"},
+        {metric_scene("cam.def") + " --next 'cam/follower-1 x 0'", "--next:1:16: error: expected a motion +, 0 or -, not 'x'"},
+        {metric_scene("cam.def") + " --next '#100000'", "--next:1:1: error: no state 100000"},
+        {metric_scene("cam.def") + " --previous ''", "--previous:1:1: error: expected a state"},
+        {metric_scene("cam.def") + " --without 'Force wheel'", "--without:1:7: error: unknown part 'wheel'"},
+        {metric_scene("cam.def") + " --without 'Force cam wind'", "--without:1:11: error: no force of cause 'wind' acts on 'cam'"},
+        {metric_scene("cam.def") + " --without 'Contact cam follower'", "--without:1:1: error: expected 'Force PART [CAUSE]'"},
+        {metric_scene("cam.def") + " --table --json", "--table and --json are two different outputs"},
+        {metric_scene("cam.def") + " --avoid 'cam=+'", "--avoid goes with --path"},
+        {metric_scene("cam.def") + " --path 'cam=x'", "--path:1:5: error: expected a motion +, 0 or -, not 'x'"},
+        {metric_scene("cam.def") + " --why-not '#0 #1'", "--why-not:1:1: error: expected 'STATE -> STATE'"},
+        {metric_scene("cam.def") + " --why-not '#0 -> cam/follower-0 + x'", "--why-not:1:24: error: expected a motion +, 0 or -, not 'x'"},
+        {metric_scene("cam.def") + " --from 'cam/follower-1'", "--from:1:1: error: expected 2 motions (one per part of the chain) after the places, found 0"},
+        {metric_scene("cam.def") + " --rules /nonexistent", "/nonexistent:1:1: error: expected a folder of .rules files"},
         {std::string(QM_BINARY_DIR) + "/no_such_scene.def", "no_such_scene.def"},
     };
     for (const auto& c : cases) {

@@ -1,5 +1,5 @@
 // tests/cli/limits_test.cpp: the resource limits and the uniform option errors of the command
-// line (issue 19 items 3 and 4), end to end through the built qm-atms. A program that counts for
+// line, end to end through the built qm-atms. A program that counts for
 // ever, 40 binary choice sets (2^40 interpretations) and a scene analysed under a tiny limit stop
 // with `error: ... limit N reached while ...; raise it with --...`, exit 2 and an empty standard
 // output; every option error names the option and what it expected (exact texts); a scene or rule
@@ -12,6 +12,7 @@
 #include <fstream>
 #include <spawn.h>
 #include <string>
+#include <tuple>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <utility>
@@ -185,28 +186,18 @@ TEST_CASE("cli/files: a folder or a missing file says so; a file given as the ru
 }
 
 TEST_CASE("cli/files: a UTF-8 byte-order mark at the start of a scene, metric scene or rule file is accepted") {
-    const std::string bom = "\xEF\xBB\xBF";
-    for (const std::string name : {"arch.def", "block_stack.def"}) {
-        const std::string original = src + "/scenarios/alex/" + name;
-        const std::string marked = write("bom_" + name, bom + qm::test::slurp(original));
-        const std::string rules = " --rules " + src + "/rules --json";
-        auto a = qm_atms(original + rules, "files"), b = qm_atms(marked + rules, "files");
+    const std::string rules = " --rules " + src + "/rules --json";
+    for (const auto& [command, file, options] : {std::tuple{"", "scenarios/alex/arch.def", rules},
+                                                 std::tuple{"", "scenarios/alex/block_stack.def", rules},
+                                                 std::tuple{"", "scenarios/metric/cam.def", rules},
+                                                 std::tuple{"run ", "scenarios/rules/queens5.rules", std::string(" --json")}}) {
+        CAPTURE(file);
+        const std::string original = src + "/" + file;
+        const std::string marked = write("bom_" + original.substr(original.rfind('/') + 1), "\xEF\xBB\xBF" + qm::test::slurp(original));
+        auto a = qm_atms(command + original + options, "files"), b = qm_atms(command + marked + options, "files");
         REQUIRE(a.status == 0);
         CHECK(b.status == 0);
         CHECK(b.out == a.out);
         CHECK(b.err == a.err);
     }
-    const std::string metric = qm::test::metric_scene("cam.def");
-    const std::string marked_metric = write("bom_cam.def", bom + qm::test::slurp(metric));
-    auto m = qm_atms(metric + " --rules " + src + "/rules --json", "files");
-    auto mb = qm_atms(marked_metric + " --rules " + src + "/rules --json", "files");
-    REQUIRE(m.status == 0);
-    CHECK(mb.status == 0);
-    CHECK(mb.out == m.out);
-    const std::string queens = src + "/scenarios/rules/queens5.rules";
-    const std::string marked_queens = write("bom_queens5.rules", bom + qm::test::slurp(queens));
-    auto q = qm_atms("run " + queens + " --json", "files"), qb = qm_atms("run " + marked_queens + " --json", "files");
-    REQUIRE(q.status == 0);
-    CHECK(qb.status == 0);
-    CHECK(qb.out == q.out);
 }

@@ -17,25 +17,15 @@
 #include <sys/wait.h>
 
 namespace {
+using qm::test::write_temp;
+using qm::test::count;
+using qm::test::metric_scene;
 
 using Result = qm::test::Run;
 using qm::test::slurp;
 
 Result qm_atms(const std::string& args) { return qm::test::qm_atms(args, "metric_test"); }
 
-std::string write_temp(const std::string& name, const std::string& text) {
-    const std::string path = std::string(QM_BINARY_DIR) + "/" + name;
-    std::ofstream(path) << text;
-    return path;
-}
-
-std::string scene(const std::string& name) { return std::string(QM_SOURCE_DIR) + "/scenarios/metric/" + name; }
-
-std::size_t count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-    return n;
-}
 
 const std::string table_top =
     "(Defmechanism table-top\n"
@@ -47,11 +37,11 @@ const std::string table_top =
 
 TEST_CASE("cli/metric_command: --emit-def writes the Alex scene at a configuration (the cam touching its follower)") {
     // The cam's top is at 0.5 + 0.2 sin(30 deg) = 0.6: the follower, drawn at 0.5, rests on it at 0.1.
-    const Result r = qm_atms("--emit-def " + scene("cam.def") + " 'cam=30, follower=0.1'");
+    const Result r = qm_atms("--emit-def " + metric_scene("cam.def") + " 'cam=30, follower=0.1'");
     CHECK(r.status == 0);
     CHECK(r.err.empty());
     CHECK(r.out ==
-          "; Alex scene of " + scene("cam.def") + " at 'cam=30, follower=0.1' (qm-atms --emit-def)\n"
+          "; Alex scene of " + metric_scene("cam.def") + " at 'cam=30, follower=0.1' (qm-atms --emit-def)\n"
           "(Defscenario 2 cam\n"
           "  Individuals (cam follower)\n"
           "  Descriptions ((rigid-ob cam)(rigid-ob follower))\n"
@@ -68,7 +58,7 @@ TEST_CASE("cli/metric_command: --emit-def writes the Alex scene at a configurati
           "   (Force cam (0 +) (- 0) motor)\n"
           "   (Force follower (0 -) (0 0) gravity)))\n");
     // Lifted clear of the cam there is no contact; the forces still act.
-    const Result lifted = qm_atms("--emit-def " + scene("cam.def") + " 'cam=30, follower=0.2'");
+    const Result lifted = qm_atms("--emit-def " + metric_scene("cam.def") + " 'cam=30, follower=0.2'");
     CHECK(lifted.status == 0);
     CHECK(count(lifted.out, "Contact") == 0);
     CHECK(count(lifted.out, "(Force ") == 2);
@@ -126,7 +116,7 @@ TEST_CASE("cli/metric_command: corner against corner is written as two Alex corn
 TEST_CASE("cli/metric_command: parts on one shaft are one Alex object; undeclared pairs are not looked at") {
     // gear-1 turned onto gear-2's teeth, and gear-3 back onto pinion-2's (gear-2 and pinion-2 stay
     // as drawn: one coordinate for the shaft).
-    const Result r = qm_atms("--emit-def " + scene("gear_train.def") + " 'gear-1=1.0875, gear-3=-0.8586'");
+    const Result r = qm_atms("--emit-def " + metric_scene("gear_train.def") + " 'gear-1=1.0875, gear-3=-0.8586'");
     CHECK(r.status == 0);
     CHECK(r.out.find("Individuals (gear-1 gear-2 gear-3)") != std::string::npos);  // pinion-2 rides on gear-2
     const auto group = r.out.substr(r.out.find("    (gear-2\n"), r.out.find("    (gear-3\n") - r.out.find("    (gear-2\n"));
@@ -170,14 +160,14 @@ TEST_CASE("cli/metric_command: parts that overlap as drawn are refused by every 
 }
 
 TEST_CASE("cli/metric_command: bad input is located, exit status 2") {
-    Result r = qm_atms("--emit-def " + scene("cam.def") + " 'cam=30, follower=0'");
+    Result r = qm_atms("--emit-def " + metric_scene("cam.def") + " 'cam=30, follower=0'");
     CHECK(r.status == 2);
     CHECK(r.err.find("cam.def:8:10: error: 'cam' and 'follower' overlap at this configuration") != std::string::npos);
     CHECK(r.err.find("    Pairs ((cam follower))\n           ^\n") != std::string::npos);
-    r = qm_atms("--emit-def " + scene("cam.def") + " 'cam=30, wheel=2'");
+    r = qm_atms("--emit-def " + metric_scene("cam.def") + " 'cam=30, wheel=2'");
     CHECK(r.status == 2);
     CHECK(r.err == "CONFIG:1:9: error: unknown part 'wheel'; the moving parts are cam, follower\n  cam=30, wheel=2\n          ^\n");
-    r = qm_atms("--emit-def " + scene("cam.def") + " 'follower=9'");
+    r = qm_atms("--emit-def " + metric_scene("cam.def") + " 'follower=9'");
     CHECK(r.status == 2);
     CHECK(r.err.find("outside its limits") != std::string::npos);
     r = qm_atms("--emit-def " + write_temp("open.def", "(Defmechanism open Parts ((p (profile (0 0) (line 1 0) (line 1 1) (line 0 2)) (fixed))))"));
@@ -189,9 +179,6 @@ TEST_CASE("cli/metric_command: bad input is located, exit status 2") {
     r = qm_atms("--places " + std::string(QM_BINARY_DIR) + "/no-such-file.def");
     CHECK(r.status == 2);
     CHECK(r.err.find("cannot read metric scene file") != std::string::npos);
-    r = qm_atms("--places " + scene("cam.def") + " --colour");
-    CHECK(r.status == 2);
-    CHECK(r.err.find("unknown option '--colour'") != std::string::npos);
     r = qm_atms("--emit-def");
     CHECK(r.status == 2);
     const Result help = qm_atms("--help");
@@ -203,25 +190,25 @@ TEST_CASE("cli/metric_command: bad input is located, exit status 2") {
 TEST_CASE("cli/metric_command: --places prints each pair's vocabulary, reuses the cache, writes JSON and SVG") {
     const std::string cache = std::string(QM_BINARY_DIR) + "/metric_test_cache";
     std::filesystem::remove_all(cache);
-    const Result first = qm_atms("--places " + scene("scotch_yoke.def") + " --cache " + cache);
+    const Result first = qm_atms("--places " + metric_scene("scotch_yoke.def") + " --cache " + cache);
     CHECK(first.status == 0);
     CHECK(first.out.find("mechanism scotch-yoke: 1 kinematic pair\n") == 0);
     CHECK(first.out.find("pair crank yoke (q0 = crank: rotation 0..360 degrees periodic; q1 = yoke: translation -1.4..0.2)\n") != std::string::npos);
     CHECK(first.out.find("from cache") == std::string::npos);
     CHECK(count(first.out, "\nplace ") > 10);
     CHECK(count(first.out, "(adjacent ") > 50);
-    const Result second = qm_atms("--places " + scene("scotch_yoke.def") + " --cache " + cache);
+    const Result second = qm_atms("--places " + metric_scene("scotch_yoke.def") + " --cache " + cache);
     CHECK(second.out.find(") from cache\n") != std::string::npos);
     // The same vocabulary, whether computed or read back.
     CHECK(second.out.substr(second.out.find("places ")) == first.out.substr(first.out.find("places ")));
-    const Result json = qm_atms("--places " + scene("scotch_yoke.def") + " --json --cache " + cache);
+    const Result json = qm_atms("--places " + metric_scene("scotch_yoke.def") + " --json --cache " + cache);
     CHECK(json.status == 0);
     CHECK(json.out.find("{\"schema\":\"qm-metric-places/1\",\"mechanism\":\"scotch-yoke\",\"pairs\":[{\"parts\":[\"crank\",\"yoke\"],\"from_cache\":true,"
                         "\"vocabulary\":{\"schema\":\"qm-place-vocabulary/1\"") == 0);
     CHECK(json.out.find("],\"skipped\":[],\"linkages\":[]}\n") != std::string::npos);
     const std::string svg = std::string(QM_BINARY_DIR) + "/metric_test_svg";
     std::filesystem::remove_all(svg);
-    const Result pictures = qm_atms("--places " + scene("gear_train.def") + " --no-cache --svg " + svg);
+    const Result pictures = qm_atms("--places " + metric_scene("gear_train.def") + " --no-cache --svg " + svg);
     CHECK(pictures.status == 0);
     CHECK(pictures.out.find("linkage gear-2 pinion-2\n") != std::string::npos);
     CHECK(slurp(svg + "/gear-1--gear-2.svg").find("<svg") != std::string::npos);
@@ -233,13 +220,13 @@ TEST_CASE("cli/metric_command: --places prints each pair's vocabulary, reuses th
     CHECK(far.out.find("no configuration space for a b: their motion envelopes do not intersect, so they never touch (Def 20)") != std::string::npos);
 }
 
-// Issue 17 item 4: a coordinate a person reads is one they can type. The text of --places gives a
+// A coordinate a person reads is one they can type. The text of --places gives a
 // rotation in degrees, as --config and --emit-def take it: a join place's point, typed back as a
 // configuration, puts the two parts in contact; the JSON keeps radians and says so per axis.
 TEST_CASE("cli/metric_command: --places prints rotations in degrees, the unit --emit-def and --config take") {
-    const Result text = qm_atms("--places " + scene("scotch_yoke.def") + " --no-cache");
+    const Result text = qm_atms("--places " + metric_scene("scotch_yoke.def") + " --no-cache");
     REQUIRE(text.status == 0);
-    const Result json = qm_atms("--places " + scene("scotch_yoke.def") + " --no-cache --json");
+    const Result json = qm_atms("--places " + metric_scene("scotch_yoke.def") + " --no-cache --json");
     REQUIRE(json.status == 0);
     CHECK(json.out.find("\"periodic\":true,\"samples\":64,\"unit\":\"radian\"}") != std::string::npos);
     CHECK(json.out.find("\"samples\":64,\"unit\":\"length\"}") != std::string::npos);
@@ -255,7 +242,7 @@ TEST_CASE("cli/metric_command: --places prints rotations in degrees, the unit --
         REQUIRE(std::regex_search(json.out, m, point));
         CHECK(std::stod(crank) == doctest::Approx(std::stod(m[1]) * 180.0 / 3.14159265358979323846).epsilon(1e-5));
         if (std::stod(crank) > 6.3) ++beyond_a_radian;
-        const Result at = qm_atms("--emit-def " + scene("scotch_yoke.def") + " 'crank=" + crank + ", yoke=" + yoke + "'");
+        const Result at = qm_atms("--emit-def " + metric_scene("scotch_yoke.def") + " 'crank=" + crank + ", yoke=" + yoke + "'");
         CHECK(at.status == 0);
         CHECK(at.out.find("(Contact crank-") != std::string::npos);
     }

@@ -26,6 +26,17 @@ Result qm_atms(const std::string& args, const std::string& input = "") { return 
 
 std::string scene(const std::string& name) { return std::string(QM_SOURCE_DIR) + "/scenarios/alex/" + name; }
 
+// A boulder resting on a table under gravity, with a force of cause wind in its one situation.
+std::string windy_boulder() {
+    return qm::test::write_temp("scene_cli_wind.def", "(Defscenario 2 wind\n"
+                                                      "  Individuals (boulder table)\n"
+                                                      "  Surfaces ((boulder (bo-b (0 -) (0 +))) (table (tb (0 +) (0 0))))\n"
+                                                      "  Translational-Constraints ((table (?x ?y)))\n"
+                                                      "  Rotational-Constraints ((table (?r)))\n"
+                                                      "  Forces ((boulder (0 -) (0 0) gravity)))\n"
+                                                      "(Defstates ((Contact bo-b tb) (Force boulder (+ 0) (0 0) wind)))\n");
+}
+
 bool is_direction(const Json& j, std::size_t arity) {
     static const std::regex shape(R"(\([+0-]( [+0-])*\))");
     return j.is_string() && std::regex_match(j.string(), shape) && (j.string().size() + 1) / 2 - 1 == arity;
@@ -198,18 +209,16 @@ TEST_CASE("cli/scene_command: a metric scene is analysed at a configuration like
     REQUIRE(doc.has_value());
     CHECK(check_schema(*doc, 2) == 1);
     // The same as analysing the Alex scene --emit-def writes.
-    const std::string emitted = std::string(QM_BINARY_DIR) + "/scene_cli_cam_emitted.def";
     Result def = qm_atms("--emit-def " + cam);
     REQUIRE(def.status == 0);
-    std::ofstream(emitted) << def.out;
+    const std::string emitted = qm::test::write_temp("scene_cli_cam_emitted.def", def.out);
     CHECK(qm_atms(emitted + " --json").out == r.out);
     CHECK(qm_atms(cam + " --config 'nosuch=3'").status == 2);
     CHECK(qm_atms(scene("block.def") + " --config 'cam=3'").status == 2);  // --config needs a metric scene
 }
 
 TEST_CASE("cli/scene_command: bad input is located and exits with 2") {
-    const std::string bad = std::string(QM_BINARY_DIR) + "/scene_cli_bad.def";
-    std::ofstream(bad) << "(Defscenario 2 broken\n  Individuals (a b\n";
+    const std::string bad = qm::test::write_temp("scene_cli_bad.def", "(Defscenario 2 broken\n  Individuals (a b\n");
     Result syntax = qm_atms(bad);
     CHECK(syntax.status == 2);
     CHECK(syntax.err.find("scene_cli_bad.def:") != std::string::npos);
@@ -218,9 +227,6 @@ TEST_CASE("cli/scene_command: bad input is located and exits with 2") {
     CHECK(why.status == 2);
     CHECK(why.err.find("--why:1:") != std::string::npos);
     CHECK(qm_atms(scene("block.def") + " --why 'Rotational-Motion (nobody (+))'").status == 2);
-    CHECK(qm_atms(scene("block.def") + " --situation 3").status == 2);
-    CHECK(qm_atms(scene("block.def") + " --situation zero").status == 2);
-    CHECK(qm_atms(scene("block.def") + " --frobnicate").status == 2);
     CHECK(qm_atms(scene("block.def") + " --without 'Translational-Motion (block (0 -))'").status == 2);
     CHECK(qm_atms(scene("block.def") + " --given 'block (0 -)'").status == 2);
     CHECK(qm_atms(scene("block.def") + " --why").status == 2);
@@ -231,7 +237,6 @@ TEST_CASE("cli/scene_command: bad input is located and exits with 2") {
     CHECK(qm_atms(scene("block.def") + " --why '{\"block\": {\"translation\": \"(0 \xff)\"}}'").status == 2);
 }
 
-// Regressions found by an audit against issues 4 and 5 (a new user's inputs).
 TEST_CASE("cli/scene_command: a malformed JSON query names what was expected in words") {
     for (const char* q : {R"q({"block": {}})q", "{", R"q({block: {"rotation": "(0)"}})q", R"q({"block": {"rotation": "(0)}})q"}) {
         CAPTURE(q);
@@ -249,8 +254,7 @@ TEST_CASE("cli/scene_command: a malformed JSON query names what was expected in 
 }
 
 TEST_CASE("cli/scene_command: a scene without situations is reported, not an error") {
-    const std::string none = std::string(QM_BINARY_DIR) + "/scene_cli_no_situations.def";
-    std::ofstream(none) << "(Defscenario 2 lone\n  Individuals (a)\n  Descriptions ((rigid-ob a)))\n";
+    const std::string none = qm::test::write_temp("scene_cli_no_situations.def", "(Defscenario 2 lone\n  Individuals (a)\n  Descriptions ((rigid-ob a)))\n");
     Result text = qm_atms(none);
     CHECK(text.status == 0);
     CHECK(text.err.empty());
@@ -274,24 +278,12 @@ TEST_CASE("cli/scene_command: a scene without situations is reported, not an err
     CHECK(broken.err.find("bad.rules:1:") != std::string::npos);
 }
 
+// The messages of --without and --given: scene/what_if_test.cpp; here, that --situation scopes them.
 TEST_CASE("cli/scene_command: --without something no situation has is an error, not a silent no-op") {
-    Result absent = qm_atms(scene("block.def") + " --without 'Contact tb block-t-m'");
-    CHECK(absent.status == 2);
-    CHECK(absent.err.find("--without:1:1: error: expected a contact or force of the scene to take away, but no "
-                          "situation has a Contact (tb block-t-m)") == 0);
     // Situation 1 has no contact; situation 2 has it.
     CHECK(qm_atms(scene("block.def") + " --situation 1 --without 'Contact tb block-b-m'").status == 2);
     CHECK(qm_atms(scene("block.def") + " --situation 2 --without 'Contact tb block-b-m'").status == 0);
     CHECK(qm_atms(scene("block.def") + " --without 'Contact tb block-b-m'").status == 0);  // some situation has it
-    Result force = qm_atms(scene("gears.def") + " --without 'Force driver'");               // the gears have no force
-    CHECK(force.status == 2);
-    CHECK(force.err.find("no situation has a force on 'driver'") != std::string::npos);
-}
-
-TEST_CASE("cli/scene_command: an option given twice that would silently replace the first is an error") {
-    CHECK(qm_atms(scene("block.def") + " --why 'Rotational-Motion (block (+))' --why 'Rotational-Motion (block (-))'")
-              .status == 2);
-    CHECK(qm_atms(scene("block.def") + " --situation 1 --situation 2").status == 2);
 }
 
 TEST_CASE("cli/scene_command: --situation N shows one situation under a header counting the scene's") {
@@ -316,8 +308,7 @@ TEST_CASE("cli/scene_command: interactive errors name the command, and whatif ch
     CHECK(r.out.find("9 consistent combinations") != std::string::npos);  // the last whatif still answers
 }
 
-// Regressions found by audit 5 (--why's reasons and responsible sets, corner contacts, duplicate
-// motions, --without's note, whole JSON entries as queries).
+// Which reasons and responsible sets: analysis_api_test.cpp; here, that text and JSON say the same.
 TEST_CASE("cli/scene_command: --why lists the argument's reasons, the same in text and JSON") {
     const std::string args = scene("recoil_escapement.def") + " --situation 2 --why 'Rotational-Motion (gear (+))'";
     Result text = qm_atms(args);
@@ -327,12 +318,9 @@ TEST_CASE("cli/scene_command: --why lists the argument's reasons, the same in te
     auto w = Json::parse(json.out);
     REQUIRE(w.has_value());
     const auto& exclusions = (*w)["exclusions"].array();
-    // Before: 21 reasons, exclusions[0] a pin of the scape wheel's translation resting on nothing.
-    CHECK(exclusions.size() <= 6);
     REQUIRE_FALSE(exclusions.empty());
     REQUIRE(exclusions[0]["responsible"].array().size() == 1);
     CHECK(exclusions[0]["responsible"].array()[0].string() == "Contact (s-w-b-3 gear-top-3)");
-    for (const auto& x : exclusions) CHECK_FALSE(x["responsible"].array().empty());
     std::size_t reasons = 0;
     for (std::size_t at = text.out.find("  Reason "); at != std::string::npos; at = text.out.find("  Reason ", at + 1)) ++reasons;
     CHECK(reasons == exclusions.size());
@@ -340,10 +328,6 @@ TEST_CASE("cli/scene_command: --why lists the argument's reasons, the same in te
     CHECK(text.out.find("the scene's description alone (no contact") == std::string::npos);
     CHECK(text.out.find("every translation of scape-wheel but (0 0)") != std::string::npos);
     CHECK((*w)["responsible_minimal"].boolean());
-
-    Result given = qm_atms(scene("gears.def") + " --given 'driver (0 0) (-)' --why 'Rotational-Motion (follower (-))'");
-    CHECK(given.out.find("  Reason 3:") != std::string::npos);
-    CHECK(given.out.find("  Reason 4:") == std::string::npos);  // before: 11
 }
 
 TEST_CASE("cli/scene_command: --why's responsible sets are the minimal ones, and say so") {
@@ -353,22 +337,19 @@ TEST_CASE("cli/scene_command: --why's responsible sets are the minimal ones, and
                      "    {Force (wedge (0 -) (0 0))}\n"
                      "    {Contact (bl-b-l w-t-l), Force (block (0 -) (0 0))}\n"
                      "    {Contact (bl-b-r w-t-r), Force (block (0 -) (0 0))}\n") != std::string::npos);
-    // The audit's check: without the block's force and its left contact the wedge still slides.
-    Result without = qm_atms(scene("wedge_ramp.def") + " --without 'Force block' --without 'Contact bl-b-l w-t-l'");
-    CHECK(without.out.find("Translational-Motion (wedge (+ -))") != std::string::npos);
 }
 
 TEST_CASE("cli/scene_command: a contact the laws cannot use is warned about, located, and --why says so") {
-    const std::string bad = std::string(QM_BINARY_DIR) + "/scene_cli_corner_bad.def";
-    std::ofstream(bad) << "(Defscenario 2 cb\n"
-                          "  Individuals (upper lower)\n"
-                          "  Descriptions ((rigid-ob upper) (rigid-ob lower))\n"
-                          "  Surfaces ((upper (c (+ -) (- +)) (d (- -) (+ +))) (lower (a (- +) (+ -)) (b (- -) (+ +))))\n"
-                          "  Corners ((upper (tip c d (0 +))))\n"
-                          "  Translational-Constraints ((lower (?x ?y)))\n"
-                          "  Rotational-Constraints ((lower (?r)))\n"
-                          "  Forces ((upper (0 -) (0 0))))\n"
-                          "(Defstates ((Contact tip b)))\n";
+    const std::string bad = qm::test::write_temp("scene_cli_corner_bad.def",
+                                                 "(Defscenario 2 cb\n"
+                                                 "  Individuals (upper lower)\n"
+                                                 "  Descriptions ((rigid-ob upper) (rigid-ob lower))\n"
+                                                 "  Surfaces ((upper (c (+ -) (- +)) (d (- -) (+ +))) (lower (a (- +) (+ -)) (b (- -) (+ +))))\n"
+                                                 "  Corners ((upper (tip c d (0 +))))\n"
+                                                 "  Translational-Constraints ((lower (?x ?y)))\n"
+                                                 "  Rotational-Constraints ((lower (?r)))\n"
+                                                 "  Forces ((upper (0 -) (0 0))))\n"
+                                                 "(Defstates ((Contact tip b)))\n");
     Result r = qm_atms(bad);
     CHECK(r.status == 0);
     CHECK(r.err.find("scene_cli_corner_bad.def:9:14: warning: Contact (tip b) in situation 1 constrains and pushes "
@@ -379,14 +360,10 @@ TEST_CASE("cli/scene_command: a contact the laws cannot use is warned about, loc
     Result why = qm_atms(bad + " --why 'Translational-Motion (upper (0 -))'");
     CHECK(why.out.find("scene_cli_corner_bad.def:9: Contact (tip b) in situation 1 constrains and pushes nothing") !=
           std::string::npos);
-    // The thesis' corner scene has no such contact.
-    CHECK(qm_atms(scene("corner_contacts.def")).err.empty());
 }
 
 TEST_CASE("cli/scene_command: one given motion per object; --given replaces a scene's Motion") {
-    Result twice = qm_atms(scene("gears.def") + " --given 'driver (0 0) (-)' --given 'driver (0 0) (+)'");
-    CHECK(twice.status == 2);
-    CHECK(twice.err.find("--given:1:1: error: expected one --given per object, but 'driver' is given twice") == 0);
+    CHECK(qm_atms(scene("gears.def") + " --given 'driver (0 0) (-)' --given 'driver (0 0) (+)'").status == 2);
     Result over = qm_atms(scene("recoil_escapement.def") + " --situation 2 --given 'pallet (0 0) (-)'");
     CHECK(over.status == 0);
     CHECK(over.err.find("recoil_escapement.def:16:64: note: --given 'pallet (0 0) (-)' replaces this Motion "
@@ -401,14 +378,7 @@ TEST_CASE("cli/scene_command: one given motion per object; --given replaces a sc
 TEST_CASE("cli/scene_command: --without says what it took away; 'Force OBJ CAUSE' takes one cause's force") {
     Result r = qm_atms(scene("wedge_ramp.def") + " --without 'Force block'");
     CHECK(r.out.find("  Note: what-if: analysed without every force on 'block' (--without)\n") != std::string::npos);
-    const std::string wind = std::string(QM_BINARY_DIR) + "/scene_cli_wind.def";
-    std::ofstream(wind) << "(Defscenario 2 wind\n"
-                           "  Individuals (boulder table)\n"
-                           "  Surfaces ((boulder (bo-b (0 -) (0 +))) (table (tb (0 +) (0 0))))\n"
-                           "  Translational-Constraints ((table (?x ?y)))\n"
-                           "  Rotational-Constraints ((table (?r)))\n"
-                           "  Forces ((boulder (0 -) (0 0) gravity)))\n"
-                           "(Defstates ((Contact bo-b tb) (Force boulder (+ 0) (0 0) wind)))\n";
+    const std::string wind = windy_boulder();
     Result calm = qm_atms(wind + " --json --without 'Force boulder wind'");
     REQUIRE(calm.status == 0);
     auto doc = Json::parse(calm.out);
@@ -449,8 +419,7 @@ std::multiset<std::string> combinations_of(const Result& r, std::size_t situatio
     return out;
 }
 
-// Issue 17 item 3: the kinematically consistent combinations are those of the same scene with every
-// force taken away (computed here the other way: --without each force, a fresh analysis).
+// The kinematically consistent combinations are those of the same scene with every force taken away (computed here the other way: --without each force, a fresh analysis).
 TEST_CASE("cli/scene_command: --kinematic lists what blocking and pushing alone allow; both counts are shown") {
     const std::string crate = scene("crate_shim.def");
     Result text = qm_atms(crate);
@@ -475,7 +444,7 @@ TEST_CASE("cli/scene_command: --kinematic lists what blocking and pushing alone 
     // Where the forces rule nothing out, the heading says so.
     CHECK(qm_atms(scene("gears.def")).out.find("Motions: 6 consistent combinations (every kinematically consistent one: "
                                                 "the forces rule none out)\n") != std::string::npos);
-    // A stable verdict that only the forces hold says so (issue 17 item 6).
+    // A stable verdict that only the forces hold says so.
     Result block = qm_atms(scene("block.def") + " --situation 2");
     CHECK(block.out.find("  Stable: yes (the only possible motions are zero)\n  Note: stable only because of the forces: "
                          "blocking and pushing alone would let block translate (+ +), (+ 0), (0 +), (- +) or (- 0) (6 "
@@ -483,7 +452,7 @@ TEST_CASE("cli/scene_command: --kinematic lists what blocking and pushing alone 
           std::string::npos);
 }
 
-// Issue 17 item 5: --with adds; checked against the same scene written with the item.
+// --with adds; checked against the same scene written with the item.
 TEST_CASE("cli/scene_command: --with adds a contact or a force, and says so") {
     // Situation 1 of block.def with situation 2's contacts added is situation 2.
     Result added = qm_atms(scene("block.def") + " --json --situation 1 --with 'Contact tb block-b-l' --with 'Contact tb "
@@ -494,14 +463,7 @@ TEST_CASE("cli/scene_command: --with adds a contact or a force, and says so") {
     Result two = qm_atms(scene("block.def") + " --json --situation 2");
     CHECK(combinations_of(added) == combinations_of(two));
     // A force taken away and added back gives the original answer.
-    const std::string wind = std::string(QM_BINARY_DIR) + "/scene_cli_with_wind.def";
-    std::ofstream(wind) << "(Defscenario 2 wind\n"
-                           "  Individuals (boulder table)\n"
-                           "  Surfaces ((boulder (bo-b (0 -) (0 +))) (table (tb (0 +) (0 0))))\n"
-                           "  Translational-Constraints ((table (?x ?y)))\n"
-                           "  Rotational-Constraints ((table (?r)))\n"
-                           "  Forces ((boulder (0 -) (0 0) gravity)))\n"
-                           "(Defstates ((Contact bo-b tb) (Force boulder (+ 0) (0 0) wind)))\n";
+    const std::string wind = windy_boulder();
     Result windy = qm_atms(wind + " --json");
     Result back = qm_atms(wind + " --json --without 'Force boulder wind' --with 'Force boulder (+ 0) (0 0) gust'");
     REQUIRE(back.status == 0);
@@ -522,9 +484,9 @@ TEST_CASE("cli/scene_command: --with adds a contact or a force, and says so") {
                           "'block-t-m' are not opposite") == 0);
 }
 
-// Issue 17 item 1: a --why answer that reads like one. The arch query of the issue (292 lines
-// before) is a golden file, run from the source folder so that the scene's paths in it are relative
-// (QM_WRITE_GOLDEN=1 rewrites it); --full shows everything, bindings included.
+// A --why answer that reads like one. The arch query is a golden file, run from the source folder so
+// that the scene's paths in it are relative (QM_WRITE_GOLDEN=1 rewrites it); --full shows
+// everything, bindings included.
 TEST_CASE("cli/scene_command: --why starts with the verdict and stays short; --full shows it all (golden)") {
     const std::string golden = std::string(QM_SOURCE_DIR) + "/tests/cli/why/arch_cross_bar.txt";
     const std::string out = std::string(QM_BINARY_DIR) + "/scene_cli_why_arch.out";
@@ -532,8 +494,7 @@ TEST_CASE("cli/scene_command: --why starts with the verdict and stays short; --f
                             " --why 'Rotational-Motion (cross-bar (+))'";
     REQUIRE(std::system((run + " >" + out).c_str()) == 0);
     const std::string text = slurp(out);
-    if (std::getenv("QM_WRITE_GOLDEN")) std::ofstream(golden) << text;
-    CHECK(text == slurp(golden));
+    qm::test::check_golden(text, golden);
     CHECK(std::count(text.begin(), text.end(), '\n') < 40);
     CHECK(text.find("in situation 1: ruled out by constraint-prevents-rotation (section 3.1, Table 3.1; Definition 23), resting on {") == 34);
     CHECK(text.find(" at contact_constraint.rules:") != std::string::npos);  // relative to the rules folder

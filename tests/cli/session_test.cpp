@@ -1,9 +1,9 @@
-// tests/cli/session_test.cpp: the interactive mode (cli/session.hpp, cli/line_editor.hpp; issue 17
-// item 7) through the built executable, driven two ways: from standard input (a pipe: no prompt,
-// only the answers) for the messages: "did you mean" for commands and names, the usage of a
-// command given the wrong arguments, `with` and `kinematic`; and through a pseudo-terminal, as a
-// person types: the prompt, history recalled with the Up arrow (libedit), and a newline written
-// at Ctrl-D so the shell's prompt starts on its own line.
+// tests/cli/session_test.cpp: the interactive mode (cli/session.hpp, cli/line_editor.hpp) through
+// the built executable, driven two ways: from standard input (a pipe: no prompt, only the answers)
+// for the messages: "did you mean" for commands and names, the usage of a command given the wrong
+// arguments, `with` and `kinematic`; and through a pseudo-terminal, as a person types: the prompt,
+// history recalled with the Up arrow (libedit), and a newline written at Ctrl-D so the shell's
+// prompt starts on its own line.
 #include "qm_atms_run.hpp"
 #include <chrono>
 #include <csignal>
@@ -23,14 +23,7 @@ namespace {
 const std::string source = QM_SOURCE_DIR;
 std::string scene(const std::string& name) { return source + "/scenarios/alex/" + name; }
 
-qm::test::Run session(const std::string& args, const std::string& input) {
-    static int counter = 0;
-    const std::string in = std::string(QM_BINARY_DIR) + "/session_in_" + std::to_string(::getpid()) + "_" + std::to_string(++counter);
-    std::ofstream(in) << input;
-    auto r = qm::test::qm_atms(args + " -i <" + in, "session");
-    std::remove(in.c_str());
-    return r;
-}
+qm::test::Run session(const std::string& args, const std::string& input) { return qm::test::qm_atms(args + " -i", "session", {input, ""}); }
 
 // qm-atms on a pseudo-terminal: what it writes, read until `until` appears (or 20 s pass).
 class Terminal {
@@ -105,8 +98,6 @@ public:
         return -1;
     }
 
-    [[nodiscard]] pid_t pid() const noexcept { return pid_; }
-
 private:
     int fd_ = -1;
     pid_t pid_ = -1;
@@ -170,7 +161,7 @@ TEST_CASE("cli/session: on a terminal: prompt, history with the Up arrow, a newl
     CHECK(t.keep_.find('\n') != std::string::npos);
 }
 
-// Issue 17 item 5: `with` answers from the labels already computed when what it adds is a contact of
+// `with` answers from the labels already computed when what it adds is a contact of
 // another situation; the answer must be the one a fresh analysis gives (--with on the command line
 // analyses the larger scene afresh), in every part of the situation's JSON.
 TEST_CASE("cli/session: with, from the labels already computed, answers as a fresh analysis does") {

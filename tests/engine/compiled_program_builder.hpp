@@ -81,9 +81,6 @@ inline CompiledRule rule(std::string name, std::uint32_t slots, std::vector<Comp
             r.non_monotonic = true;
     return r;
 }
-}  // namespace qm::engine::test
-
-namespace qm::engine::test {
 inline CompiledConsequent exactly_one(Slot s, CompiledTerm set, CompiledAtom a) {
     CompiledConsequent c;
     c.kind = CompiledConsequent::Kind::exactly_one;
@@ -101,23 +98,5 @@ inline CompiledCondition aggregate(CompiledAtom a, CompiledTerm value, BuiltinId
     c.start = std::move(start);
     c.slot = result;
     return c;
-}
-inline CompiledProgram queens(ValueTable& v, int n) {
-    const auto& b = default_builtins();
-    CompiledProgram p;
-    for (int r = 1; r <= n; ++r) p.premises.push_back(ground(v, "row", {v.integer(r)}));
-    p.rules.push_back(rule("place", 2, {match(atom(v, "row", {var(0)}))},
-                           {exactly_one(1, call(b, "range", {constant(v.integer(1)), constant(v.integer(n))}),
-                                        atom(v, "queen", {var(0), var(1)}))}));
-    p.rules.push_back(rule("same-column", 3,
-                           {match(atom(v, "queen", {var(0), var(2)})), match(atom(v, "queen", {var(1), var(2)})),
-                            builtin_test(b, "<", {var(0), var(1)})},
-                           {falsity()}));
-    auto diff = [&](Slot x, Slot y) { return call(b, "abs", {call(b, "-", {var(x), var(y)})}); };
-    p.rules.push_back(rule("same-diagonal", 4,
-                           {match(atom(v, "queen", {var(0), var(2)})), match(atom(v, "queen", {var(1), var(3)})),
-                            builtin_test(b, "<", {var(0), var(1)}), builtin_test(b, "=", {diff(0, 1), diff(2, 3)})},
-                           {falsity()}));
-    return p;
 }
 }  // namespace qm::engine::test

@@ -2,8 +2,6 @@
 // consistent and, if not, names the rule whose `false` refutes it and where it is written; checked
 // against brute force over every subset of a small program's assumptions.
 #include "engine/consistency.hpp"
-#include "engine/rule_compiler.hpp"
-#include "engine/rule_spec_reader.hpp"
 #include "run_rule_text.hpp"
 #include <doctest/doctest.h>
 #include <memory>
@@ -11,10 +9,6 @@
 using namespace qm::engine;
 
 namespace {
-
-std::unique_ptr<Engine> run_text(const std::string& text, const std::string& file) {
-    return test::run_rule_text(text, file);
-}
 
 // Four switches: a and b never together (line 7), nor c and d (line 10), nor c with (lit), which b
 // derives (line 13: a nogood through a derived fact).
@@ -36,7 +30,7 @@ rule lit-excludes-c
 )";
 
 TEST_CASE("Refutations: nothing for a consistent environment, else the rule and line of a nogood within it") {
-    const auto engine = run_text(program, "c.rules");
+    const auto engine = test::run_rule_text(program, "c.rules");
     Engine& e = *engine;
     Refutations refutations(e);
     std::vector<qm::atms::AssumptionId> on;

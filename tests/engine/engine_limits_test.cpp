@@ -3,10 +3,8 @@
 // for ever stops with qm::LimitReached naming the rule being fired and its location; the bounds
 // are exact (a program that holds N facts, or needs E environments, runs at a limit of N or E and
 // stops at N - 1 or E - 1), measured against the same program run without limits.
-#include "engine/engine.hpp"
-#include "engine/rule_compiler.hpp"
-#include "engine/rule_spec_reader.hpp"
 #include "engine/run_report.hpp"
+#include "run_rule_text.hpp"
 #include "qm/limit_reached.hpp"
 #include <doctest/doctest.h>
 #include <memory>
@@ -17,12 +15,7 @@ using namespace qm::engine;
 
 namespace {
 std::unique_ptr<Engine> engine_for(const std::string& text, EngineLimits limits = {}) {
-    qm::Diagnostics d;
-    ProgramSpec spec;
-    read_rule_text(text, "limits.rules", spec, d);
-    auto p = compile_program(spec, d);
-    REQUIRE(p.has_value());
-    auto e = std::make_unique<Engine>(std::move(p->program), std::move(p->values));
+    auto e = test::engine_for(text, "limits.rules");
     e->set_limits(limits);
     return e;
 }

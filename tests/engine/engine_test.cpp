@@ -5,15 +5,15 @@
 // bindings; negation and aggregates are checked in both modes; a rule with a condition repeated
 // 1,000 times gives the answers of the rule written once.
 #include "compiled_program_builder.hpp"
+#include "run_rule_text.hpp"
+#include "../support/golden.hpp"
 #include "engine/engine.hpp"
 #include "engine/rule_compiler.hpp"
 #include "engine/rule_spec_reader.hpp"
 #include "engine/run_report.hpp"
 #include <doctest/doctest.h>
 #include <algorithm>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <random>
 #include <set>
 
@@ -453,17 +453,7 @@ TEST_CASE("engine/engine: `not` and aggregates over many facts per predicate equ
 
 namespace {
 // The report of a rule program given as text.
-RunReport report_of(const std::string& text) {
-    qm::Diagnostics d;
-    ProgramSpec spec;
-    read_rule_text(text, "repeated.rules", spec, d);
-    auto p = compile_program(spec, d);
-    REQUIRE(p.has_value());
-    Engine e(std::move(p->program), std::move(p->values));
-    e.run(d);
-    REQUIRE(!d.has_errors());
-    return make_report(e);
-}
+RunReport report_of(const std::string& text) { return make_report(*run_rule_text(text, "repeated.rules")); }
 std::vector<std::pair<std::string, std::vector<EnvText>>> fact_lines(const RunReport& r) {
     std::vector<std::pair<std::string, std::vector<EnvText>>> out;
     for (const auto& f : r.facts) out.emplace_back(f.fact, f.label);
@@ -472,10 +462,7 @@ std::vector<std::pair<std::string, std::vector<EnvText>>> fact_lines(const RunRe
 }  // namespace
 
 TEST_CASE("engine/engine: a condition repeated 1,000 times gives the answers of the rule written once") {
-    std::ifstream in(std::string(QM_SOURCE_DIR) + "/scenarios/rules/queens6.rules");
-    std::stringstream text;
-    text << in.rdbuf();
-    const std::string queens6 = text.str();
+    const std::string queens6 = qm::test::slurp(std::string(QM_SOURCE_DIR) + "/scenarios/rules/queens6.rules");
     const RunReport once = report_of(queens6);
     REQUIRE(once.interpretations.size() == 4);
     // Each repeated condition in turn: a match of bound variables, a match that binds new

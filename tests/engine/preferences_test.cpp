@@ -21,10 +21,6 @@ using namespace qm::engine;
 
 namespace {
 
-// The program in `text` (read as `file`) compiled and run (run_rule_text.hpp).
-std::unique_ptr<Engine> run_text(const std::string& text, const std::string& file) {
-    return test::run_rule_text(text, file);
-}
 const char* program = R"(fact (ranked a)
 fact (ranked b)
 fact (object a)
@@ -52,7 +48,7 @@ std::string errors_of(const std::string& text) {
     read_rule_text(text, "p.rules", spec, d);
     (void)check_program(spec, d);
     std::string out;
-    for (const auto& x : d.items()) out += x.where.file + ":" + std::to_string(x.where.line) + ":" + std::to_string(x.where.column) + ": " + x.message + "\n";
+    for (const auto& x : d.items()) out += to_string(x.where) + ": " + x.message + "\n";
     return out;
 }
 }  // namespace
@@ -107,7 +103,7 @@ TEST_CASE("engine/preferences: a syntax error in `prefer` is located") {
 }
 
 TEST_CASE("engine/preferences: ranks by the rank facts holding in an environment") {
-    const auto engine = run_text(program, "p.rules");
+    const auto engine = test::run_rule_text(program, "p.rules");
     Engine& e = *engine;
     REQUIRE(e.choice_sets().size() == 3);
     // Which set is whose, and which member stands for which direction.
@@ -157,7 +153,7 @@ rule blocked
   then false
 prefer (points ?x ?d) by (near ?x ?d ?k) up to 2
 )";
-    const auto engine = run_text(vane, "vane.rules");
+    const auto engine = test::run_rule_text(vane, "vane.rules");
     Engine& e = *engine;
     REQUIRE(e.choice_sets().size() == 1);
     const auto& set = e.choice_sets()[0];
@@ -202,7 +198,7 @@ TEST_CASE("engine/preferences: a rank table over reference assumptions equals br
         }
         text += "rule near\n  when (allow ?o ?r) (dist ?r ?d ?k)\n  then (near ?o ?d ?k)\n";
         text += "prefer (go ?o ?d) by (near ?o ?d ?k) up to " + std::to_string(cap) + "\n";
-        const auto engine = run_text(text, "t.rules");
+        const auto engine = test::run_rule_text(text, "t.rules");
         Engine& e = *engine;
         REQUIRE(e.choice_sets().size() == 1);
         const auto& set = e.choice_sets()[0];
@@ -241,7 +237,7 @@ TEST_CASE("engine/preferences: a rank table over reference assumptions equals br
         }
     }
     // A set no preference chooses among has no declaration.
-    const auto engine = run_text("fact (object a)\nrule choose\n  when (object ?o)\n  then [exactly one ?d in {n e}: assume (go ?o ?d)]\n", "u.rules");
+    const auto engine = test::run_rule_text("fact (object a)\nrule choose\n  when (object ?o)\n  then [exactly one ?d in {n e}: assume (go ?o ?d)]\n", "u.rules");
     Engine& e = *engine;
     REQUIRE(e.choice_sets().size() == 1);
     CHECK(choosing_preference(e, e.choice_sets()[0]) == nullptr);

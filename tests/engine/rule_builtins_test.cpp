@@ -8,9 +8,6 @@
 //   - rotate-90 against Definition 14 / Table 2.1 in 2-D (the quarter-turn matrix of Table 2.4);
 //   - the direction sets of Definitions 1 and 4 and the zero tests of Definitions 3 and 6.
 // Every table cell is derived by a rule firing, so a wrong entry would show as a wrong fact.
-#include "engine/engine.hpp"
-#include "engine/rule_compiler.hpp"
-#include "engine/rule_spec_reader.hpp"
 #include "run_rule_text.hpp"
 #include <doctest/doctest.h>
 #include <map>
@@ -158,17 +155,9 @@ TEST_CASE("engine/rule_builtins: rotate-90 is the quarter turn of Definition 14 
 
 TEST_CASE("engine/rule_builtins: rotate-90 per axis in 3-D follows Table 2.1") {
     // Table 2.1: a positive rotation about x turns y to z, about y turns z to x, about z turns x to y.
-    qm::Diagnostics d;
-    ProgramSpec spec;
-    read_rule_text("fact (v (+ 0 0) (0 0 +))\nfact (v (0 + 0) (+ 0 0))\nfact (v (0 0 +) (0 + 0))\n"
-                   "rule turn\n  when (v ?x ?r)\n  then (turned ?x ?r (rotate-90 ?x ?r))\n",
-                   "rotate3.rules", spec, d);
-    auto p = compile_program(spec, d);
-    REQUIRE(p.has_value());
-    Engine e(std::move(p->program), std::move(p->values));
-    e.run(d);
-    CHECK(!d.has_errors());
-    auto turned = facts(e, "turned");
+    auto e = run("fact (v (+ 0 0) (0 0 +))\nfact (v (0 + 0) (+ 0 0))\nfact (v (0 0 +) (0 + 0))\n"
+                 "rule turn\n  when (v ?x ?r)\n  then (turned ?x ?r (rotate-90 ?x ?r))\n");
+    auto turned = facts(*e, "turned");
     CHECK(turned.count({"(+ 0 0)", "(0 0 +)", "(0 + 0)"}) == 1);
     CHECK(turned.count({"(0 + 0)", "(+ 0 0)", "(0 0 +)"}) == 1);
     CHECK(turned.count({"(0 0 +)", "(0 + 0)", "(+ 0 0)"}) == 1);

@@ -5,10 +5,9 @@
 #include "engine/rule_checker.hpp"
 #include "engine/rule_compiler.hpp"
 #include "engine/rule_spec_reader.hpp"
+#include "../support/golden.hpp"
 #include <doctest/doctest.h>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <map>
 #include <random>
 
@@ -89,10 +88,7 @@ TEST_CASE("engine/rule_checker: the bundled programs pass; messages name the fir
 }
 
 TEST_CASE("engine/rule_checker: every ```rules example of docs/RULES.md reads, checks and compiles") {
-    std::ifstream in(std::string(QM_SOURCE_DIR) + "/docs/RULES.md");
-    std::stringstream doc;
-    doc << in.rdbuf();
-    const std::string text = doc.str();
+    const std::string text = qm::test::slurp(std::string(QM_SOURCE_DIR) + "/docs/RULES.md");
     std::size_t examples = 0;
     for (std::size_t at = text.find("```rules\n"); at != std::string::npos; at = text.find("```rules\n", at + 1)) {
         const std::size_t begin = at + 9, end = text.find("```", begin);

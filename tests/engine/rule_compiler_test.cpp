@@ -1,6 +1,7 @@
 // tests/engine/rule_compiler_test.cpp: rule text -> compiled program -> run, through the front end
 // (engine/rule_spec_reader.hpp, the X3 parser) and the compiler: the scenario programs give their known
-// answers, and bad programs give located diagnostics.
+// answers (N-queens: tests/cli/run_command_test.cpp), and strata are ordered. Bad programs: the
+// golden cases of tests/engine/errors/.
 #include "engine/engine.hpp"
 #include "engine/rule_compiler.hpp"
 #include "engine/rule_spec_reader.hpp"
@@ -16,26 +17,7 @@ std::optional<LoadedProgram> compile_text(const std::string& text, qm::Diagnosti
     if (d.has_errors()) return std::nullopt;
     return compile_program(spec, d);
 }
-std::string messages(const qm::Diagnostics& d) {
-    std::string out;
-    for (const auto& x : d.sorted())
-        out += x.where.file + ":" + std::to_string(x.where.line) + ":" + std::to_string(x.where.column) + ": " + x.message + "\n";
-    return out;
-}
 }  // namespace
-
-TEST_CASE("engine/rule_compiler: scenarios/rules/queensN.rules have 2, 10, 4, 40, 92 interpretations") {
-    const std::size_t expected[] = {2, 10, 4, 40, 92};
-    for (int n = 4; n <= 8; ++n) {
-        qm::Diagnostics d;
-        auto p = load_program(std::string(QM_SOURCE_DIR) + "/scenarios/rules/queens" + std::to_string(n) + ".rules", d);
-        REQUIRE(p.has_value());
-        Engine e(std::move(p->program), std::move(p->values));
-        e.run(d);
-        CHECK(!d.has_errors());
-        CHECK(e.interpretations().size() == expected[n - 4]);
-    }
-}
 
 TEST_CASE("engine/rule_compiler: the polybox finds de Kleer and Williams' two minimal conflicts") {
     qm::Diagnostics d;
@@ -78,35 +60,4 @@ TEST_CASE("engine/rule_compiler: strata put negated and aggregated predicates fi
     CHECK(p->program.rules[RuleId{1}].stratum == 1);
     CHECK(p->program.rules[RuleId{2}].stratum == 2);
     CHECK(p->program.stratum_count == 3);
-}
-
-TEST_CASE("engine/rule_compiler: bad programs give located diagnostics, several per run") {
-    qm::Diagnostics d;
-    auto p = compile_text("rule a when (p ?x) (frob ?x) then (q ?y)\n"
-                          "rule b when (p ?x) (< ?x) then (q (abs ?x ?x))\n"
-                          "fact (p ?z)\n"
-                          "rule c when (p ?x) not (c ?x) then (c ?x)\n",
-                          d);
-    CHECK(!p.has_value());
-    CHECK(messages(d) ==
-          "t.rules:1:38: variable ?y is used before it is bound\n"
-          "t.rules:2:20: '<' takes 2 argument(s), not 1\n"
-          "t.rules:2:35: 'abs' takes 1 argument(s), not 2\n"
-          "t.rules:3:9: a top-level fact or assumption must be ground, but has ?z\n"
-          "t.rules:4:20: rule 'c': negation through recursion: 'c', used under `not` here, depends on this rule's "
-          "own conclusion 'c' through the cycle c -> c (rule 'c', `not`)\n");
-}
-
-TEST_CASE("engine/rule_spec_reader: syntax errors are located and reading resumes at the next item") {
-    qm::Diagnostics d;
-    ProgramSpec spec;
-    read_rule_text("rule a when (p ?x) then\nfact p\nrule b when (p ?x) then (q (7 ?x))\nrule c when (p ?x) then (r ?x)\n"
-                   "include \"no-such-file.rules\"\n",
-                   "t.rules", spec, d);
-    CHECK(messages(d) ==
-          "t.rules:2:1: expected a consequent (an atom, 'false', 'assume' or a bracketed quantifier) but found 'fact'\n"
-          "t.rules:2:6: expected an atom like (p ?x) but found 'p'\n"
-          "t.rules:3:29: expected a direction of signs or a builtin function name but found '7'\n"
-          "t.rules:5:9: cannot open included file 'no-such-file.rules': no such file\n");
-    CHECK(spec.rules.size() == 1);  // rule c
 }

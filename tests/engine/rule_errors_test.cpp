@@ -4,26 +4,19 @@
 // `qm-atms run` does, and its diagnostics get their source lines as there. The printed diagnostics,
 // with the directory stripped from file names, must equal NAME.err exactly. One case per error
 // class of docs/RULES.md "## Error messages". A case named warn_* is a program that loads and runs
-// without error but with warnings (a rule that can never fire, an unused rule): its .err holds them. Setting QM_WRITE_GOLDEN=1 rewrites the .err files
-// (review the diff before committing).
+// without error but with warnings (a rule that can never fire, an unused rule): its .err holds them.
+// QM_WRITE_GOLDEN=1 rewrites the .err files.
 #include "engine/engine.hpp"
 #include "engine/rule_compiler.hpp"
 #include "engine/rule_parser_source.hpp"
+#include "../support/golden.hpp"
 #include <doctest/doctest.h>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 using namespace qm::engine;
 
 namespace {
-std::string slurp(const std::filesystem::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 std::string strip(std::string text, const std::string& prefix) {
     for (std::size_t at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at))
         text.erase(at, prefix.size());
@@ -33,7 +26,6 @@ std::string strip(std::string text, const std::string& prefix) {
 
 TEST_CASE("engine/rule_errors: every golden case gives exactly its expected diagnostics") {
     std::filesystem::path dir = std::string(QM_SOURCE_DIR) + "/tests/engine/errors";
-    bool write = std::getenv("QM_WRITE_GOLDEN") != nullptr;
     std::size_t cases = 0;
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {
         if (entry.path().extension() != ".rules") continue;
@@ -51,7 +43,7 @@ TEST_CASE("engine/rule_errors: every golden case gives exactly its expected diag
             qm::Diagnostics ran;
             CHECK_NOTHROW(e.run(ran));
             SourceTexts texts;
-            texts.add(SourceText(file, slurp(file)));
+            texts.add(SourceText(file, qm::test::slurp(file)));
             texts.attach_lines(ran, shown);
         } else {
             shown = d;
@@ -65,11 +57,7 @@ TEST_CASE("engine/rule_errors: every golden case gives exactly its expected diag
         std::ostringstream printed;
         shown.print(printed);
         std::string actual = strip(printed.str(), dir.lexically_normal().string() + "/");
-        std::filesystem::path golden = entry.path();
-        golden.replace_extension(".err");
-        if (write) std::ofstream(golden) << actual;
-        REQUIRE(std::filesystem::exists(golden));
-        CHECK(actual == slurp(golden));
+        qm::test::check_golden(actual, std::filesystem::path(entry.path()).replace_extension(".err"));
         ++cases;
     }
     CHECK(cases >= 10);

@@ -12,6 +12,7 @@
 #include "engine/rule_compiler.hpp"
 #include "engine/rule_spec_reader.hpp"
 #include "engine/run_report.hpp"
+#include "run_rule_text.hpp"
 #include <doctest/doctest.h>
 #include <algorithm>
 #include <memory>
@@ -192,35 +193,27 @@ TEST_CASE("engine/rule_negation: random programs: stratifiable ones are accepted
 }
 
 TEST_CASE("engine/rule_negation: generic `not` and aggregates are decided over premises and absent facts") {
-    Loaded l = load("fact (bird tweety)\nfact (bird opus)\nfact (penguin opus)\nfact (weight tweety 3)\n"
-                    "fact (weight opus 30)\n"
-                    "rule flies\n  when (bird ?b) not (penguin ?b)\n  then (flies ?b)\n"
-                    "rule lonely\n  when (bird ?b) not (friend ?b ?other)\n  then (lonely ?b)\n"
-                    "rule total\n  when (bird tweety) [sum ?w over (weight ?b ?w) with + start 0 as ?t]\n"
-                    "  then (total ?t)\n");
-    REQUIRE(l.program.has_value());
-    Engine e(std::move(l.program->program), std::move(l.program->values));
-    qm::Diagnostics d;
-    e.run(d);
-    REQUIRE(!d.has_errors());
-    CHECK(fact_list(e) == "(bird opus) {{}}\n(bird tweety) {{}}\n(flies tweety) {{}}\n(lonely opus) {{}}\n"
+    const auto e = test::run_rule_text("fact (bird tweety)\nfact (bird opus)\nfact (penguin opus)\nfact (weight tweety 3)\n"
+                                       "fact (weight opus 30)\n"
+                                       "rule flies\n  when (bird ?b) not (penguin ?b)\n  then (flies ?b)\n"
+                                       "rule lonely\n  when (bird ?b) not (friend ?b ?other)\n  then (lonely ?b)\n"
+                                       "rule total\n  when (bird tweety) [sum ?w over (weight ?b ?w) with + start 0 as ?t]\n"
+                                       "  then (total ?t)\n",
+                                       "n.rules");
+    CHECK(fact_list(*e) == "(bird opus) {{}}\n(bird tweety) {{}}\n(flies tweety) {{}}\n(lonely opus) {{}}\n"
                           "(lonely tweety) {{}}\n(penguin opus) {{}}\n(total 33) {{}}\n"
                           "(weight opus 30) {{}}\n(weight tweety 3) {{}}\n");
 }
 
 TEST_CASE("engine/rule_negation: a fact that holds in no environment is absent for `not`") {
     // (penguin opus) is derived only from two assumptions that are nogood together: its label is empty.
-    Loaded l = load("fact (bird opus)\nassume (cold opus)\nassume (warm opus)\n"
-                    "rule exclusive\n  when (cold ?b) (warm ?b)\n  then false\n"
-                    "rule penguin\n  when (cold ?b) (warm ?b)\n  then (penguin ?b)\n"
-                    "rule flies\n  when (bird ?b) not (penguin ?b)\n  then (flies ?b)\n");
-    REQUIRE(l.program.has_value());
-    Engine e(std::move(l.program->program), std::move(l.program->values));
-    qm::Diagnostics d;
-    e.run(d);
-    CHECK(!d.has_errors());
-    CHECK(fact_list(e).find("(flies opus) {{}}\n") != std::string::npos);
-    CHECK(fact_list(e).find("(penguin opus) {}\n") != std::string::npos);
+    const auto e = test::run_rule_text("fact (bird opus)\nassume (cold opus)\nassume (warm opus)\n"
+                                       "rule exclusive\n  when (cold ?b) (warm ?b)\n  then false\n"
+                                       "rule penguin\n  when (cold ?b) (warm ?b)\n  then (penguin ?b)\n"
+                                       "rule flies\n  when (bird ?b) not (penguin ?b)\n  then (flies ?b)\n",
+                                       "n.rules");
+    CHECK(fact_list(*e).find("(flies opus) {{}}\n") != std::string::npos);
+    CHECK(fact_list(*e).find("(penguin opus) {}\n") != std::string::npos);
 }
 
 TEST_CASE("engine/rule_negation: `not` or an aggregate over an assumption-dependent fact is rejected, located") {
@@ -230,18 +223,17 @@ TEST_CASE("engine/rule_negation: `not` or an aggregate over an assumption-depend
     };
     for (const auto& [condition, message] : cases) {
         CAPTURE(condition);
-        Loaded l = load("fact (bird tweety)\nfact (bird opus)\nassume (penguin opus)\nassume (ring opus 2)\n"
-                        "rule flies\n  when (bird ?b) " + std::string(condition) + "\n  then (flies ?b)\n");
-        REQUIRE(l.program.has_value());
-        Engine e(std::move(l.program->program), std::move(l.program->values));
+        const auto e = test::engine_for("fact (bird tweety)\nfact (bird opus)\nassume (penguin opus)\nassume (ring opus 2)\n"
+                                        "rule flies\n  when (bird ?b) " + std::string(condition) + "\n  then (flies ?b)\n",
+                                        "n.rules");
         qm::Diagnostics d;
-        e.run(d);
+        e->run(d);
         REQUIRE(d.has_errors());
         const auto& x = d.items().front();
         CHECK(x.where.file == "n.rules");
         CHECK(x.where.line == 6);
         CHECK(x.message.find(message) == 0);
-        CHECK(fact_list(e).find("(flies opus)") == std::string::npos);  // nothing unsound was derived
+        CHECK(fact_list(*e).find("(flies opus)") == std::string::npos);  // nothing unsound was derived
     }
 }
 

@@ -3,10 +3,8 @@
 // with one located diagnostic naming the rule, and what they found is sound; a limit that is not
 // reached changes nothing (same report, same firings) on the bundled N-queens programs (queens8
 // takes 5,984 steps).
-#include "engine/engine.hpp"
-#include "engine/rule_compiler.hpp"
-#include "engine/rule_spec_reader.hpp"
 #include "engine/run_report.hpp"
+#include "run_rule_text.hpp"
 #include <doctest/doctest.h>
 #include <memory>
 #include <optional>
@@ -16,14 +14,7 @@
 using namespace qm::engine;
 
 namespace {
-std::unique_ptr<Engine> engine_for(const std::string& text) {
-    qm::Diagnostics d;
-    ProgramSpec spec;
-    read_rule_text(text, "limits.rules", spec, d);
-    auto p = compile_program(spec, d);
-    REQUIRE(p.has_value());
-    return std::make_unique<Engine>(std::move(p->program), std::move(p->values));
-}
+std::unique_ptr<Engine> engine_for(const std::string& text) { return test::engine_for(text, "limits.rules"); }
 RunOptions at_most(std::size_t steps) {
     RunOptions o;
     o.max_steps = steps;

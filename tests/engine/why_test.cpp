@@ -1,6 +1,8 @@
 // tests/engine/why_test.cpp: explanations of facts that hold and of facts that are ruled out; the
 // run report and its JSON form.
 #include "compiled_program_builder.hpp"
+#include "run_rule_text.hpp"
+#include "../support/golden.hpp"
 #include "engine/json_writer.hpp"
 #include "engine/why.hpp"
 #include "engine/why_printer.hpp"
@@ -61,12 +63,8 @@ TEST_CASE("engine/why: a ruled-out fact is explained by the nogoods that exclude
 }
 
 TEST_CASE("engine/json_writer: the report has exactly the agreed shape and order") {
-    ValueTable v;
-    CompiledProgram p = queens(v, 4);
-    Engine e(std::move(p), std::move(v));
-    qm::Diagnostics d;
-    e.run(d);
-    RunReport r = make_report(e);
+    const std::string queens4 = qm::test::slurp(std::string(QM_SOURCE_DIR) + "/scenarios/rules/queens4.rules");
+    const RunReport r = make_report(*run_rule_text(queens4, "queens4.rules"));
     REQUIRE(r.interpretations.size() == 2);
     CHECK(r.interpretations[0] == EnvText{"(queen 1 2)", "(queen 2 4)", "(queen 3 1)", "(queen 4 3)"});
     CHECK(r.interpretations[1] == EnvText{"(queen 1 3)", "(queen 2 1)", "(queen 3 4)", "(queen 4 2)"});

@@ -1,32 +1,24 @@
 // tests/scene/scene_checker_test.cpp: scene/scene_checker.hpp - golden error cases. Each
 // tests/scene/errors/<case>.def is read (parser + checker) and the printed diagnostics must equal
 // <case>.err exactly (STYLE.md section 7). A case named warn_* is a scene that reads, with
-// warnings (the scene still means something). Set QM_UPDATE_GOLDEN=1 to write missing .err files
-// (then review them by hand before committing).
+// warnings (the scene still means something). QM_WRITE_GOLDEN=1 rewrites the .err files.
 #include "scene/scene_checker.hpp"
 #include "scene/scene_parser.hpp"
 
+#include "../support/golden.hpp"
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 namespace fs = std::filesystem;
 using namespace qm::scene;
 
 namespace {
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
 std::string diagnostics_for(const fs::path& def) {
     qm::Diagnostics diags;
-    auto s = read_scene(def.filename().string(), slurp(def), diags);
+    auto s = read_scene(def.filename().string(), qm::test::slurp(def), diags);
     if (def.filename().string().starts_with("warn_")) {
         CHECK(s.has_value());
         CHECK_FALSE(diags.has_errors());
@@ -50,12 +42,7 @@ TEST_CASE("scene/scene_checker: golden error cases") {
     CHECK(cases.size() >= 20);
     for (const auto& def : cases) {
         INFO(def.filename().string());
-        const std::string got = diagnostics_for(def);
-        fs::path err = def;
-        err.replace_extension(".err");
-        if (!fs::exists(err) && std::getenv("QM_UPDATE_GOLDEN")) std::ofstream(err, std::ios::binary) << got;
-        REQUIRE(fs::exists(err));
-        CHECK(got == slurp(err));
+        qm::test::check_golden(diagnostics_for(def), fs::path(def).replace_extension(".err"));
     }
 }
 

@@ -4,7 +4,9 @@
 // the cleaned-up one, and every bundled scene written out with seeded random choices among the
 // spellings (a writer in this file, independent of scene/scene_printer) reads back equal.
 #include "scene/scene_parser.hpp"
+#include "scene/direction_text.hpp"
 #include "scene/scene_printer.hpp"
+#include "../support/scene_reading.hpp"
 
 #include <doctest/doctest.h>
 
@@ -16,30 +18,10 @@
 using namespace qm::scene;
 
 namespace {
+using qm::test::printed;
+using qm::test::read_ok;
+Scene load(const std::string& path) { return qm::test::load_ok(path); }
 std::string source_dir() { return std::string(QM_SOURCE_DIR); }
-
-std::string report(const qm::Diagnostics& d) {
-    std::ostringstream os;
-    d.print(os);
-    return os.str();
-}
-
-Scene load(const std::string& path) {
-    qm::Diagnostics diags;
-    auto s = read_scene_file(source_dir() + "/" + path, diags);
-    INFO(path << "\n" << report(diags));
-    REQUIRE(s.has_value());
-    CHECK(diags.size() == 0);
-    return *s;
-}
-
-Scene read_ok(const std::string& text) {
-    qm::Diagnostics diags;
-    auto s = read_scene("test.def", text, diags);
-    INFO(text << "\n" << report(diags));
-    REQUIRE(s.has_value());
-    return *s;
-}
 
 // The first diagnostic as "line:col message", for inputs that must be rejected.
 std::string first_error(const std::string& text) {
@@ -52,8 +34,8 @@ std::string first_error(const std::string& text) {
 }
 
 // Writes a checked Scene in the thesis' spellings, choosing among them with `rng`. Independent
-// of scene/scene_printer (except for writing one direction), so that the reader is checked
-// against a second description of the grammar.
+// of scene/scene_printer (but for print_pattern), so that the reader is checked against a second
+// description of the grammar.
 class SpellingWriter {
 public:
     SpellingWriter(const Scene& s, std::mt19937& rng) : s_(s), rng_(rng) {}
@@ -161,8 +143,8 @@ private:
         const Surface& f = s_.surfaces[id];
         if (f.corner)
             return f.name + " " + s_.surfaces[f.corner->first].name + " " + s_.surfaces[f.corner->second].name + " " +
-                   print_direction(f.origin);
-        return f.name + " " + print_direction(f.normal) + " " + print_direction(f.origin);
+                   thesis_text(f.origin);
+        return f.name + " " + thesis_text(f.normal) + " " + thesis_text(f.origin);
     }
     std::string entry(SurfaceId id) const { return "(" + entry_body(id) + ")"; }
 
@@ -234,7 +216,7 @@ private:
     }
     std::string force_body(const Force& f) const {
         std::string out =
-            s_.objects[f.object].name + " " + print_direction(f.direction) + " " + print_direction(f.origin);
+            s_.objects[f.object].name + " " + thesis_text(f.direction) + " " + thesis_text(f.origin);
         if (s_.causes[f.cause].is_explicit) out += " " + s_.causes[f.cause].name;
         return out;
     }
@@ -244,7 +226,7 @@ private:
         return out;
     }
     std::string motion_body(const Motion& m) const {
-        return s_.objects[m.object].name + " " + print_direction(m.translation) + " " + print_direction(m.rotation);
+        return s_.objects[m.object].name + " " + thesis_text(m.translation) + " " + thesis_text(m.rotation);
     }
     // A situation's descriptors in the keyword form: `Contact(a b)` (Figure 7.2) or `Contact (a b)`.
     std::vector<std::string> keyword_descriptors(const Situation& sit) {
@@ -480,7 +462,7 @@ TEST_CASE("scene/scene_parser: every bundled scene in random thesis spellings re
             for (const std::string& text : {w.sx(), w.keywords()}) {
                 qm::Diagnostics diags;
                 auto back = read_scene("spelled.def", text, diags);
-                INFO(file << "\n" << text << "\n" << report(diags));
+                INFO(file << "\n" << text << "\n" << printed(diags));
                 REQUIRE(back.has_value());
                 CHECK(*back == s);
                 ++written;

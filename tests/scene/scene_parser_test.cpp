@@ -3,39 +3,22 @@
 // and the --given / query-fact forms.
 #include "scene/scene_parser.hpp"
 #include "scene/scene_printer.hpp"
+#include "../support/golden.hpp"
+#include "../support/scene_reading.hpp"
 
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 using namespace qm::scene;
 
 namespace {
+using qm::test::printed;
+using qm::test::read_ok;
+
 std::string scenes_dir() { return std::string(QM_SOURCE_DIR) + "/scenarios/alex"; }
-
-Scene load(const std::string& file) {
-    qm::Diagnostics diags;
-    auto s = read_scene_file(scenes_dir() + "/" + file, diags);
-    std::ostringstream os;
-    diags.print(os);
-    INFO(os.str());
-    REQUIRE(s.has_value());
-    CHECK(diags.size() == 0);
-    return *s;
-}
-
-Scene read_ok(const std::string& text) {
-    qm::Diagnostics diags;
-    auto s = read_scene("test.def", text, diags);
-    std::ostringstream os;
-    diags.print(os);
-    INFO(os.str());
-    REQUIRE(s.has_value());
-    return *s;
-}
+Scene load(const std::string& file) { return qm::test::load_ok("scenarios/alex/" + file); }
 
 const Direction up{Sign::zero, Sign::plus};
 const Direction down{Sign::zero, Sign::minus};
@@ -325,15 +308,8 @@ TEST_CASE("scene/scene_parser: both notations give the same Scene") {
         forces ())
       (defstates ((contact l-1 d-1))))");
     CHECK(sx == kw);
-    // Every bundled scene, printed in each notation, reads back equal (an independent check of
-    // both grammars: the two printers are separate code paths).
-    for (const auto& e : std::filesystem::directory_iterator(scenes_dir())) {
-        if (e.path().extension() != ".def") continue;
-        INFO(e.path().string());
-        const Scene s = load(e.path().filename().string());
-        CHECK(read_ok(print_scene(s)) == s);
-        CHECK(read_ok(print_scene_keywords(s)) == s);
-    }
+    // Printed in either notation, a scene reads back equal: scene_printer_test.cpp (random scenes)
+    // and scene_parser_spellings_test.cpp (every bundled scene, in the thesis' spellings).
 }
 
 TEST_CASE("scene/scene_parser: keyword notation details") {
@@ -361,9 +337,7 @@ TEST_CASE("scene/scene_parser: --given motions") {
 
     qm::Diagnostics bad;
     CHECK_FALSE(parse_given(s, "palet (0 0) (+)", bad).has_value());
-    std::ostringstream os;
-    bad.print(os);
-    CHECK(os.str() == "--given:1:1: error: object 'palet' in a motion is not declared in Individuals; did you mean 'pallet'?\n"
+    CHECK(printed(bad) == "--given:1:1: error: object 'palet' in a motion is not declared in Individuals; did you mean 'pallet'?\n"
                       "  palet (0 0) (+)\n  ^\n");
 
     qm::Diagnostics arity;
@@ -384,9 +358,7 @@ TEST_CASE("scene/scene_parser: query facts") {
     auto ok = [&](const std::string& text) {
         qm::Diagnostics d;
         auto q = parse_query_fact(s, text, d);
-        std::ostringstream os;
-        d.print(os);
-        INFO(text << "\n" << os.str());
+        INFO(text << "\n" << printed(d));
         REQUIRE(q.has_value());
         return *q;
     };
@@ -437,21 +409,15 @@ TEST_CASE("scene/scene_parser: never throws, whatever the input; syntax errors n
     // print a mangled C++ type name (N5boost6spirit...).
     std::vector<std::string> texts;
     for (const char* file : {"block.def", "gears.def", "corner_contacts.def", "linked_gears.def"}) {
-        std::ifstream in(scenes_dir() + "/" + file);
-        std::ostringstream ss;
-        ss << in.rdbuf();
-        texts.push_back(ss.str());
+        texts.push_back(qm::test::slurp(scenes_dir() + "/" + file));
         const Scene s = load(file);
         texts.push_back(print_scene_keywords(s));
     }
     // The thesis' own spellings (tests/scene/figures/): figure headers, bare constraint lists,
     // BNF surface groups, braces, defState, closing CONTACT lists.
     for (const char* file : {"fig7_2.def", "fig7_8.def", "fig7_12.def", "fig7_16.def", "fig6_1_bnf.def"}) {
-        std::ifstream in(std::string(QM_SOURCE_DIR) + "/tests/scene/figures/" + file);
-        std::ostringstream ss;
-        ss << in.rdbuf();
-        REQUIRE(!ss.str().empty());
-        texts.push_back(ss.str());
+        texts.push_back(qm::test::slurp(std::string(QM_SOURCE_DIR) + "/tests/scene/figures/" + file));
+        REQUIRE(!texts.back().empty());
     }
     std::size_t syntax_errors = 0;
     for (const std::string& text : texts)

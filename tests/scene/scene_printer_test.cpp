@@ -152,7 +152,6 @@ TEST_CASE("scene/scene_printer: exact output for a small scene") {
           "  b (q (0 -) (0 0))\n"
           "Forces : a (0 -) (0 0) g\n"
           "Situation : Contact (p q), Motion (a (0 0) (-))\n");
-    CHECK(print_direction({Sign::plus, Sign::zero, Sign::minus}) == "(+ 0 -)");
     CHECK(print_pattern({{std::nullopt, "r"}}) == "(?r)");
 }
 

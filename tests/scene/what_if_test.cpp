@@ -3,6 +3,7 @@
 // brute-force count over its items.
 #include "scene/scene_parser.hpp"
 #include "scene/what_if.hpp"
+#include "../support/scene_reading.hpp"
 
 #include <doctest/doctest.h>
 #include <sstream>
@@ -22,12 +23,7 @@ const char* text = R"((Defscenario 2 two
   ((Contact b-top a-bottom) (Motion b (0 0) (0)))
   ((Contact a-bottom b-top) (Force a (+ 0) (0 0) wind) (Motion a (0 -) (0)))))";
 
-Scene two() {
-    qm::Diagnostics d;
-    auto s = read_scene("two.def", text, d);
-    REQUIRE(s);
-    return *s;
-}
+Scene two() { return qm::test::read_ok(text, "two.def"); }
 
 QueryFact query(const Scene& s, const std::string& q) {
     qm::Diagnostics d;
@@ -36,11 +32,7 @@ QueryFact query(const Scene& s, const std::string& q) {
     return *f;
 }
 
-std::string printed(const qm::Diagnostics& d) {
-    std::ostringstream os;
-    d.print(os);
-    return os.str();
-}
+using qm::test::printed;
 }  // namespace
 
 TEST_CASE("scene/what_if: a contact is named in either order, a force by object and optional cause") {

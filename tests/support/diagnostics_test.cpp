@@ -99,3 +99,15 @@ TEST_CASE("support/source_text: a UTF-8 byte-order mark is not part of the text"
     const qm::SourceText inner("f", "(a)\xEF\xBB\xBF");
     CHECK(inner.text().size() == 6);
 }
+
+TEST_CASE("support/diagnostics: the locations of one text share its file name, and compare by name") {
+    const qm::SourceText src("scene.def", "a\nb\n");
+    const qm::SourceLocation a = src.locate(0), b = src.locate(2);
+    CHECK(&a.file.str() == &b.file.str());  // one name, not a copy per location
+    CHECK(a == qm::SourceLocation{"scene.def", 1, 1});
+    CHECK(b == qm::SourceLocation{std::string("scene.def"), 2, 1});
+    CHECK(a < b);
+    CHECK(qm::SourceLocation{"a.def", 9, 9} < a);
+    CHECK(qm::to_string(b) == "scene.def:2:1");
+    CHECK(qm::FileName().str().empty());
+}

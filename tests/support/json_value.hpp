@@ -1,5 +1,5 @@
-// tests/support/json_value.hpp: a small strict JSON reader for tests that check the schema of the
-// JSON the program prints (objects, arrays, strings with escapes, numbers, true/false/null).
+// tests/support/json_value.hpp: a small strict JSON reader (RFC 8259) for tests that check the JSON
+// the program prints (objects, arrays, strings with escapes, numbers, true/false/null).
 // parse() returns nullopt on any syntax error or trailing garbage.
 #pragma once
 #include <cctype>
@@ -17,6 +17,7 @@ struct Json {
     using Object = std::map<std::string, Json>;
     using Array = std::vector<Json>;
     std::variant<std::nullptr_t, bool, double, std::string, Array, Object> value;
+    std::vector<std::string> keys = {};  // an object's keys, in the order read
 
     [[nodiscard]] bool is_object() const { return std::holds_alternative<Object>(value); }
     [[nodiscard]] bool is_array() const { return std::holds_alternative<Array>(value); }
@@ -78,13 +79,15 @@ private:
                     case 'r': out += '\r'; break;
                     case 'b': out += '\b'; break;
                     case 'f': out += '\f'; break;
-                    case 'u':
+                    case 'u': {  // a code point below 0x80 as itself, any other as '?'
                         if (at + 4 > s.size()) return std::nullopt;
                         for (int k = 0; k < 4; ++k)
                             if (!std::isxdigit(static_cast<unsigned char>(s[at + k]))) return std::nullopt;
-                        out += '?';
+                        const unsigned long v = std::stoul(std::string(s.substr(at, 4)), nullptr, 16);
+                        out += v < 0x80 ? static_cast<char>(v) : '?';
                         at += 4;
                         break;
+                    }
                     default: return std::nullopt;
                 }
             }
@@ -98,17 +101,18 @@ private:
             const char c = s[at];
             if (c == '{') {
                 ++at;
-                Object o;
-                if (eat('}')) return Json{o};
+                Json o{Object{}};
+                if (eat('}')) return o;
                 do {
                     auto k = string();
                     if (!k || !eat(':')) return std::nullopt;
                     auto v = value();
-                    if (!v || o.count(*k)) return std::nullopt;
-                    o.emplace(std::move(*k), std::move(*v));
+                    if (!v || o.has(*k)) return std::nullopt;
+                    o.keys.push_back(*k);
+                    std::get<Object>(o.value).emplace(std::move(*k), std::move(*v));
                 } while (eat(','));
                 if (!eat('}')) return std::nullopt;
-                return Json{std::move(o)};
+                return o;
             }
             if (c == '[') {
                 ++at;
