@@ -77,6 +77,31 @@ bool same_axis(const g::CSpaceAxis& a, const g::CSpaceAxis& b) {
 
 }  // namespace
 
+bool places_go_round(const g::PlaceVocabulary& v, std::span<const g::PlaceId> places, int axis, const g::CSpaceAxis& range) {
+    if (!range.periodic) return false;
+    const double period = range.span(), slack = 1e-6 * period;
+    std::vector<Interval> all;
+    for (const auto id : places) {
+        const auto c = covered(v.at(id), axis, range);
+        if (!c) return true;  // a place whose values are not known may cover them all
+        for (auto i : *c) {
+            if (i.hi - i.lo >= period - slack) return true;
+            const double shift = std::floor((i.lo - range.lo) / period) * period;
+            i.lo -= shift;
+            i.hi -= shift;
+            all.push_back(i);
+            if (i.hi > range.hi) all.push_back({i.lo - period, i.hi - period});
+        }
+    }
+    std::sort(all.begin(), all.end(), [](const Interval& x, const Interval& y) { return x.lo < y.lo; });
+    double reached = range.lo;
+    for (const auto& i : all) {
+        if (i.lo > reached + slack) return false;
+        reached = std::max(reached, i.hi);
+    }
+    return reached >= range.hi - slack;
+}
+
 std::vector<std::pair<g::PlaceId, g::PlaceId>> places_apart(const g::PlaceVocabulary& a, int axis_a, const g::CSpaceAxis& range_a,
                                                             const g::PlaceVocabulary& b, int axis_b, const g::CSpaceAxis& range_b) {
     std::vector<std::pair<g::PlaceId, g::PlaceId>> out;

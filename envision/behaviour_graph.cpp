@@ -11,22 +11,27 @@ namespace qm::envision {
 
 namespace {
 
-// The object, and its one motion, that makes a component transient: a bounded coordinate that
-// moves the same way in every state of it (so it never comes back to where a lap began).
-std::optional<std::pair<std::size_t, std::int8_t>> one_way(std::span<const State> states, const std::vector<StateId>& members,
-                                                           const std::vector<bool>& bounded) {
-    for (std::size_t o = 0; o < bounded.size(); ++o) {
-        if (!bounded[o]) continue;
-        const std::int8_t m = states[members.front().value].motions[o];
-        if (m == 0) continue;
-        if (std::all_of(members.begin(), members.end(), [&](StateId s) { return states[s.value].motions[o] == m; })) return std::pair{o, m};
-    }
+// What makes a component transient: an object that moves the same way in every state of it along a
+// coordinate that cannot come round (so it never comes back to where a lap began).
+std::optional<TransientCycle> one_way(std::span<const State> states, const std::vector<StateId>& members, const std::vector<bool>& bounded,
+                                      const KeptFromComingRound& kept) {
+    // A bounded coordinate first: it needs no place to say so.
+    for (const bool along_bounded : {true, false})
+        for (std::size_t o = 0; o < bounded.size(); ++o) {
+            if (bounded[o] != along_bounded || (!along_bounded && !kept)) continue;
+            const std::int8_t m = states[members.front().value].motions[o];
+            if (m == 0) continue;
+            if (!std::all_of(members.begin(), members.end(), [&](StateId s) { return states[s.value].motions[o] == m; })) continue;
+            if (along_bounded) return TransientCycle{members, o, m, std::nullopt};
+            if (const auto pair = kept(members, o)) return TransientCycle{members, o, m, pair};
+        }
     return std::nullopt;
 }
 
 }  // namespace
 
-BehaviourGraph behaviour_graph(std::span<const State> states, std::span<const Transition> transitions, const std::vector<bool>& bounded) {
+BehaviourGraph behaviour_graph(std::span<const State> states, std::span<const Transition> transitions, const std::vector<bool>& bounded,
+                               const KeptFromComingRound& kept) {
     const std::size_t state_count = states.size();
     using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS>;
     Graph graph(state_count);
@@ -44,7 +49,7 @@ BehaviourGraph behaviour_graph(std::span<const State> states, std::span<const Tr
     BehaviourGraph out;
     for (auto& m : members) {
         if (m.size() == 1 && !loops[m.front().value]) continue;
-        if (const auto w = one_way(states, m, bounded)) out.transient.push_back({std::move(m), w->first, w->second});
+        if (auto w = one_way(states, m, bounded, kept)) out.transient.push_back(std::move(*w));
         else out.cycles.push_back(std::move(m));
     }
     std::sort(out.cycles.begin(), out.cycles.end());

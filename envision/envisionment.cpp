@@ -2,6 +2,7 @@
 #include "envision/envisionment.hpp"
 #include "envision/behaviour_query.hpp"
 #include "bridge/pair_places.hpp"
+#include "bridge/place_correlation.hpp"
 #include "envision/state_dynamics.hpp"
 #include "envision/state_space.hpp"
 #include "envision/successors.hpp"
@@ -79,6 +80,25 @@ std::vector<bool> bounded_objects(const Envisionment& e, const Chain& chain) {
     return out;
 }
 
+// The pair whose places, in the states of a component, keep an object's periodic coordinate within
+// values that leave some of its period out: moving one way, it could not stay among them for ever.
+KeptFromComingRound kept_by_places(const Envisionment& e, const ChainEnvisionment& c) {
+    return [&e, &c](const std::vector<StateId>& members, std::size_t object) -> std::optional<std::size_t> {
+        for (std::size_t k = 0; k < c.chain.pairs.size(); ++k) {
+            const auto& pair = e.pairs[c.chain.pairs[k]];
+            for (int i = 0; i < 2; ++i) {
+                if (c.chain.object_index(i == 0 ? pair.spec.a : pair.spec.b) != object) continue;
+                std::vector<geometry::PlaceId> places;
+                for (const StateId s : members) places.push_back(c.states[s].places[k]);
+                std::sort(places.begin(), places.end());
+                places.erase(std::unique(places.begin(), places.end()), places.end());
+                if (!bridge::places_go_round(pair.vocabulary, places, i, pair.request.cspace.axes[static_cast<std::size_t>(i)])) return k;
+            }
+        }
+        return std::nullopt;
+    };
+}
+
 }  // namespace
 
 std::optional<Envisionment> envision(const geometry::Mechanism& m, const EnvisionOptions& options, Diagnostics& diagnostics) {
@@ -109,7 +129,7 @@ std::optional<Envisionment> envision(const geometry::Mechanism& m, const Envisio
         if (!find_transitions(*laws, m, e, c, space->tables, options, phase, diagnostics)) return std::nullopt;
         c.seconds_transitions = seconds_since(t0);
         c.tables = std::move(space->tables);
-        c.graph = behaviour_graph(c.states.states(), c.transitions, bounded_objects(e, c.chain));
+        c.graph = behaviour_graph(c.states.states(), c.transitions, bounded_objects(e, c.chain), kept_by_places(e, c));
         e.chains.push_back(std::move(c));
     }
     return e;

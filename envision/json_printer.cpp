@@ -64,7 +64,9 @@ void chain_json(std::ostream& os, const geometry::Mechanism& m, const Envisionme
     for (std::size_t i = 0; i < c.graph.transient.size(); ++i) {
         const auto& t = c.graph.transient[i];
         os << (i ? "," : "") << "{\"states\":" << ids_json(t.states) << ",\"object\":" << json_string(m.parts[c.chain.objects[t.object]].name)
-           << ",\"motion\":\"(" << sign_word(t.motion) << ")\"}";
+           << ",\"motion\":\"(" << sign_word(t.motion) << ")\"";
+        if (t.pair) os << ",\"kept_by\":" << json_string(e.pairs[c.chain.pairs[*t.pair]].name);
+        os << '}';
     }
     std::vector<StateId> ends = c.graph.terminal;
     ends.insert(ends.end(), c.graph.possible_rests.begin(), c.graph.possible_rests.end());

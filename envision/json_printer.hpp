@@ -8,10 +8,12 @@
 //                "transitions": [{"from": ID, "to": ID, "duration": "instant"|"interval",
 //                                 "causes": ["kinematic"|"dynamic"|"collision"...]}...],
 //                "cycles": [[ID...]...],
-//                "transient_cycles": [{"states": [ID...], "object": NAME, "motion": "(+)"|"(-)"}...],
+//                "transient_cycles": [{"states": [ID...], "object": NAME, "motion": "(+)"|"(-)",
+//                                      "kept_by": "A/B"?}...],
 //                "terminal": [ID...], "possible_rests": [ID...]}]}
 //             `cycles` can repeat; a transient cycle cannot (its object moves one way throughout
-//             along a bounded coordinate); `terminal` lists where behaviour may end: the states with
+//             along a bounded coordinate, or, with `kept_by`, along one that the places of that pair
+//             in the cycle keep from coming round); `terminal` lists where behaviour may end: the states with
 //             no transition and the possible rests (states that may also rest, beside their
 //             transitions), which `possible_rests` lists alone.
 //             I is the chain's number as the text output prints it (from 1); P is the place's id in

@@ -41,7 +41,10 @@ void write_text(std::ostream& os, const geometry::Mechanism& m, const Envisionme
         for (std::size_t i = 0; i < c.graph.transient.size(); ++i) {
             const auto& t = c.graph.transient[i];
             os << "  transient cycle " << i + 1 << " (" << plural(t.states.size(), "state", "states") << "; cannot repeat: "
-               << m.parts[c.chain.objects[t.object]].name << " moves " << sign_word(t.motion) << " throughout, along a bounded coordinate):\n";
+               << m.parts[c.chain.objects[t.object]].name << " moves " << sign_word(t.motion) << " throughout, "
+               << (t.pair ? "and the places of " + e.pairs[c.chain.pairs[*t.pair]].name + " in it keep it from coming round"
+                          : std::string("along a bounded coordinate"))
+               << "):\n";
             list(t.states, "");
         }
         if (c.graph.ends() != 0) os << "  terminal states:\n";

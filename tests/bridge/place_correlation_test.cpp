@@ -8,6 +8,7 @@
 #include "geometry/metric_scene_parser.hpp"
 #include <doctest/doctest.h>
 #include <filesystem>
+#include <random>
 #include <set>
 
 using namespace qm;
@@ -95,4 +96,80 @@ TEST_CASE("bridge/place_correlation: the pendulum's places in its two pairs") {
     g::CSpaceAxis other = r[1].cspace.axes[0];
     other.hi = other.lo + 1.0;
     CHECK(bridge::places_apart(v[0], 0, r[0].cspace.axes[0], v[1], 0, other).empty());
+}
+
+namespace {
+g::Place face_over(std::uint32_t id, std::vector<g::Span> spans) {
+    g::Place p;
+    p.id = g::PlaceId{id};
+    p.kind = g::PlaceKind::face;
+    p.points = {Eigen::Vector2d(spans.front().lo, 0.0)};
+    p.covers[0] = std::move(spans);
+    p.covers[1] = {{0.0, 1.0}};
+    return p;
+}
+}  // namespace
+
+TEST_CASE("bridge/place_correlation: places go round a periodic axis only when their values cover all of it") {
+    g::CSpaceAxis turn;
+    turn.lo = 0.0;
+    turn.hi = 2 * M_PI;
+    turn.periodic = true;
+    g::PlaceVocabulary v;
+    v.places = {face_over(0, {{0.0, 3.0}}), face_over(1, {{2.9, 2 * M_PI + 0.05}}), face_over(2, {{-0.4, 2.0}})};
+    g::Place seg;  // a CSEG from 5.9 across the seam to 0.3, the short way round
+    seg.id = g::PlaceId{3};
+    seg.kind = g::PlaceKind::cseg;
+    seg.points = {Eigen::Vector2d(5.9, 0.5), Eigen::Vector2d(6.2, 0.5), Eigen::Vector2d(0.3, 0.5)};
+    v.places.push_back(seg);
+    g::Place unknown;  // no values known: taken to cover them all
+    unknown.id = g::PlaceId{4};
+    unknown.kind = g::PlaceKind::face;
+    v.places.push_back(unknown);
+    auto round = [&](std::vector<std::uint32_t> ids, const g::CSpaceAxis& axis) {
+        std::vector<g::PlaceId> p;
+        for (const auto i : ids) p.push_back(g::PlaceId{i});
+        return bridge::places_go_round(v, p, 0, axis);
+    };
+    CHECK(round({0, 1}, turn));
+    CHECK(!round({0}, turn));
+    CHECK(!round({1}, turn));         // 0.05 past the seam leaves [0.05, 2.9) out
+    CHECK(!round({2, 1}, turn));      // -0.4 stands for 2 pi - 0.4 across the seam; (2.0, 2.9) left out
+    CHECK(round({2, 1, 0}, turn));
+    CHECK(!round({0, 3}, turn));      // [0, 3] and [5.9, 2 pi + 0.3] leave (3, 5.9) out
+    CHECK(round({4}, turn));
+    g::CSpaceAxis stroke = turn;
+    stroke.periodic = false;
+    CHECK(!round({0, 1, 4}, stroke));  // a bounded coordinate never comes round
+}
+
+TEST_CASE("bridge/place_correlation: places_go_round agrees with sampling the circle (random seeded faces)") {
+    g::CSpaceAxis turn;
+    turn.lo = -1.0;
+    turn.hi = 3.0;
+    turn.periodic = true;
+    std::mt19937 random(20261204);
+    auto draw = [&](int n) { return static_cast<int>(random() % static_cast<unsigned>(n)); };
+    for (int trial = 0; trial < 500; ++trial) {
+        g::PlaceVocabulary v;
+        std::vector<g::PlaceId> ids;
+        const int n = 1 + draw(4);
+        for (int k = 0; k < n; ++k) {
+            // Endpoints on a lattice of 1/8, anywhere within two periods, so that no gap is
+            // thinner than the slack.
+            const double lo = -5.0 + draw(80) / 8.0, len = draw(20) / 8.0;
+            v.places.push_back(face_over(static_cast<std::uint32_t>(k), {{lo, lo + len}}));
+            ids.push_back(g::PlaceId{static_cast<std::uint32_t>(k)});
+        }
+        bool all = true;
+        for (int i = 0; i < 4000 && all; ++i) {
+            const double x = turn.lo + (i + 0.5) * turn.span() / 4000;
+            bool in = false;
+            for (const auto& p : v.places)
+                for (int k = -3; k <= 3; ++k) in = in || (x + k * turn.span() >= p.covers[0][0].lo && x + k * turn.span() <= p.covers[0][0].hi);
+            all = in;
+        }
+        CAPTURE(trial);
+        CHECK(bridge::places_go_round(v, ids, 0, turn) == all);
+    }
 }

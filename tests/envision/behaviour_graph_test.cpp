@@ -46,6 +46,33 @@ TEST_CASE("a component in which a bounded coordinate moves one way throughout is
     CHECK(g.cycles.empty());
 }
 
+TEST_CASE("a wheel turning one way throughout is transient only where a pair's places keep it from coming round") {
+    // Objects: 0 and 1 both turn on periodic axes; pair 3 keeps object 0 (and nothing else) confined.
+    const std::vector<State> states{state({+1, -1}), state({+1, +1})};
+    const std::vector<Transition> lap{edge(0, 1), edge(1, 0)};
+    std::vector<std::pair<std::vector<StateId>, std::size_t>> asked;
+    const KeptFromComingRound kept = [&](const std::vector<StateId>& members, std::size_t object) -> std::optional<std::size_t> {
+        asked.emplace_back(members, object);
+        return object == 0 ? std::optional<std::size_t>{3} : std::nullopt;
+    };
+    auto g = behaviour_graph(states, lap, {false, false}, kept);
+    CHECK(g.cycles.empty());
+    REQUIRE(g.transient.size() == 1);
+    CHECK(g.transient[0].object == 0);
+    CHECK(g.transient[0].motion == +1);
+    CHECK(g.transient[0].pair == std::optional<std::size_t>{3});
+    // Object 1 changes its motion on the lap, so only object 0 is asked about.
+    CHECK(asked == std::vector<std::pair<std::vector<StateId>, std::size_t>>{{{StateId{0}, StateId{1}}, 0}});
+    // A pair whose places go round: the lap can repeat.
+    g = behaviour_graph(states, lap, {false, false}, [](const std::vector<StateId>&, std::size_t) { return std::optional<std::size_t>{}; });
+    CHECK(g.cycles.size() == 1);
+    CHECK(g.transient.empty());
+    // A bounded coordinate is reported as such, before any pair is asked.
+    g = behaviour_graph(states, lap, {true, false}, kept);
+    REQUIRE(g.transient.size() == 1);
+    CHECK(!g.transient[0].pair);
+}
+
 TEST_CASE("terminal states have no transition out; possible rests have some and may also stay") {
     const std::vector<State> states{state({0, 0}, true), state({+1, 0}), state({0, 0}, true), state({0, 0})};
     const std::vector<Transition> t{edge(0, 1), edge(1, 2), edge(3, 1)};

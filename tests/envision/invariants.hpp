@@ -8,8 +8,10 @@
 //     it, the pair's other part still) overlaps the parts or leaves the part's axis within half a
 //     grid cell (a pocket of free space smaller than that is below the vocabulary's resolution);
 //   - every strongly connected component (of more than one state, or a state with a transition to
-//     itself) in which some part whose axis ends moves one way throughout is listed as transient,
-//     and every other one as a behavioural cycle.
+//     itself) in which some part whose axis ends moves one way throughout is listed as transient;
+//     every other one is listed as a behavioural cycle, or as transient with a part that turns one
+//     way throughout (its pair's places keep it from coming round: their values are the
+//     vocabulary's, which this does not read).
 // Plain C++ over the envisionment's values and the geometry; no engine, no rule, no adjacency.
 #pragma once
 #include "envision/envisionment.hpp"
@@ -129,8 +131,14 @@ private:
                 one_way = bounded[o] && first != 0 &&
                           std::all_of(comp.begin(), comp.end(), [&](std::uint32_t s) { return c.states[StateId{s}].motions[o] == first; });
             }
+            bool turning = false;
+            for (std::size_t o = 0; o < bounded.size() && !turning; ++o) {
+                const std::int8_t first = c.states[StateId{comp.front()}].motions[o];
+                turning = first != 0 && std::all_of(comp.begin(), comp.end(), [&](std::uint32_t s) { return c.states[StateId{s}].motions[o] == first; });
+            }
             if (one_way && !transient.count(comp)) say(comp.front(), "is on a component that cannot repeat, not listed as transient");
-            if (!one_way && !cycles.count(comp)) say(comp.front(), "is on a component that can repeat, not listed as a behavioural cycle");
+            if (!one_way && !cycles.count(comp) && !(turning && transient.count(comp)))
+                say(comp.front(), "is on a component that can repeat, not listed as a behavioural cycle");
         }
         if (cycles.size() + transient.size() != components(n, c.transitions).size()) say(0, "heads a chain whose cycles are miscounted");
     }
