@@ -76,26 +76,6 @@ BehaviourAnswer ask(const Scene& s, const std::string& steps, const std::vector<
     return find_behaviour(s.e, *b);
 }
 
-bool has_transition(const ChainEnvisionment& c, StateId a, StateId b, std::uint8_t cause = 0) {
-    for (const auto& t : c.transitions)
-        if (t.from == a && t.to == b && (cause == 0 || (t.causes & cause) != 0)) return true;
-    return false;
-}
-
-// Every consecutive pair of a path is a transition; returns whether some step has `cause`.
-bool path_follows_transitions(const ChainEnvisionment& c, const std::vector<StateId>& path) {
-    for (std::size_t k = 1; k < path.size(); ++k)
-        if (!has_transition(c, path[k - 1], path[k])) return false;
-    return true;
-}
-
-std::size_t cycle_of(const ChainEnvisionment& c, StateId s) {
-    for (std::size_t k = 0; k < c.graph.cycles.size(); ++k)
-        for (const StateId x : c.graph.cycles[k])
-            if (x == s) return k;
-    return SIZE_MAX;
-}
-
 std::optional<StateId> named(const Scene& s, const std::vector<std::uint32_t>& places, const std::vector<std::int8_t>& motions) {
     State want;
     for (const auto p : places) want.places.push_back(geometry::PlaceId{p});

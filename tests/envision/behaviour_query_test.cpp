@@ -47,11 +47,6 @@ std::size_t distance(const ChainEnvisionment& c, StateId a, StateId b) {
     return d[b.value];
 }
 
-bool has_transition(const ChainEnvisionment& c, StateId a, StateId b) {
-    for (const auto& t : c.transitions)
-        if (t.from == a && t.to == b) return true;
-    return false;
-}
 
 }  // namespace
 

@@ -74,4 +74,26 @@ inline const std::vector<std::string>& bundled() {
     return all;
 }
 
+// Whether the chain has a transition from a to b (with one of the causes in `cause`, if given).
+inline bool has_transition(const ChainEnvisionment& c, StateId a, StateId b, std::uint8_t cause = 0) {
+    for (const auto& t : c.transitions)
+        if (t.from == a && t.to == b && (cause == 0 || (t.causes & cause) != 0)) return true;
+    return false;
+}
+
+// Every consecutive pair of a path is a transition.
+inline bool path_follows_transitions(const ChainEnvisionment& c, const std::vector<StateId>& path) {
+    for (std::size_t k = 1; k < path.size(); ++k)
+        if (!has_transition(c, path[k - 1], path[k])) return false;
+    return true;
+}
+
+// The index of the behavioural cycle holding s, or SIZE_MAX.
+inline std::size_t cycle_of(const ChainEnvisionment& c, StateId s) {
+    for (std::size_t k = 0; k < c.graph.cycles.size(); ++k)
+        for (const StateId x : c.graph.cycles[k])
+            if (x == s) return k;
+    return SIZE_MAX;
+}
+
 }  // namespace qm::envision::testing

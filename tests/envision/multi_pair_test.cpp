@@ -54,22 +54,6 @@ BehaviourAnswer ask(const Scene& s, const std::string& steps, const std::vector<
     return find_behaviour(s.e, *b);
 }
 
-bool has_transition(const ChainEnvisionment& c, StateId a, StateId b) {
-    return std::any_of(c.transitions.begin(), c.transitions.end(), [&](const Transition& t) { return t.from == a && t.to == b; });
-}
-
-bool path_follows_transitions(const ChainEnvisionment& c, const std::vector<StateId>& path) {
-    for (std::size_t k = 1; k < path.size(); ++k)
-        if (!has_transition(c, path[k - 1], path[k])) return false;
-    return true;
-}
-
-std::size_t cycle_of(const ChainEnvisionment& c, StateId s) {
-    for (std::size_t k = 0; k < c.graph.cycles.size(); ++k)
-        if (std::find(c.graph.cycles[k].begin(), c.graph.cycles[k].end(), s) != c.graph.cycles[k].end()) return k;
-    return SIZE_MAX;
-}
-
 // One chain, every declared pair in it, and more than one pair with states in contact.
 void one_chain_of_interacting_pairs(const Scene& s, std::size_t pairs) {
     REQUIRE(s.e.chains.size() == 1);
