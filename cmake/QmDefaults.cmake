@@ -102,10 +102,13 @@ function(qm_module target)
   endif()
 endfunction()
 
-# qm_module_tests(<module> LIBS <targets...>): every tests/<module>/*_test.cpp becomes its own
-# doctest executable <module>_<file> registered with ctest (one test file per header).
+# qm_module_tests(<module> LIBS <targets...> [LARGE <file stems...>]): every
+# tests/<module>/*_test.cpp becomes its own doctest executable <module>_<file> registered with
+# ctest (one test file per header). A LARGE file's test cases named "[large]" (the largest
+# envisionments) are registered apart, as <module>_<file>_large with the ctest label `large`, which
+# the sanitizer tree of .ci/run leaves out: the same code runs there on the smaller mechanisms.
 function(qm_module_tests module)
-  cmake_parse_arguments(T "" "" "LIBS" ${ARGN})
+  cmake_parse_arguments(T "" "" "LIBS;LARGE" ${ARGN})
   file(GLOB tests CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*_test.cpp)
   foreach(t ${tests})
     get_filename_component(stem ${t} NAME_WE)
@@ -115,6 +118,12 @@ function(qm_module_tests module)
     target_compile_definitions(${name} PRIVATE QM_ENABLE_ASSERTS=1
       QM_SOURCE_DIR="${CMAKE_SOURCE_DIR}" QM_BINARY_DIR="${CMAKE_BINARY_DIR}")
     qm_defaults(${name})
-    add_test(NAME ${name} COMMAND ${name} WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+    if(stem IN_LIST T_LARGE)
+      add_test(NAME ${name} COMMAND ${name} "--test-case-exclude=*[large]*" WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+      add_test(NAME ${name}_large COMMAND ${name} "--test-case=*[large]*" WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+      set_tests_properties(${name}_large PROPERTIES LABELS large)
+    else()
+      add_test(NAME ${name} COMMAND ${name} WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+    endif()
   endforeach()
 endfunction()
