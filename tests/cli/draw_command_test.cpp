@@ -5,7 +5,7 @@
 // (the answer of `envision --path`: one drawing per state, in order, titled with the state's name,
 // the parts at the places' samples, one arrow per moving part pointing its way), a warning for parts
 // drawn overlapping, and bad input with exit status 2.
-#include "../support/json_value.hpp"
+#include "../support/program_json.hpp"
 #include "qm_atms_run.hpp"
 
 #include <doctest/doctest.h>
@@ -17,7 +17,8 @@
 #include <string>
 #include <vector>
 
-using qm::test::Json;
+using Json = nlohmann::json;
+using Array = Json::array_t;
 using qm::test::metric_scene;
 using qm::test::slurp;
 
@@ -65,23 +66,23 @@ TEST_CASE("cli/draw_command: a pair's parts at the sample configuration of a pla
     std::filesystem::remove_all(cache);
     const auto places = qm::test::qm_atms("--places " + metric_scene("escapement.def") + " --json --cache " + cache, "draw_test");
     REQUIRE(places.status == 0);
-    const auto doc = Json::parse(places.out);
-    REQUIRE(doc);
-    const auto& vocabulary = (*doc)["pairs"].array().at(0)["vocabulary"];
+    const auto doc = qm::test::read_json(places.out);
+    REQUIRE_FALSE(doc.is_discarded());
+    const auto& vocabulary = doc.at("pairs").at(0).at("vocabulary");
     std::map<std::string, int> checked;  // three places of each kind (each draw is a process)
-    for (const auto& p : vocabulary["places"].array()) {
-        const std::string kind = p["kind"].string();
+    for (const auto& p : vocabulary.at("places").get_ref<const Array&>()) {
+        const std::string kind = p.at("kind").get<std::string>();
         if ((kind != "cseg" && kind != "join" && kind != "face") || checked[kind] == 3) continue;
-        const auto& pts = p["points"].array();
-        const auto& q = pts[pts.size() / 2].array();  // place_sample.hpp: the middle point, a join's, a face's
-        const int id = static_cast<int>(p["id"].number());
+        const auto& pts = p.at("points").get_ref<const Array&>();
+        const auto& q = pts[pts.size() / 2].get_ref<const Array&>();  // place_sample.hpp: the middle point, a join's, a face's
+        const int id = static_cast<int>(p.at("id").get<double>());
         const std::string file = out_file("draw_place.svg");
         const auto r = draw(metric_scene("escapement.def") + " --place scape-wheel--pallets:" + std::to_string(id) + " --svg " + file + " --cache " + cache);
         CAPTURE(id);
         REQUIRE(r.status == 0);
         const std::string svg = slurp(file);
         CHECK(svg.find("place " + std::to_string(id) + " (" + kind) != std::string::npos);
-        for (auto [part, value] : {std::pair{"scape-wheel", q[0].number()}, std::pair{"pallets", q[1].number()}}) {
+        for (auto [part, value] : {std::pair{"scape-wheel", q[0].get<double>()}, std::pair{"pallets", q[1].get<double>()}}) {
             const std::string t = transform_of(svg, part);
             CHECK(std::stod(t.substr(7)) == doctest::Approx(value * 180 / std::numbers::pi).epsilon(1e-9));
         }
@@ -157,9 +158,9 @@ TEST_CASE("cli/draw_command: a history, a drawing per state") {
     REQUIRE(states.size() >= 3);
     const auto places = qm::test::qm_atms("--places " + cam + " --json --cache " + cache, "draw_test");
     REQUIRE(places.status == 0);
-    const auto doc = Json::parse(places.out);
-    REQUIRE(doc);
-    const auto& vocabulary = (*doc)["pairs"].array().at(0)["vocabulary"]["places"].array();
+    const auto doc = qm::test::read_json(places.out);
+    REQUIRE_FALSE(doc.is_discarded());
+    const auto& vocabulary = doc.at("pairs").at(0).at("vocabulary").at("places").get_ref<const Array&>();
     std::string ids;
     for (const auto& [id, name] : states) ids += id + " ";
     const std::string file = out_file("draw_history.svg");
@@ -185,10 +186,10 @@ TEST_CASE("cli/draw_command: a history, a drawing per state") {
         // "cam/follower-P CAM FOLLOWER": the cam at the place's sample, an arrow per moving part.
         const std::size_t place = std::stoul(name.substr(name.find('-') + 1));
         const auto& p = vocabulary.at(place);
-        const std::string kind = p["kind"].string();
-        if (!((kind == "fsd" || kind == "external-division") && p["points"].array().size() == 2)) {
-            const auto& pts = p["points"].array();
-            const double want = pts[pts.size() / 2].array()[0].number() * 180 / std::numbers::pi;
+        const std::string kind = p.at("kind").get<std::string>();
+        if (!((kind == "fsd" || kind == "external-division") && p.at("points").get_ref<const Array&>().size() == 2)) {
+            const auto& pts = p.at("points").get_ref<const Array&>();
+            const double want = pts[pts.size() / 2].at(0).get<double>() * 180 / std::numbers::pi;
             CHECK(std::stod(transform_of(panel, "cam").substr(7)) == doctest::Approx(want).epsilon(1e-9));
         }
         const char cam_motion = name[name.size() - 3], follower_motion = name[name.size() - 1];

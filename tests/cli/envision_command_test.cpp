@@ -3,7 +3,7 @@
 // qm-envisionment/1 JSON checked against its schema, --next/--previous, --without, and bad input:
 // each a located or clear error with exit status 2 and nothing on standard output.
 #include "qm_atms_run.hpp"
-#include "../support/json_value.hpp"
+#include "../support/program_json.hpp"
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -13,7 +13,9 @@
 #include <string>
 #include <sys/wait.h>
 
-using qm::test::Json;
+using Json = nlohmann::json;
+using Array = Json::array_t;
+using Object = Json::object_t;
 
 namespace {
 using qm::test::write_temp;
@@ -42,49 +44,49 @@ TEST_CASE("cli/envision: the text summary names the chain, its pairs, states, tr
 TEST_CASE("cli/envision: --json follows qm-envisionment/1") {
     const auto r = envision(metric_scene("escapement.def") + " --json");
     REQUIRE(r.status == 0);
-    const auto j = Json::parse(r.out);
-    REQUIRE(j.has_value());
-    CHECK((*j)["schema"].string() == "qm-envisionment/1");
-    CHECK((*j)["mechanism"].string() == "escapement");
-    CHECK(j->object().size() == 3);
-    const auto& chains = (*j)["chains"].array();
+    const auto j = qm::test::read_json(r.out);
+    REQUIRE_FALSE(j.is_discarded());
+    CHECK(j.at("schema").get<std::string>() == "qm-envisionment/1");
+    CHECK(j.at("mechanism").get<std::string>() == "escapement");
+    CHECK(j.get_ref<const Object&>().size() == 3);
+    const auto& chains = j.at("chains").get_ref<const Array&>();
     REQUIRE(chains.size() == 1);
     const auto& c = chains[0];
-    CHECK(c.object().size() == 9);
-    CHECK(c["index"].number() == 1);
-    CHECK(c["objects"].array().size() == 2);
-    const auto& pairs = c["pairs"].array();
+    CHECK(c.get_ref<const Object&>().size() == 9);
+    CHECK(c.at("index").get<double>() == 1);
+    CHECK(c.at("objects").get_ref<const Array&>().size() == 2);
+    const auto& pairs = c.at("pairs").get_ref<const Array&>();
     REQUIRE(pairs.size() == 1);
-    CHECK(pairs[0]["parts"].array()[0].string() == "scape-wheel");
-    const auto places = static_cast<std::size_t>(pairs[0]["places"].number());
-    const auto& states = c["states"].array();
+    CHECK(pairs[0].at("parts").at(0).get<std::string>() == "scape-wheel");
+    const auto places = static_cast<std::size_t>(pairs[0].at("places").get<double>());
+    const auto& states = c.at("states").get_ref<const Array&>();
     REQUIRE(!states.empty());
     for (std::size_t i = 0; i < states.size(); ++i) {
         const auto& s = states[i];
-        CHECK(s.object().size() == 4);
-        CHECK(s["id"].number() == static_cast<double>(i));
-        CHECK(s["places"].array().size() == 1);
-        CHECK(s["places"].array()[0]["place"].number() < static_cast<double>(places));
+        CHECK(s.get_ref<const Object&>().size() == 4);
+        CHECK(s.at("id").get<double>() == static_cast<double>(i));
+        CHECK(s.at("places").get_ref<const Array&>().size() == 1);
+        CHECK(s.at("places").at(0).at("place").get<double>() < static_cast<double>(places));
         for (const char* key : {"motions", "net_force"}) {
-            CHECK(s[key].object().size() == 2);
-            for (const auto& [obj, sign] : s[key].object()) {
+            CHECK(s.at(key).get_ref<const Object&>().size() == 2);
+            for (const auto& [obj, sign] : s.at(key).get_ref<const Object&>()) {
                 const std::set<std::string> allowed = key == std::string("motions") ? std::set<std::string>{"(+)", "(0)", "(-)"}
                                                                                       : std::set<std::string>{"(+)", "(0)", "(-)", "(?)"};
-                CHECK(allowed.count(sign.string()) == 1);
+                CHECK(allowed.count(sign.get<std::string>()) == 1);
             }
         }
     }
-    for (const auto& t : c["transitions"].array()) {
-        CHECK(t.object().size() == 4);
-        CHECK(t["from"].number() < static_cast<double>(states.size()));
-        CHECK(t["to"].number() < static_cast<double>(states.size()));
-        CHECK((t["duration"].string() == "instant" || t["duration"].string() == "interval"));
-        CHECK(!t["causes"].array().empty());
-        for (const auto& cause : t["causes"].array())
-            CHECK(std::set<std::string>{"kinematic", "dynamic", "collision"}.count(cause.string()) == 1);
+    for (const auto& t : c.at("transitions").get_ref<const Array&>()) {
+        CHECK(t.get_ref<const Object&>().size() == 4);
+        CHECK(t.at("from").get<double>() < static_cast<double>(states.size()));
+        CHECK(t.at("to").get<double>() < static_cast<double>(states.size()));
+        CHECK((t.at("duration").get<std::string>() == "instant" || t.at("duration").get<std::string>() == "interval"));
+        CHECK(!t.at("causes").get_ref<const Array&>().empty());
+        for (const auto& cause : t.at("causes").get_ref<const Array&>())
+            CHECK(std::set<std::string>{"kinematic", "dynamic", "collision"}.count(cause.get<std::string>()) == 1);
     }
-    for (const auto& cycle : c["cycles"].array()) CHECK(!cycle.array().empty());
-    CHECK(c["terminal"].is_array());
+    for (const auto& cycle : c.at("cycles").get_ref<const Array&>()) CHECK(!cycle.get_ref<const Array&>().empty());
+    CHECK(c.at("terminal").is_array());
 }
 
 TEST_CASE("cli/envision: --table has the columns of Appendices A-D") {
@@ -182,22 +184,22 @@ TEST_CASE("cli/envision: --from, --path, --why-not, --dot and --svg") {
     const std::string ratchet = std::string(QM_SOURCE_DIR) + "/scenarios/clock/ratchet.def";
     const auto all = envision(ratchet + " --json");
     REQUIRE(all.status == 0);
-    const auto j = Json::parse(all.out);
-    REQUIRE(j.has_value());
-    const auto& c = (*j)["chains"].array()[0];
+    const auto j = qm::test::read_json(all.out);
+    REQUIRE_FALSE(j.is_discarded());
+    const auto& c = j.at("chains").at(0);
     // The one jam: terminal and not a possible rest (the ratchet's others may also move on).
     std::vector<int> jams;
-    for (const auto& t : c["terminal"].array()) jams.push_back(static_cast<int>(t.number()));
-    for (const auto& r : c["possible_rests"].array()) std::erase(jams, static_cast<int>(r.number()));
+    for (const auto& t : c.at("terminal").get_ref<const Array&>()) jams.push_back(static_cast<int>(t.get<double>()));
+    for (const auto& r : c.at("possible_rests").get_ref<const Array&>()) std::erase(jams, static_cast<int>(r.get<double>()));
     REQUIRE(jams.size() == 1);
     const std::string jam = "#" + std::to_string(jams[0]);
     // What the jammed state leads to: itself alone.
     const auto from = envision(ratchet + " --from '" + jam + "' --json");
     REQUIRE(from.status == 0);
-    const auto f = Json::parse(from.out);
-    REQUIRE(f.has_value());
-    CHECK((*f)["chains"].array()[0]["states"].array().size() == 1);
-    CHECK((*f)["chains"].array()[0]["transitions"].array().empty());
+    const auto f = qm::test::read_json(from.out);
+    REQUIRE_FALSE(f.is_discarded());
+    CHECK(f.at("chains").at(0).at("states").get_ref<const Array&>().size() == 1);
+    CHECK(f.at("chains").at(0).at("transitions").get_ref<const Array&>().empty());
     // From rest in free space to the jam (9.2.3, Figure 9.27).
     const auto path = envision(ratchet + " --path 'ratchet-wheel/pawl:free ratchet-wheel=0 pawl=0 ; " + jam + "'");
     REQUIRE(path.status == 0);
@@ -299,11 +301,11 @@ TEST_CASE("cli/envision: --dot groups the states by behavioural cycle and double
         const std::string dot = std::string(QM_BINARY_DIR) + "/envision_test_groups.dot";
         const auto r = envision(mech + " --json --dot " + dot);
         REQUIRE(r.status == 0);
-        const auto doc = Json::parse(r.out);
-        REQUIRE(doc);
-        const Json& chain = (*doc)["chains"].array().at(0);
+        const auto doc = qm::test::read_json(r.out);
+        REQUIRE_FALSE(doc.is_discarded());
+        const Json& chain = doc.at("chains").at(0);
         const std::string graph = slurp(dot);
-        const auto& cycles = chain["cycles"].array();
+        const auto& cycles = chain.at("cycles").get_ref<const Array&>();
         REQUIRE(!cycles.empty());
         // Each cycle is one cluster holding exactly its states.
         for (std::size_t i = 0; i < cycles.size(); ++i) {
@@ -314,14 +316,14 @@ TEST_CASE("cli/envision: --dot groups the states by behavioural cycle and double
             std::set<int> inside, want;
             for (auto at = body.find("      c1s"); at != std::string::npos; at = body.find("      c1s", at + 1))
                 inside.insert(std::stoi(body.substr(at + 9)));
-            for (const auto& s : cycles[i].array()) want.insert(static_cast<int>(s.number()));
+            for (const auto& s : cycles[i].get_ref<const Array&>()) want.insert(static_cast<int>(s.get<double>()));
             CHECK(inside == want);
         }
         CHECK(graph.find("cluster_1_cycle_" + std::to_string(cycles.size() + 1)) == std::string::npos);
-        for (const auto& t : chain["terminal"].array())
-            CHECK(graph.find("c1s" + std::to_string(static_cast<int>(t.number())) + " [label=") != std::string::npos);
+        for (const auto& t : chain.at("terminal").get_ref<const Array&>())
+            CHECK(graph.find("c1s" + std::to_string(static_cast<int>(t.get<double>())) + " [label=") != std::string::npos);
         std::size_t doubled = 0;
         for (auto at = graph.find("peripheries=2"); at != std::string::npos; at = graph.find("peripheries=2", at + 1)) ++doubled;
-        CHECK(doubled == chain["terminal"].array().size());
+        CHECK(doubled == chain.at("terminal").get_ref<const Array&>().size());
     }
 }

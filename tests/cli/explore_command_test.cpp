@@ -4,7 +4,7 @@
 // ends the script element early), holds the vocabulary of `--places --json` place for place, and
 // for every place its sample configuration in degrees or offsets with the parts' transforms there;
 // bad input with exit status 2. tests/cli/explore_page_test.py checks the page in a browser.
-#include "../support/json_value.hpp"
+#include "../support/program_json.hpp"
 #include "qm_atms_run.hpp"
 
 #include <doctest/doctest.h>
@@ -12,7 +12,8 @@
 #include <numbers>
 #include <string>
 
-using qm::test::Json;
+using Json = nlohmann::json;
+using Array = Json::array_t;
 using qm::test::metric_scene;
 using qm::test::slurp;
 
@@ -25,9 +26,9 @@ Json page_data(const std::string& html) {
     const auto from = html.find(open);
     REQUIRE(from != std::string::npos);
     const auto to = html.find("</script>", from);
-    const auto data = Json::parse(html.substr(from + open.size(), to - from - open.size()));
-    REQUIRE(data);
-    return *data;
+    const auto data = qm::test::read_json(html.substr(from + open.size(), to - from - open.size()));
+    REQUIRE_FALSE(data.is_discarded());
+    return data;
 }
 
 }  // namespace
@@ -42,45 +43,45 @@ TEST_CASE("cli/explore_command: the page, its files and its data") {
     for (const char* name : {"explore.js", "envision.js", "explore.css"})
         CHECK(slurp(dir + "/" + name) == slurp(std::string(QM_SOURCE_DIR) + "/cli/explore/" + name));
     const Json data = page_data(slurp(dir + "/index.html"));
-    CHECK(data["schema"].string() == "qm-explore/1");
-    CHECK(data["mechanism"].string() == "cam");
-    CHECK(std::holds_alternative<std::nullptr_t>(data["envisionment"].value));  // --no-envision
-    CHECK(data["chains"].array().empty());
-    REQUIRE(data["pairs"].array().size() == 1);
-    const Json& pair = data["pairs"].array()[0];
-    CHECK(pair["parts"].array()[0].string() == "cam");
-    CHECK(pair["parts"].array()[1].string() == "follower");
-    CHECK(pair["units"].array()[0].string() == "degrees");
-    CHECK(pair["units"].array()[1].string() == "length");
-    CHECK(pair["cspace_svg"].string().rfind("<svg ", 0) == 0);
-    CHECK(pair["drawing_svg"].string().find("data-part=\"follower\"") != std::string::npos);
+    CHECK(data.at("schema").get<std::string>() == "qm-explore/1");
+    CHECK(data.at("mechanism").get<std::string>() == "cam");
+    CHECK(data.at("envisionment").is_null());  // --no-envision
+    CHECK(data.at("chains").get_ref<const Array&>().empty());
+    REQUIRE(data.at("pairs").get_ref<const Array&>().size() == 1);
+    const Json& pair = data.at("pairs").at(0);
+    CHECK(pair.at("parts").at(0).get<std::string>() == "cam");
+    CHECK(pair.at("parts").at(1).get<std::string>() == "follower");
+    CHECK(pair.at("units").at(0).get<std::string>() == "degrees");
+    CHECK(pair.at("units").at(1).get<std::string>() == "length");
+    CHECK(pair.at("cspace_svg").get<std::string>().rfind("<svg ", 0) == 0);
+    CHECK(pair.at("drawing_svg").get<std::string>().find("data-part=\"follower\"") != std::string::npos);
 
     const auto places = run("--places " + metric_scene("cam.def") + " --json --no-cache");
     REQUIRE(places.status == 0);
-    const auto doc = Json::parse(places.out);
-    REQUIRE(doc);
-    const auto& want = (*doc)["pairs"].array()[0]["vocabulary"];
-    const auto& got = pair["vocabulary"];
-    REQUIRE(got["places"].array().size() == want["places"].array().size());
-    CHECK(got["adjacency"].array().size() == want["adjacency"].array().size());
-    const auto& samples = pair["samples"].array();
-    REQUIRE(samples.size() == want["places"].array().size());
+    const auto doc = qm::test::read_json(places.out);
+    REQUIRE_FALSE(doc.is_discarded());
+    const auto& want = doc.at("pairs").at(0).at("vocabulary");
+    const auto& got = pair.at("vocabulary");
+    REQUIRE(got.at("places").get_ref<const Array&>().size() == want.at("places").get_ref<const Array&>().size());
+    CHECK(got.at("adjacency").get_ref<const Array&>().size() == want.at("adjacency").get_ref<const Array&>().size());
+    const auto& samples = pair.at("samples").get_ref<const Array&>();
+    REQUIRE(samples.size() == want.at("places").get_ref<const Array&>().size());
     for (std::size_t k = 0; k < samples.size(); ++k) {
-        const Json& p = want["places"].array()[k];
+        const Json& p = want.at("places").at(k);
         CAPTURE(k);
-        CHECK(got["places"].array()[k]["kind"].string() == p["kind"].string());
-        CHECK(got["places"].array()[k]["points"].array().size() == p["points"].array().size());
-        const std::string kind = p["kind"].string();
+        CHECK(got.at("places").at(k).at("kind").get<std::string>() == p.at("kind").get<std::string>());
+        CHECK(got.at("places").at(k).at("points").get_ref<const Array&>().size() == p.at("points").get_ref<const Array&>().size());
+        const std::string kind = p.at("kind").get<std::string>();
         if (kind == "fsd" || kind == "external-division") continue;  // their middles: explore_page_test.py
-        const auto& pts = p["points"].array();
-        const auto& q = pts[pts.size() / 2].array();
-        const auto& config = samples[k]["config"].array();
-        CHECK(config[0].number() == doctest::Approx(q[0].number() * 180 / std::numbers::pi));
-        CHECK(config[1].number() == doctest::Approx(q[1].number()));
-        CHECK(samples[k]["q"].array()[0].number() == doctest::Approx(q[0].number()));
-        CHECK(samples[k]["transforms"].array()[0].string().rfind("rotate(", 0) == 0);
-        CHECK(samples[k]["transforms"].array()[1].string().rfind("translate(0 ", 0) == 0);
-        if (kind == "cseg") CHECK(samples[k]["contacts"].number() >= 1);
+        const auto& pts = p.at("points").get_ref<const Array&>();
+        const auto& q = pts[pts.size() / 2].get_ref<const Array&>();
+        const auto& config = samples[k].at("config").get_ref<const Array&>();
+        CHECK(config[0].get<double>() == doctest::Approx(q[0].get<double>() * 180 / std::numbers::pi));
+        CHECK(config[1].get<double>() == doctest::Approx(q[1].get<double>()));
+        CHECK(samples[k].at("q").at(0).get<double>() == doctest::Approx(q[0].get<double>()));
+        CHECK(samples[k].at("transforms").at(0).get<std::string>().rfind("rotate(", 0) == 0);
+        CHECK(samples[k].at("transforms").at(1).get<std::string>().rfind("translate(0 ", 0) == 0);
+        if (kind == "cseg") CHECK(samples[k].at("contacts").get<double>() >= 1);
     }
 }
 
@@ -100,27 +101,27 @@ TEST_CASE("cli/explore_command: the envisionment in the page is `envision --json
     const auto from = html.find("\"envisionment\":") + 15;
     CHECK(html.substr(from, json.out.size() - 1) + "\n" == json.out);
     const Json data = page_data(html);
-    const Json& env = data["envisionment"];
-    CHECK(env["schema"].string() == "qm-envisionment/1");
-    REQUIRE(data["chains"].array().size() == env["chains"].array().size());
-    const Json& chain = data["chains"].array()[0];
-    CHECK(chain["index"].number() == 1);
-    CHECK(chain["drawing_svg"].string().find("data-part=\"cam\"") != std::string::npos);
-    CHECK(chain["world_transform"].string().rfind("translate(", 0) == 0);
+    const Json& env = data.at("envisionment");
+    CHECK(env.at("schema").get<std::string>() == "qm-envisionment/1");
+    REQUIRE(data.at("chains").get_ref<const Array&>().size() == env.at("chains").get_ref<const Array&>().size());
+    const Json& chain = data.at("chains").at(0);
+    CHECK(chain.at("index").get<double>() == 1);
+    CHECK(chain.at("drawing_svg").get<std::string>().find("data-part=\"cam\"") != std::string::npos);
+    CHECK(chain.at("world_transform").get<std::string>().rfind("translate(", 0) == 0);
     for (const char* part : {"cam", "follower"})
-        for (const char* sign : {"+", "-"}) CHECK(chain["arrows"][part][sign].string().find("data-motion=\"" + std::string(sign) + "\"") != std::string::npos);
-    REQUIRE(chain["pairs"].array().size() == 1);
-    CHECK(chain["pairs"].array()[0]["pair"].number() == 0);
-    CHECK(chain["pairs"].array()[0]["contacts_svg"].array().size() == data["pairs"].array()[0]["samples"].array().size());
+        for (const char* sign : {"+", "-"}) CHECK(chain.at("arrows").at(part).at(sign).get<std::string>().find("data-motion=\"" + std::string(sign) + "\"") != std::string::npos);
+    REQUIRE(chain.at("pairs").get_ref<const Array&>().size() == 1);
+    CHECK(chain.at("pairs").at(0).at("pair").get<double>() == 0);
+    CHECK(chain.at("pairs").at(0).at("contacts_svg").get_ref<const Array&>().size() == data.at("pairs").at(0).at("samples").get_ref<const Array&>().size());
     // The described behaviour is `envision --path`'s answer.
     const auto path = run("envision " + metric_scene("cam.def") + " --cache " + cache + " --path '" + describe + "' --avoid 'cam=0'");
     REQUIRE(path.status == 0);
-    REQUIRE(data["paths"].array().size() == 1);
-    const Json& p = data["paths"].array()[0];
-    CHECK(p["description"].string() == describe);
-    CHECK(p["chain"].number() == 1);
+    REQUIRE(data.at("paths").get_ref<const Array&>().size() == 1);
+    const Json& p = data.at("paths").at(0);
+    CHECK(p.at("description").get<std::string>() == describe);
+    CHECK(p.at("chain").get<double>() == 1);
     std::string ids;
-    for (const auto& s : p["states"].array()) ids += "\n  #" + std::to_string(static_cast<int>(s.number())) + " ";
+    for (const auto& s : p.at("states").get_ref<const Array&>()) ids += "\n  #" + std::to_string(static_cast<int>(s.get<double>())) + " ";
     std::string want;
     for (auto at = path.out.find("\n  #"); at != std::string::npos; at = path.out.find("\n  #", at + 1))
         want += path.out.substr(at, path.out.find(' ', at + 4) - at + 1);

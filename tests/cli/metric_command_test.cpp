@@ -7,7 +7,7 @@
 #include "qm_atms_run.hpp"
 #include <cstdio>
 #include <cstdlib>
-#include "../support/json_value.hpp"
+#include "../support/program_json.hpp"
 #include <doctest/doctest.h>
 #include <regex>
 #include <filesystem>
@@ -21,6 +21,7 @@ using qm::test::write_temp;
 using qm::test::count;
 using qm::test::metric_scene;
 
+using Array = nlohmann::json::array_t;
 using Result = qm::test::Run;
 using qm::test::slurp;
 
@@ -102,13 +103,13 @@ TEST_CASE("cli/metric_command: corner against corner is written as two Alex corn
     // vertically, moves down only if it pushes the pivoted lower diamond round.
     const Result a = qm_atms(write_temp("tips.def", tips) + " --json");
     CHECK(a.status == 0);
-    auto doc = qm::test::Json::parse(a.out);
-    REQUIRE(doc.has_value());
+    auto doc = qm::test::read_json(a.out);
+    REQUIRE_FALSE(doc.is_discarded());
     bool falls = false;
-    for (const auto& m : (*doc)["situations"].array()[0]["motions"].array())
-        if (m["upper"]["translation"].string() == "(0 -)") {
+    for (const auto& m : doc.at("situations").at(0).at("motions").get_ref<const Array&>())
+        if (m.at("upper").at("translation").get<std::string>() == "(0 -)") {
             falls = true;
-            CHECK(m["lower"]["rotation"].string() != "(0)");
+            CHECK(m.at("lower").at("rotation").get<std::string>() != "(0)");
         }
     CHECK(falls);
 }

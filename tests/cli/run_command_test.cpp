@@ -1,10 +1,10 @@
 // tests/cli/run_command_test.cpp: `qm-atms run` end to end through the built executable. The JSON
-// output is read back (tests/support/json_value.hpp) and compared, for N-queens N = 4..8, with
+// output is read back (tests/support/program_json.hpp) and compared, for N-queens N = 4..8, with
 // a brute-force enumeration (facts and labels, minimal nogoods, interpretations = the solutions:
 // 2, 10, 4, 40, 92); --why on a fact that holds and on a ruled-out one (exact text); exit statuses
 // (0 ok, 2 bad input) and the located, caret-marked diagnostics of bad input.
 #include "qm_atms_run.hpp"
-#include "../support/json_value.hpp"
+#include "../support/program_json.hpp"
 #include <cstdio>
 #include <cstdlib>
 #include <doctest/doctest.h>
@@ -19,7 +19,9 @@
 
 namespace {
 
-using qm::test::Json;
+using Json = nlohmann::ordered_json;  // ordered: the tests check the order of the keys
+using Array = Json::array_t;
+using Object = Json::object_t;
 using Result = qm::test::Run;
 
 // Runs in the binary folder, so that the relative paths in messages are the same in every tree.
@@ -38,9 +40,9 @@ using Env = std::set<std::string>;
 // An array of arrays of strings (a label, the nogoods, the interpretations), as sets.
 std::set<Env> env_list(const Json& j) {
     std::set<Env> out;
-    for (const Json& e : j.array()) {
+    for (const Json& e : j.get_ref<const Array&>()) {
         Env env;
-        for (const Json& a : e.array()) env.insert(a.string());
+        for (const Json& a : e.get_ref<const Array&>()) env.insert(a.get<std::string>());
         out.insert(env);
     }
     return out;
@@ -78,15 +80,15 @@ TEST_CASE("cli/run_command: --json for N-queens equals a brute-force enumeration
         CHECK(r.err.empty());
         REQUIRE(r.out.size() > 1);
         CHECK(r.out.back() == '\n');
-        const auto top = Json::parse(r.out);
-        REQUIRE(top.has_value());
-        REQUIRE(top->object().size() == 3);  // the order of the keys: the exact output below
+        const auto top = qm::test::read_json<Json>(r.out);
+        REQUIRE_FALSE(top.is_discarded());
+        REQUIRE(top.get_ref<const Object&>().size() == 3);  // the order of the keys: the exact output below
 
         // Facts: every (queen r c), labelled by its own assumption, and every premise (row r).
         std::map<std::string, std::set<Env>> labels;
-        for (const Json& f : (*top)["facts"].array()) {
-            REQUIRE(f.object().size() == 2);
-            labels[f["fact"].string()] = env_list(f["label"]);
+        for (const Json& f : top.at("facts").get_ref<const Array&>()) {
+            REQUIRE(f.get_ref<const Object&>().size() == 2);
+            labels[f.at("fact").get<std::string>()] = env_list(f.at("label"));
         }
         std::map<std::string, std::set<Env>> expected_labels;
         for (int row = 1; row <= n; ++row) {
@@ -96,7 +98,7 @@ TEST_CASE("cli/run_command: --json for N-queens equals a brute-force enumeration
         CHECK(labels == expected_labels);
 
         // Minimal nogoods: two queens in one row (the choice set), one column or one diagonal.
-        const std::set<Env> nogoods = env_list((*top)["nogoods"]);
+        const std::set<Env> nogoods = env_list(top.at("nogoods"));
         std::set<Env> expected_nogoods;
         for (int r1 = 1; r1 <= n; ++r1)
             for (int c1 = 1; c1 <= n; ++c1)
@@ -107,9 +109,9 @@ TEST_CASE("cli/run_command: --json for N-queens equals a brute-force enumeration
                     }
         CHECK(nogoods == expected_nogoods);
 
-        const std::set<Env> interpretations = env_list((*top)["interpretations"]);
+        const std::set<Env> interpretations = env_list(top.at("interpretations"));
         std::set<Env> expected;
-        CHECK((*top)["interpretations"].array().size() == count);  // no duplicates either
+        CHECK(top.at("interpretations").get_ref<const Array&>().size() == count);  // no duplicates either
         std::vector<int> cols(static_cast<std::size_t>(n) + 1, 0);
         solutions(n, 1, cols, expected);
         CHECK(expected.size() == count);
@@ -203,9 +205,16 @@ TEST_CASE("cli/run_command: bad input exits 2 with located diagnostics and a car
 }
 
 namespace {
+// An object's keys, in the order read.
+std::vector<std::string> keys_of(const Json& object) {
+    std::vector<std::string> keys;
+    for (const auto& [key, value] : object.get_ref<const Object&>()) keys.push_back(key);
+    return keys;
+}
+
 std::string joined(const Json& list, const char* sep) {
     std::string out;
-    for (std::size_t i = 0; i < list.array().size(); ++i) out += (i > 0 ? sep : "") + list.array()[i].string();
+    for (std::size_t i = 0; i < list.get_ref<const Array&>().size(); ++i) out += (i > 0 ? sep : "") + list.at(i).get<std::string>();
     return out;
 }
 }  // namespace
@@ -226,24 +235,24 @@ TEST_CASE("cli/run_command: --why with --json gives the explanation as JSON, ste
         Result json = qm_atms("run " + held + " --why '" + fact + "' --json");
         REQUIRE(json.status == 0);
         CHECK(json.err.empty());
-        const auto doc = Json::parse(json.out);
-        REQUIRE(doc.has_value());
-        REQUIRE(doc->keys == std::vector<std::string>{"fact", "status", "derivations", "nogoods"});
-        CHECK((*doc)["fact"].string() == fact);
-        const std::string status = (*doc)["status"].string();
+        const auto doc = qm::test::read_json<Json>(json.out);
+        REQUIRE_FALSE(doc.is_discarded());
+        REQUIRE(keys_of(doc) == std::vector<std::string>{"fact", "status", "derivations", "nogoods"});
+        CHECK(doc.at("fact").get<std::string>() == fact);
+        const std::string status = doc.at("status").get<std::string>();
         // Rebuild the text form from the JSON and compare with what --why prints.
         std::string rebuilt = std::string(fact) + (status == "holds" ? " holds\n" : " is ruled out: every environment supporting it is nogood\n");
-        CHECK((*doc)[status == "holds" ? "nogoods" : "derivations"].array().empty());
-        for (const Json& d : (*doc)[status == "holds" ? "derivations" : "nogoods"].array()) {
-            REQUIRE(d.keys == std::vector<std::string>{"environment", "steps"});
-            rebuilt += std::string(status == "holds" ? "  in {" : "  nogood {") + joined(d["environment"], ", ") + "}:\n";
-            for (const Json& step : d["steps"].array()) {
-                REQUIRE(step.keys == std::vector<std::string>{"fact", "informant", "binding", "antecedents", "not"});
-                rebuilt += "    " + step["fact"].string() + " <= " + step["informant"].string();
-                if (!step["binding"].array().empty()) rebuilt += " {" + joined(step["binding"], ", ") + "}";
-                if (!step["antecedents"].array().empty()) rebuilt += ": " + joined(step["antecedents"], ", ");
+        CHECK(doc.at(status == "holds" ? "nogoods" : "derivations").get_ref<const Array&>().empty());
+        for (const Json& d : doc.at(status == "holds" ? "derivations" : "nogoods").get_ref<const Array&>()) {
+            REQUIRE(keys_of(d) == std::vector<std::string>{"environment", "steps"});
+            rebuilt += std::string(status == "holds" ? "  in {" : "  nogood {") + joined(d.at("environment"), ", ") + "}:\n";
+            for (const Json& step : d.at("steps").get_ref<const Array&>()) {
+                REQUIRE(keys_of(step) == std::vector<std::string>{"fact", "informant", "binding", "antecedents", "not"});
+                rebuilt += "    " + step.at("fact").get<std::string>() + " <= " + step.at("informant").get<std::string>();
+                if (!step.at("binding").get_ref<const Array&>().empty()) rebuilt += " {" + joined(step.at("binding"), ", ") + "}";
+                if (!step.at("antecedents").get_ref<const Array&>().empty()) rebuilt += ": " + joined(step.at("antecedents"), ", ");
                 rebuilt += "\n";
-                for (const Json& absent : step["not"].array()) rebuilt += "      and not " + absent.string() + "\n";
+                for (const Json& absent : step.at("not").get_ref<const Array&>()) rebuilt += "      and not " + absent.get<std::string>() + "\n";
             }
         }
         CHECK(rebuilt == text.out);

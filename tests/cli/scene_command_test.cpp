@@ -2,7 +2,7 @@
 // thesis notation, the JSON schema of docs/OUTPUT.md, --situation, --why (both spellings),
 // --without, --given, the interactive mode, and exit statuses for bad input.
 #include "qm_atms_run.hpp"
-#include "../support/json_value.hpp"
+#include "../support/program_json.hpp"
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -15,7 +15,9 @@
 #include <string>
 #include <sys/wait.h>
 
-using qm::test::Json;
+using Json = nlohmann::json;
+using Array = Json::array_t;
+using Object = Json::object_t;
 
 namespace {
 
@@ -39,52 +41,52 @@ std::string windy_boulder() {
 
 bool is_direction(const Json& j, std::size_t arity) {
     static const std::regex shape(R"(\([+0-]( [+0-])*\))");
-    return j.is_string() && std::regex_match(j.string(), shape) && (j.string().size() + 1) / 2 - 1 == arity;
+    return j.is_string() && std::regex_match(j.get<std::string>(), shape) && (j.get<std::string>().size() + 1) / 2 - 1 == arity;
 }
 
 // Checks the schema of docs/OUTPUT.md; returns the number of situations.
 std::size_t check_schema(const Json& doc, std::size_t objects) {
     REQUIRE(doc.is_object());
-    CHECK(doc.object().size() == 3);
-    REQUIRE(doc.has("scene"));
-    CHECK(doc["scene"].is_string());
-    const auto dims = static_cast<std::size_t>(doc["dimensions"].number());
+    CHECK(doc.get_ref<const Object&>().size() == 3);
+    REQUIRE(doc.contains("scene"));
+    CHECK(doc.at("scene").is_string());
+    const auto dims = static_cast<std::size_t>(doc.at("dimensions").get<double>());
     const std::size_t rot = dims == 3 ? 3 : 1;
-    const auto& situations = doc["situations"].array();
+    const auto& situations = doc.at("situations").get_ref<const Array&>();
     for (std::size_t i = 0; i < situations.size(); ++i) {
         const Json& s = situations[i];
-        CHECK(s.object().size() == 6);
-        CHECK(s["index"].number() == static_cast<double>(i + 1));
-        CHECK(s["stable"].is_bool());
+        CHECK(s.get_ref<const Object&>().size() == 6);
+        CHECK(s.at("index").get<double>() == static_cast<double>(i + 1));
+        CHECK(s.at("stable").is_boolean());
         // Which set `motions` lists, and both counts (docs/OUTPUT.md "Kinematic and selected").
-        CHECK(s["motion_set"].string() == "selected");
-        const Json& counts = s["combinations"];
-        CHECK(counts.object().size() == 4);
-        CHECK(counts["selected"].number() == static_cast<double>(s["motions"].array().size()));
-        CHECK(counts["selected_complete"].boolean());
-        CHECK(counts["kinematic"].number() >= counts["selected"].number());
-        CHECK(counts["kinematic_complete"].is_bool());
-        REQUIRE(s["freedom"].object().size() == objects);
-        for (const auto& [name, f] : s["freedom"].object()) {
+        CHECK(s.at("motion_set").get<std::string>() == "selected");
+        const Json& counts = s.at("combinations");
+        CHECK(counts.get_ref<const Object&>().size() == 4);
+        CHECK(counts.at("selected").get<double>() == static_cast<double>(s.at("motions").get_ref<const Array&>().size()));
+        CHECK(counts.at("selected_complete").get<bool>());
+        CHECK(counts.at("kinematic").get<double>() >= counts.at("selected").get<double>());
+        CHECK(counts.at("kinematic_complete").is_boolean());
+        REQUIRE(s.at("freedom").get_ref<const Object&>().size() == objects);
+        for (const auto& [name, f] : s.at("freedom").get_ref<const Object&>()) {
             CAPTURE(name);
             bool zero_t = false, zero_r = false;
-            for (const Json& d : f["translation"].array()) {
+            for (const Json& d : f.at("translation").get_ref<const Array&>()) {
                 CHECK(is_direction(d, dims));
-                zero_t |= d.string().find_first_of("+-") == std::string::npos;
+                zero_t |= d.get<std::string>().find_first_of("+-") == std::string::npos;
             }
-            for (const Json& d : f["rotation"].array()) {
+            for (const Json& d : f.at("rotation").get_ref<const Array&>()) {
                 CHECK(is_direction(d, rot));
-                zero_r |= d.string().find_first_of("+-") == std::string::npos;
+                zero_r |= d.get<std::string>().find_first_of("+-") == std::string::npos;
             }
             CHECK(zero_t);  // the zero direction is always free
             CHECK(zero_r);
         }
-        for (const Json& m : s["motions"].array()) {
-            REQUIRE(m.object().size() == objects);
-            for (const auto& [name, motion] : m.object()) {
-                CHECK(s["freedom"].has(name));
-                CHECK(is_direction(motion["translation"], dims));
-                CHECK(is_direction(motion["rotation"], rot));
+        for (const Json& m : s.at("motions").get_ref<const Array&>()) {
+            REQUIRE(m.get_ref<const Object&>().size() == objects);
+            for (const auto& [name, motion] : m.get_ref<const Object&>()) {
+                CHECK(s.at("freedom").contains(name));
+                CHECK(is_direction(motion.at("translation"), dims));
+                CHECK(is_direction(motion.at("rotation"), rot));
             }
         }
     }
@@ -109,20 +111,20 @@ TEST_CASE("cli/scene_command: --json follows the documented schema") {
         CAPTURE(name);
         Result r = qm_atms(scene(name) + " --json");
         REQUIRE(r.status == 0);
-        auto doc = Json::parse(r.out);
-        REQUIRE(doc.has_value());
-        CHECK(check_schema(*doc, objects) >= 1);
+        auto doc = qm::test::read_json(r.out);
+        REQUIRE_FALSE(doc.is_discarded());
+        CHECK(check_schema(doc, objects) >= 1);
     }
-    auto gears = Json::parse(qm_atms(scene("gears.def") + " --json").out);
-    REQUIRE(gears.has_value());
-    CHECK((*gears)["situations"].array()[0]["motions"].array().size() == 6);
-    CHECK((*gears)["dimensions"].number() == 2);
-    auto recoil = Json::parse(qm_atms(scene("recoil_escapement.def") + " --json --situation 2").out);
-    REQUIRE(recoil.has_value());
-    const auto& only = (*recoil)["situations"].array();
+    auto gears = qm::test::read_json(qm_atms(scene("gears.def") + " --json").out);
+    REQUIRE_FALSE(gears.is_discarded());
+    CHECK(gears.at("situations").at(0).at("motions").get_ref<const Array&>().size() == 6);
+    CHECK(gears.at("dimensions").get<double>() == 2);
+    auto recoil = qm::test::read_json(qm_atms(scene("recoil_escapement.def") + " --json --situation 2").out);
+    REQUIRE_FALSE(recoil.is_discarded());
+    const auto& only = recoil.at("situations").get_ref<const Array&>();
     REQUIRE(only.size() == 1);
-    CHECK(only[0]["index"].number() == 2);
-    CHECK(only[0]["motions"].array().size() == 1);
+    CHECK(only[0].at("index").get<double>() == 2);
+    CHECK(only[0].at("motions").get_ref<const Array&>().size() == 1);
 }
 
 TEST_CASE("cli/scene_command: --limit stops an enumeration and says so, in text and beside JSON") {
@@ -134,9 +136,9 @@ TEST_CASE("cli/scene_command: --limit stops an enumeration and says so, in text 
     CHECK(text.out.find("--limit") != std::string::npos);
     Result json = qm_atms(scene("gears.def") + " --limit 4 --json");
     REQUIRE(json.status == 0);
-    auto doc = Json::parse(json.out);
-    REQUIRE(doc.has_value());
-    CHECK((*doc)["situations"].array()[0]["motions"].array().size() == 4);
+    auto doc = qm::test::read_json(json.out);
+    REQUIRE_FALSE(doc.is_discarded());
+    CHECK(doc.at("situations").at(0).at("motions").get_ref<const Array&>().size() == 4);
     CHECK(json.err.find("enumeration stopped") != std::string::npos);
     // At or above the count nothing is cut and nothing is said.
     Result all = qm_atms(scene("gears.def") + " --limit 6 --json");
@@ -153,15 +155,15 @@ TEST_CASE("cli/scene_command: --why explains in either spelling, as text or JSON
     CHECK(text.out.find("{Contact (tb block-b-m)}") != std::string::npos);
     Result json = qm_atms(scene("block.def") + " --situation 2 --json --why '{\"block\": {\"translation\": \"(0 -)\"}}'");
     CHECK(json.status == 0);
-    auto w = Json::parse(json.out);
-    REQUIRE(w.has_value());
-    CHECK((*w)["status"].string() == "ruled-out");
-    CHECK((*w)["query"].string() == "Translational-Motion (block (0 -))");
-    CHECK((*w)["responsible_sets"].array().size() == 3);  // any one of the three bottom contacts
-    const Json& tree = (*w)["exclusions"].array()[0]["derivation"];
-    CHECK(tree["fact"].string() == "false");
-    CHECK(tree["law"].string() == "constraint-prevents-translation");
-    CHECK(tree["from"].is_array());
+    auto w = qm::test::read_json(json.out);
+    REQUIRE_FALSE(w.is_discarded());
+    CHECK(w.at("status").get<std::string>() == "ruled-out");
+    CHECK(w.at("query").get<std::string>() == "Translational-Motion (block (0 -))");
+    CHECK(w.at("responsible_sets").get_ref<const Array&>().size() == 3);  // any one of the three bottom contacts
+    const Json& tree = w.at("exclusions").at(0).at("derivation");
+    CHECK(tree.at("fact").get<std::string>() == "false");
+    CHECK(tree.at("law").get<std::string>() == "constraint-prevents-translation");
+    CHECK(tree.at("from").is_array());
     Result holds = qm_atms(scene("gears.def") + " --why 'Rotational-Motion (follower (+))'");
     CHECK(holds.out.find("holds") != std::string::npos);
     Result freedom = qm_atms(scene("gears.def") + " --why '{\"freedom\": {\"driver\": {\"translation\": \"(+ 0)\"}}}'");
@@ -170,14 +172,14 @@ TEST_CASE("cli/scene_command: --why explains in either spelling, as text or JSON
 
 TEST_CASE("cli/scene_command: --without and --given answer what-if questions") {
     Result without = qm_atms(scene("block.def") + " --json --situation 1 --without 'Force block'");
-    auto doc = Json::parse(without.out);
-    REQUIRE(doc.has_value());
+    auto doc = qm::test::read_json(without.out);
+    REQUIRE_FALSE(doc.is_discarded());
     // Without gravity nothing drives the block: every free motion is possible.
-    CHECK((*doc)["situations"].array()[0]["motions"].array().size() == 27);
+    CHECK(doc.at("situations").at(0).at("motions").get_ref<const Array&>().size() == 27);
     Result given = qm_atms(scene("recoil_escapement.def") + " --json --situation 1 --given 'pallet (0 0) (+)'");
-    auto g = Json::parse(given.out);
-    REQUIRE(g.has_value());
-    CHECK((*g)["situations"].array()[0]["motions"].array().size() == 1);
+    auto g = qm::test::read_json(given.out);
+    REQUIRE_FALSE(g.is_discarded());
+    CHECK(g.at("situations").at(0).at("motions").get_ref<const Array&>().size() == 1);
     // A contact taken away frees the block to fall through the table.
     Result off = qm_atms(scene("block.def") + " --situation 2 --without 'Contact tb block-b-l' --without "
                                               "'Contact (block-b-m tb)' --without 'Contact tb block-b-r'");
@@ -205,9 +207,9 @@ TEST_CASE("cli/scene_command: a metric scene is analysed at a configuration like
     const std::string cam = std::string(QM_SOURCE_DIR) + "/scenarios/metric/cam.def";
     Result r = qm_atms(cam + " --json");
     REQUIRE(r.status == 0);
-    auto doc = Json::parse(r.out);
-    REQUIRE(doc.has_value());
-    CHECK(check_schema(*doc, 2) == 1);
+    auto doc = qm::test::read_json(r.out);
+    REQUIRE_FALSE(doc.is_discarded());
+    CHECK(check_schema(doc, 2) == 1);
     // The same as analysing the Alex scene --emit-def writes.
     Result def = qm_atms("--emit-def " + cam);
     REQUIRE(def.status == 0);
@@ -315,19 +317,19 @@ TEST_CASE("cli/scene_command: --why lists the argument's reasons, the same in te
     Result json = qm_atms(args + " --json");
     REQUIRE(text.status == 0);
     REQUIRE(json.status == 0);
-    auto w = Json::parse(json.out);
-    REQUIRE(w.has_value());
-    const auto& exclusions = (*w)["exclusions"].array();
+    auto w = qm::test::read_json(json.out);
+    REQUIRE_FALSE(w.is_discarded());
+    const auto& exclusions = w.at("exclusions").get_ref<const Array&>();
     REQUIRE_FALSE(exclusions.empty());
-    REQUIRE(exclusions[0]["responsible"].array().size() == 1);
-    CHECK(exclusions[0]["responsible"].array()[0].string() == "Contact (s-w-b-3 gear-top-3)");
+    REQUIRE(exclusions[0].at("responsible").get_ref<const Array&>().size() == 1);
+    CHECK(exclusions[0].at("responsible").at(0).get<std::string>() == "Contact (s-w-b-3 gear-top-3)");
     std::size_t reasons = 0;
     for (std::size_t at = text.out.find("  Reason "); at != std::string::npos; at = text.out.find("  Reason ", at + 1)) ++reasons;
     CHECK(reasons == exclusions.size());
     CHECK(text.out.find("  Reason 1: resting on {Contact (s-w-b-3 gear-top-3)}") != std::string::npos);
     CHECK(text.out.find("the scene's description alone (no contact") == std::string::npos);
     CHECK(text.out.find("every translation of scape-wheel but (0 0)") != std::string::npos);
-    CHECK((*w)["responsible_minimal"].boolean());
+    CHECK(w.at("responsible_minimal").get<bool>());
 }
 
 TEST_CASE("cli/scene_command: --why's responsible sets are the minimal ones, and say so") {
@@ -381,10 +383,10 @@ TEST_CASE("cli/scene_command: --without says what it took away; 'Force OBJ CAUSE
     const std::string wind = windy_boulder();
     Result calm = qm_atms(wind + " --json --without 'Force boulder wind'");
     REQUIRE(calm.status == 0);
-    auto doc = Json::parse(calm.out);
-    REQUIRE(doc.has_value());
+    auto doc = qm::test::read_json(calm.out);
+    REQUIRE_FALSE(doc.is_discarded());
     // Gravity stays: the boulder rests on the table.
-    CHECK((*doc)["situations"].array()[0]["stable"].boolean());
+    CHECK(doc.at("situations").at(0).at("stable").get<bool>());
     CHECK(calm.err.find("without the force of cause 'wind' on 'boulder'") != std::string::npos);
     Result none = qm_atms(wind + " --without 'Force boulder breeze'");
     CHECK(none.status == 2);
@@ -408,12 +410,12 @@ TEST_CASE("cli/scene_command: --why about a consistent motion the --limit cut of
 
 // The set of combinations a JSON answer lists, each as one string (objects in name order).
 std::multiset<std::string> combinations_of(const Result& r, std::size_t situation = 0) {
-    auto doc = Json::parse(r.out);
-    REQUIRE(doc.has_value());
+    auto doc = qm::test::read_json(r.out);
+    REQUIRE_FALSE(doc.is_discarded());
     std::multiset<std::string> out;
-    for (const Json& m : (*doc)["situations"].array()[situation]["motions"].array()) {
+    for (const Json& m : doc.at("situations").at(situation).at("motions").get_ref<const Array&>()) {
         std::string one;
-        for (const auto& [name, motion] : m.object()) one += name + motion["translation"].string() + motion["rotation"].string() + " ";
+        for (const auto& [name, motion] : m.get_ref<const Object&>()) one += name + motion.at("translation").get<std::string>() + motion.at("rotation").get<std::string>() + " ";
         out.insert(one);
     }
     return out;
@@ -431,13 +433,13 @@ TEST_CASE("cli/scene_command: --kinematic lists what blocking and pushing alone 
                           "before the forces choose; the forces select 1 combination)\n") != std::string::npos);
     CHECK(listed.out.find("    Combination 150\n") != std::string::npos);
     Result json = qm_atms(crate + " --kinematic --json");
-    auto doc = Json::parse(json.out);
-    REQUIRE(doc.has_value());
-    const Json& s = (*doc)["situations"].array()[0];
-    CHECK(s["motion_set"].string() == "kinematic");
-    CHECK(s["combinations"]["selected"].number() == 1);
-    CHECK(s["combinations"]["kinematic"].number() == 150);
-    CHECK(s["motions"].array().size() == 150);
+    auto doc = qm::test::read_json(json.out);
+    REQUIRE_FALSE(doc.is_discarded());
+    const Json& s = doc.at("situations").at(0);
+    CHECK(s.at("motion_set").get<std::string>() == "kinematic");
+    CHECK(s.at("combinations").at("selected").get<double>() == 1);
+    CHECK(s.at("combinations").at("kinematic").get<double>() == 150);
+    CHECK(s.at("motions").get_ref<const Array&>().size() == 150);
     Result forceless = qm_atms(crate + " --json --without 'Force crate' --without 'Force shim'");
     REQUIRE(forceless.status == 0);
     CHECK(combinations_of(json) == combinations_of(forceless));
