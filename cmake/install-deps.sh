@@ -17,7 +17,7 @@ run_packages=(
   libcli11-dev                         # every command's options (CLI11, header-only)
   libgraphviz-dev                      # envision --svg: Graphviz's library lays out and draws the graph
   doctest-dev                          # unit tests (small; the configure step looks for it)
-  nlohmann-json3-dev                   # the tests read the program's JSON with it (header-only; the configure step looks for it)
+  nlohmann-json3-dev                   # the tests read the program's JSON (header-only; configure looks for it)
   libbenchmark-dev                     # bench/ (small; the configure step looks for it)
 )
 test_packages=(

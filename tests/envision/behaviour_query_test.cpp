@@ -47,7 +47,6 @@ std::size_t distance(const ChainEnvisionment& c, StateId a, StateId b) {
     return d[b.value];
 }
 
-
 }  // namespace
 
 TEST_CASE("envision/behaviour_query: a path between two states exists exactly when one reaches the other, and is shortest") {
