@@ -102,28 +102,33 @@ function(qm_module target)
   endif()
 endfunction()
 
-# qm_module_tests(<module> LIBS <targets...> [LARGE <file stems...>]): every
-# tests/<module>/*_test.cpp becomes its own doctest executable <module>_<file> registered with
-# ctest (one test file per header). A LARGE file's test cases named "[large]" (the largest
-# envisionments) are registered apart, as <module>_<file>_large with the ctest label `large`, which
-# the sanitizer tree of .ci/run leaves out: the same code runs there on the smaller mechanisms.
+# qm_module_tests(<module> LIBS <targets...> [LARGE <file stems...>]): the tests/<module>/*_test.cpp
+# (one test file per header) are linked into one doctest executable, <module>_tests, which run alone
+# runs them all; ctest runs each file as its own entry, <module>_<file>, selecting its test cases by
+# source file (one link per module, not per file: the sanitizer tree's links are its slowest part).
+# A LARGE file's test cases named "[large]" (the largest envisionments) are registered apart, as
+# <module>_<file>_large with the ctest label `large`, which the sanitizer tree of .ci/run leaves out:
+# the same code runs there on the smaller mechanisms. A selection that finds no test case fails
+# (tests/doctest_main.cpp), so a renamed file cannot pass by running nothing.
 function(qm_module_tests module)
   cmake_parse_arguments(T "" "" "LIBS;LARGE" ${ARGN})
   file(GLOB tests CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*_test.cpp)
+  set(exe ${module}_tests)
+  add_executable(${exe} ${tests})
+  target_link_libraries(${exe} PRIVATE ${T_LIBS} qm_doctest_main doctest::doctest)
+  target_compile_definitions(${exe} PRIVATE QM_ENABLE_ASSERTS=1
+    QM_SOURCE_DIR="${CMAKE_SOURCE_DIR}" QM_BINARY_DIR="${CMAKE_BINARY_DIR}")
+  qm_defaults(${exe})
   foreach(t ${tests})
     get_filename_component(stem ${t} NAME_WE)
     set(name ${module}_${stem})
-    add_executable(${name} ${t})
-    target_link_libraries(${name} PRIVATE ${T_LIBS} qm_doctest_main doctest::doctest)
-    target_compile_definitions(${name} PRIVATE QM_ENABLE_ASSERTS=1
-      QM_SOURCE_DIR="${CMAKE_SOURCE_DIR}" QM_BINARY_DIR="${CMAKE_BINARY_DIR}")
-    qm_defaults(${name})
+    set(file "--source-file=*/tests/${module}/${stem}.cpp")
     if(stem IN_LIST T_LARGE)
-      add_test(NAME ${name} COMMAND ${name} "--test-case-exclude=*[large]*" WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
-      add_test(NAME ${name}_large COMMAND ${name} "--test-case=*[large]*" WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+      add_test(NAME ${name} COMMAND ${exe} ${file} "--test-case-exclude=*[large]*" WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+      add_test(NAME ${name}_large COMMAND ${exe} ${file} "--test-case=*[large]*" WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
       set_tests_properties(${name}_large PROPERTIES LABELS large)
     else()
-      add_test(NAME ${name} COMMAND ${name} WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+      add_test(NAME ${name} COMMAND ${exe} ${file} WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
     endif()
   endforeach()
 endfunction()
