@@ -102,16 +102,18 @@ function(qm_module target)
   endif()
 endfunction()
 
-# qm_module_tests(<module> LIBS <targets...> [LARGE <file stems...>]): the tests/<module>/*_test.cpp
-# (one test file per header) are linked into one doctest executable, <module>_tests, which run alone
-# runs them all; ctest runs each file as its own entry, <module>_<file>, selecting its test cases by
-# source file (one link per module, not per file: the sanitizer tree's links are its slowest part).
+# qm_module_tests(<module> LIBS <targets...> [LARGE <file stems...>] [SLOW <file stems...>]): the
+# tests/<module>/*_test.cpp (one test file per header) are linked into one doctest executable,
+# <module>_tests, which run alone runs them all; ctest runs each file as its own entry,
+# <module>_<file>, selecting its test cases by source file (one link per module, not per file: the
+# sanitizer tree's links were among its slowest steps). SLOW files are started first (ctest COST),
+# so that none is left running alone at the end of a parallel run.
 # A LARGE file's test cases named "[large]" (the largest envisionments) are registered apart, as
 # <module>_<file>_large with the ctest label `large`, which the sanitizer tree of .ci/run leaves out:
 # the same code runs there on the smaller mechanisms. A selection that finds no test case fails
 # (tests/doctest_main.cpp), so a renamed file cannot pass by running nothing.
 function(qm_module_tests module)
-  cmake_parse_arguments(T "" "" "LIBS;LARGE" ${ARGN})
+  cmake_parse_arguments(T "" "" "LIBS;LARGE;SLOW" ${ARGN})
   file(GLOB tests CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*_test.cpp)
   set(exe ${module}_tests)
   add_executable(${exe} ${tests})
@@ -129,6 +131,9 @@ function(qm_module_tests module)
       set_tests_properties(${name}_large PROPERTIES LABELS large)
     else()
       add_test(NAME ${name} COMMAND ${exe} ${file} WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+    endif()
+    if(stem IN_LIST T_SLOW)
+      set_tests_properties(${name} PROPERTIES COST 100)
     endif()
   endforeach()
 endfunction()
