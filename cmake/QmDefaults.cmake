@@ -110,8 +110,8 @@ endfunction()
 # qm_module_tests(<module> LIBS <targets...> [LARGE <file stems...>] [SLOW <file stems...>]): the
 # tests/<module>/*_test.cpp (one test file per header) are linked into one doctest executable,
 # <module>_tests, which run alone runs them all; ctest runs each file as its own entry,
-# <module>_<file>, selecting its test cases by source file (one link per module, not per file: the
-# sanitizer tree's links were among its slowest steps). SLOW files are started first (ctest COST),
+# <module>_<file>, selecting its test cases by source file (one link per module, not per file: a
+# sanitized link is slow). SLOW files are started first (ctest COST),
 # so that none is left running alone at the end of a parallel run.
 # A LARGE file's test cases named "[large]" (the largest envisionments) are registered apart, as
 # <module>_<file>_large with the ctest label `large`, which the sanitizer tree of .ci/run leaves out:
