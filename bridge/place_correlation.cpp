@@ -17,7 +17,7 @@ struct Interval {
 };
 
 // The values a line or join covers: the union of its consecutive points' spans (the short way
-// round a periodic axis); a face, those its samples cover (geometry's Place::covers). Nothing for a
+// round a periodic axis); a face, those it spans (geometry's Place::covers). Nothing for a
 // place without them.
 std::optional<std::vector<Interval>> covered(const g::Place& p, int axis, const g::CSpaceAxis& range) {
     std::vector<Interval> out;

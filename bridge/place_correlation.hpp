@@ -4,11 +4,12 @@
 //             hold at once because they cover disjoint values of that coordinate. Lines (CSEGs,
 //             divisions) and joins cover what their points span (a line's polyline is dense:
 //             boundary points a grid edge apart, a division's points at most a quarter period
-//             apart, so consecutive points span the short way round); a face what its grid samples
-//             span, widened by two grid steps (geometry::Place::covers). Coordinates are compared
-//             only when both pairs' axes for the part are the same (same range, both periodic or
-//             both bounded): a part seen over one tooth pitch in one pair and over a full turn in
-//             the other is at one of several angles for each place, which this does not follow.
+//             apart, so consecutive points span the short way round); a face what it spans, from
+//             its samples out to its bounding places (geometry::Place::covers). Coordinates are
+//             compared only when both pairs' axes for the part are the same (same range, both
+//             periodic or both bounded): a part seen over one tooth pitch in one pair and over a
+//             full turn in the other is at one of several angles for each place, which this does
+//             not follow.
 //             places_go_round(): whether some places together cover every value of a periodic
 //             axis (a coordinate kept within them that never covers some value cannot go round).
 // Ownership:  values in, values out.

@@ -56,9 +56,9 @@ struct Place {
                                          // periodic axis: points at most a quarter period apart, so
                                          // the way round is told); join: one point; face: one sample
     double extent = 0.0;                 // face: number of grid samples it covers
-    std::array<std::vector<Span>, 2> covers;  // face: per axis, the values of that coordinate its
-                                              // samples cover, each widened by two grid steps (the
-                                              // face reaches its boundary between samples)
+    std::array<std::vector<Span>, 2> covers;  // face: per axis, the values of that coordinate it
+                                              // spans: its samples' and, beyond them, its bounding
+                                              // places' (Def 34; detail/face_covers.cpp)
     bool gap = false;                    // face: 8.1.6, a gap narrower than the gap epsilon, collapsed
                                          // with the CSEGs bounding it (normals: theirs)
 };

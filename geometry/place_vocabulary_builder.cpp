@@ -284,30 +284,6 @@ std::array<std::vector<double>, 2> Builder::feature_coordinates() const {
 }  // namespace qm::geometry::detail
 
 namespace qm::geometry {
-namespace {
-
-// The values of axis k's coordinate that a face covering the grid lines marked in `rows` spans:
-// each run of lines, widened by two steps either side (a face reaches its boundary between samples).
-std::vector<Span> covered_values(const detail::FaceGrid& grid, int k, const std::vector<bool>& rows) {
-    std::vector<Span> out;
-    const auto& axis = grid.request().axes[static_cast<std::size_t>(k)];
-    const int n = grid.size(k);
-    const double wide = 2 * axis.step();
-    if (std::all_of(rows.begin(), rows.end(), [](bool x) { return x; })) return {{axis.lo, axis.hi}};
-    for (int a = 0; a < n;) {
-        if (!rows[static_cast<std::size_t>(a)]) {
-            ++a;
-            continue;
-        }
-        int b = a;
-        while (b + 1 < n && rows[static_cast<std::size_t>(b + 1)]) ++b;
-        out.push_back({grid.coordinate(k, a) - wide, grid.coordinate(k, b) + wide});
-        a = b + 1;
-    }
-    return out;
-}
-
-}  // namespace
 
 PlaceResult build_place_vocabulary(const PairOracle& oracle, const PlaceRequest& request) {
     PlaceResult out;
@@ -368,26 +344,16 @@ PlaceResult build_place_vocabulary(const PairOracle& oracle, const PlaceRequest&
                     sample[fi] = x;
                 }
             }
-    // Which sample rows and columns each face covers, for the values of each coordinate it spans
-    // (Def 34: pairs sharing a part correlate their places by these).
-    std::array<std::vector<std::vector<bool>>, 2> rows;
-    for (std::size_t k = 0; k < 2; ++k)
-        rows[k].assign(static_cast<std::size_t>(n_faces), std::vector<bool>(static_cast<std::size_t>(grid.size(static_cast<int>(k))), false));
-    for (int j = 0; j < grid.size(1); ++j)
-        for (int i = 0; i < grid.size(0); ++i)
-            if (const int f = faces.face_of_sample(i, j); f >= 0) {
-                rows[0][static_cast<std::size_t>(f)][static_cast<std::size_t>(i)] = true;
-                rows[1][static_cast<std::size_t>(f)][static_cast<std::size_t>(j)] = true;
-            }
     for (int f = 0; f < n_faces; ++f) {
         Place p;
         p.kind = PlaceKind::face;
         p.points = {sample[static_cast<std::size_t>(f)]};
         p.extent = size[static_cast<std::size_t>(f)];
-        for (std::size_t k = 0; k < 2; ++k) p.covers[k] = covered_values(grid, static_cast<int>(k), rows[k][static_cast<std::size_t>(f)]);
         face_places.push_back(b.add(std::move(p)));
     }
     detail::add_adjacency(oracle, r, b.lines, faces, face_places, out.vocabulary);
+    // A gap collapsed below keeps its face's values: the CSEGs it absorbs bound that face.
+    detail::set_face_covers(faces, face_places, out.vocabulary);
     detail::collapse_gaps(oracle, faces, face_places, request.gap_epsilon, out.vocabulary);
     if (const auto why = detail::incompleteness(request.cspace, out.vocabulary)) {
         out.status = PlaceStatus::incomplete;

@@ -117,6 +117,10 @@ private:
 void add_adjacency(const PairOracle& oracle, const CSpaceRequest& request, const std::vector<LineInfo>& lines,
                    const FaceLocator& faces, const std::vector<PlaceId>& face_places, PlaceVocabulary& vocabulary);
 
+// Def 34: each face's values of each coordinate (Place::covers), from the rows of its samples and
+// the stretches of its bounding places beside it (after add_adjacency, which names them).
+void set_face_covers(const FaceLocator& faces, const std::vector<PlaceId>& face_places, PlaceVocabulary& vocabulary);
+
 // Why the vocabulary is incomplete, if it is: a place with neither a next place nor a constraint
 // under some motion, or a place other than a face at the end of an axis without stops that leads
 // only back to itself under a motion along a bounded axis.

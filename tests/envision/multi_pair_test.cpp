@@ -130,10 +130,11 @@ TEST_CASE("envision/multi_pair: [large] geneva_detent, the pin turns the wheel a
     CHECK(held);
 }
 
-// Waits for: as above, and a face's values widened by two grid steps: wheel/detent face 47 ends at
-// FSD 31 (wheel 0.1288) yet is taken to reach 0.153, so it is combined with driver/wheel join 5
-// (wheel 0.1351), and from there no step finds a state (#842: the driver at rest while the
-// detent turns). A face's values from its bounding lines would be exact.
+// Waits for: as above: wheel/detent FSD 29 (detent 355.185 degrees, wheel 0 to 82.4) is crossed,
+// with no join, by FSDs 31, 37 and 33 (wheel 7.4, 27.5 and 34.9), which divide the strip above
+// it, and leads under detent + only to face 53 (wheel 34.8 to 82.5); so with the wheel at
+// driver/wheel join 5 (7.7 degrees) no step finds a state (#629: the driver at rest while the
+// detent turns).
 TEST_CASE("envision/multi_pair: [large] geneva_detent, the driver never stops in free space" * doctest::may_fail()) {
     const Scene s(envisioned_once("scenarios/clock/geneva_detent.def"));
     CHECK(stuck_in_free_space(s, s.object("driver"), {s.pair("driver/wheel")}).empty());
