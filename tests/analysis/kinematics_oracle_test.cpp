@@ -81,7 +81,7 @@ std::string motion_text(const Kinematics& laws, const Scene& scene, const std::v
 }
 
 // What one comparison found.
-struct Verdict {
+struct KinematicsVerdict {
     std::string diff;      // human-readable, empty when the product agrees exactly
     bool motions = false;  // a free-direction list, the chains or a chain's combinations differ
     bool summary = false;  // stable / combination_count disagree with the chains
@@ -89,9 +89,9 @@ struct Verdict {
 };
 
 // Compares the product's result for one situation with the oracle's.
-Verdict compare(const Kinematics& laws, const Scene& scene, const Situation& sit, const Expected& e,
+KinematicsVerdict compare_kinematics(const Kinematics& laws, const Scene& scene, const Situation& sit, const Expected& e,
                 const SituationResult& got) {
-    Verdict v;
+    KinematicsVerdict v;
     std::ostringstream diff;
     if (got.freedom.size() != scene.objects.size()) {
         v.motions = true;
@@ -193,7 +193,7 @@ Verdict compare(const Kinematics& laws, const Scene& scene, const Situation& sit
 // Random scenes (oracle_scenes.hpp): 1-4 objects of 1-4 surfaces, frame constraints, and per
 // situation 0-4 contacts between surfaces of different objects. No forces.
 
-Group random_group(Random& rnd, int dims, std::size_t situations) {
+Group random_kinematics_group(Random& rnd, int dims, std::size_t situations) {
     const std::size_t tn = static_cast<std::size_t>(dims), rn = dims == 3 ? 3 : 1;
     Group grp;
     grp.objects.resize(1 + rnd.below(dims == 3 ? 3 : 4));
@@ -226,7 +226,7 @@ Group random_group(Random& rnd, int dims, std::size_t situations) {
 
 // Given motions (Motion descriptors): mostly a motion the object is free to make, sometimes any
 // motion at all (then usually nothing is consistent). `scene` is the group read on its own.
-void add_given_motions(Random& rnd, Group& grp, const Scene& scene, const Kinematics& laws) {
+void add_kinematic_given_motions(Random& rnd, Group& grp, const Scene& scene, const Kinematics& laws) {
     for (std::size_t k = 0; k < grp.motions.size(); ++k) {
         if (!rnd.chance(30)) continue;
         const Freedoms f = laws.freedom(scene.situations[k]);
@@ -360,7 +360,7 @@ TEST_CASE("analysis/kinematics_oracle: the product agrees with the oracle on the
         for (std::size_t k = 0; k < s.situations.size(); ++k) {
             INFO(s.name << " situation " << k + 1);
             const Expected e = expect(laws, s, s.situations[k], 100000);
-            CHECK(compare(laws, s, s.situations[k], e, a.situations()[k]).diff == "");
+            CHECK(compare_kinematics(laws, s, s.situations[k], e, a.situations()[k]).diff == "");
         }
     }
 }
@@ -384,7 +384,7 @@ TEST_CASE("analysis/kinematics_oracle: with forces, the kinematically consistent
             CHECK(kinematic.kinematic_complete);
             const std::uint64_t selected = kinematic.combination_count();
             kinematic.chains = kinematic.kinematic;
-            const Verdict v = compare(laws, s, s.situations[k], e, kinematic);
+            const KinematicsVerdict v = compare_kinematics(laws, s, s.situations[k], e, kinematic);
             INFO(v.diff);
             CHECK_FALSE(v.motions);
             std::uint64_t count = 1;
@@ -421,9 +421,9 @@ TEST_CASE("analysis/kinematics_oracle: the product agrees with the oracle on see
         std::vector<std::size_t> numbers;
         for (std::size_t g = 0; g < per_pack; ++g) {
             for (int attempt = 0; attempt < 10; ++attempt) {
-                Group grp = random_group(rnd, dims, sits);
+                Group grp = random_kinematics_group(rnd, dims, sits);
                 const Scene bare = read_ok(render(dims, {grp}, sits, {g}));
-                add_given_motions(rnd, grp, bare, Kinematics(bare));
+                add_kinematic_given_motions(rnd, grp, bare, Kinematics(bare));
                 const Scene alone = read_ok(render(dims, {grp}, sits, {g}));
                 const Kinematics laws(alone);
                 bool over = false;
@@ -452,7 +452,7 @@ TEST_CASE("analysis/kinematics_oracle: the product agrees with the oracle on see
             contacts += sit.contacts.size();
             given += sit.motions.size();
             for (const auto& c : e.chains) combos += c.combinations.size();
-            if (!compare(laws, scene, sit, e, a.situations()[k]).exact()) {
+            if (!compare_kinematics(laws, scene, sit, e, a.situations()[k]).exact()) {
                 ++failures;
                 pack_failed = true;
             }
@@ -464,7 +464,7 @@ TEST_CASE("analysis/kinematics_oracle: the product agrees with the oracle on see
             const Kinematics alone_laws(alone);
             Analysis b = analyse_ok(alone);
             for (std::size_t k = 0; k < alone.situations.size(); ++k) {
-                const Verdict v = compare(alone_laws, alone, alone.situations[k],
+                const KinematicsVerdict v = compare_kinematics(alone_laws, alone, alone.situations[k],
                                           expect(alone_laws, alone, alone.situations[k], chain_limit), b.situations()[k]);
                 if (!v.exact()) report += "pack " + std::to_string(p) + ", situation " + std::to_string(k + 1) + ":\n" + alone_src + v.diff + "\n";
             }
@@ -501,7 +501,7 @@ TEST_CASE("analysis/kinematics_oracle: without forces a given motion selects not
     REQUIRE(e.chains.size() == 1);
     CHECK(e.chains[0].combinations.size() == 9);
     Analysis a = analyse_ok(s);
-    const Verdict v = compare(laws, s, s.situations[0], e, a.situations()[0]);
+    const KinematicsVerdict v = compare_kinematics(laws, s, s.situations[0], e, a.situations()[0]);
     INFO(v.diff);
     CHECK(v.exact());
     // The boulder motions of Figure 3.4's list, each with the block's given motion.
@@ -541,7 +541,7 @@ TEST_CASE("analysis/kinematics_oracle: a consistent given motion is never imposs
     REQUIRE(e.chains.size() == 1);
     CHECK(e.chains[0].combinations.size() == 1);
     Analysis a = analyse_ok(s);
-    const Verdict v = compare(laws, s, s.situations[0], e, a.situations()[0]);
+    const KinematicsVerdict v = compare_kinematics(laws, s, s.situations[0], e, a.situations()[0]);
     INFO(v.diff);
     CHECK(v.exact());
     CHECK(a.situations()[0].combination_count() == 1);

@@ -125,7 +125,7 @@ void check_interpretations(RandomTheory& t, const Oracle& oracle, std::mt19937& 
     REQUIRE(got == expected);
 }
 
-void check_against_oracle(RandomTheory& t, const Constraints& c, std::mt19937& rng) {
+void check_constraints_against_oracle(RandomTheory& t, const Constraints& c, std::mt19937& rng) {
     const Oracle oracle(t, c.masks);
     std::vector<EnvId> every_env;
     for (std::uint32_t m = 0; m < (1U << oracle.n); ++m) every_env.push_back(t.env_of_mask(m));
@@ -176,10 +176,10 @@ TEST_CASE("atms/at_most_one: labels, nogoods, explanations and interpretations e
         const bool every_step = seed <= 60;
         do {
             c.maybe_declare(t, 12);
-            if (every_step) check_against_oracle(t, c, rng);
+            if (every_step) check_constraints_against_oracle(t, c, rng);
         } while (t.add_next());
         c.maybe_declare(t, 50);
-        check_against_oracle(t, c, rng);
+        check_constraints_against_oracle(t, c, rng);
         ++theories;
         constraints += c.masks.size();
     }

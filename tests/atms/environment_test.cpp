@@ -10,7 +10,7 @@
 using namespace qm::atms;
 
 namespace {
-std::set<std::uint32_t> random_set(std::mt19937& rng, std::uint32_t universe) {
+std::set<std::uint32_t> random_id_set(std::mt19937& rng, std::uint32_t universe) {
     std::set<std::uint32_t> s;
     const auto n = std::uniform_int_distribution<std::uint32_t>(0, 6)(rng);
     for (std::uint32_t i = 0; i < n; ++i) s.insert(std::uniform_int_distribution<std::uint32_t>(0, universe - 1)(rng));
@@ -48,8 +48,8 @@ TEST_CASE("atms/environment: operations agree with std::set on random sets (seve
     std::mt19937 rng(7);
     for (int round = 0; round < 2000; ++round) {
         const std::uint32_t universe = round % 2 == 0 ? 10 : 200;  // one word, and several
-        const auto x = random_set(rng, universe);
-        const auto y = random_set(rng, universe);
+        const auto x = random_id_set(rng, universe);
+        const auto y = random_id_set(rng, universe);
         const Environment ex = env_of(x), ey = env_of(y);
         CHECK(ex.size() == x.size());
         CHECK((ex == ey) == (x == y));
@@ -120,8 +120,8 @@ TEST_CASE("atms/environment: no zero words at either end, so equal sets compare 
 TEST_CASE("atms/environment: windows of words: assign_words with an offset, subsets of shifted windows") {
     std::mt19937 rng(29);
     for (int round = 0; round < 2000; ++round) {
-        const auto x = random_set(rng, 400);
-        const auto y = random_set(rng, 400);
+        const auto x = random_id_set(rng, 400);
+        const auto y = random_id_set(rng, 400);
         const Environment ex = env_of(x), ey = env_of(y);
         // y's window, padded with zero words on both sides and shifted, rebuilds y.
         const std::size_t pad = static_cast<std::size_t>(round % 3);
@@ -172,8 +172,8 @@ TEST_CASE("atms/environment: SparseWords (listed words only) agree with std::set
     std::mt19937 rng(11);
     for (int round = 0; round < 4000; ++round) {
         const std::uint32_t universe = round % 3 == 0 ? 10 : round % 3 == 1 ? 300 : 5000;
-        const auto x = random_set(rng, universe);
-        const auto y = random_set(rng, universe);
+        const auto x = random_id_set(rng, universe);
+        const auto y = random_id_set(rng, universe);
         const Environment ex = env_of(x);
         const Sparse sy = sparse_of(y, rng, universe);
         CHECK(Environment::from_sparse(sy.view()) == env_of(y));

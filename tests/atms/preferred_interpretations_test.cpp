@@ -14,7 +14,7 @@ using namespace qm::atms;
 
 namespace {
 
-struct Theory {
+struct RankedTheory {
     Atms atms;
     std::vector<RankedChoiceSet> ranked;
     std::vector<std::vector<AssumptionId>> free;
@@ -22,7 +22,7 @@ struct Theory {
     EnvId base{};
 };
 
-void random_theory(std::uint32_t seed, Theory& t) {
+void random_ranked_theory(std::uint32_t seed, RankedTheory& t) {
     std::mt19937 rng(seed);
     auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
     std::vector<NodeId> nodes;
@@ -52,7 +52,7 @@ void random_theory(std::uint32_t seed, Theory& t) {
     t.base = t.atms.environment(base);
 }
 
-bool dominates(const std::vector<std::int64_t>& x, const std::vector<std::int64_t>& y) {
+bool ranks_dominate(const std::vector<std::int64_t>& x, const std::vector<std::int64_t>& y) {
     bool better = false;
     for (std::size_t i = 0; i < x.size(); ++i) {
         if (x[i] > y[i]) return false;
@@ -65,8 +65,8 @@ bool dominates(const std::vector<std::int64_t>& x, const std::vector<std::int64_
 
 TEST_CASE("atms/preferred_interpretations: agrees with the definition on random theories") {
     for (std::uint32_t seed = 0; seed < 400; ++seed) {
-        Theory t;
-        random_theory(seed, t);
+        RankedTheory t;
+        random_ranked_theory(seed, t);
         CAPTURE(seed);
         // Brute force: every interpretation of all the sets, its ranked picks' ranks.
         std::vector<std::vector<AssumptionId>> all;
@@ -86,7 +86,7 @@ TEST_CASE("atms/preferred_interpretations: agrees with the definition on random 
         std::set<std::vector<AssumptionId>> expected;
         for (std::size_t i = 0; i < interpretations.size(); ++i) {
             bool dominated = false;
-            for (std::size_t j = 0; j < interpretations.size() && !dominated; ++j) dominated = dominates(ranks[j], ranks[i]);
+            for (std::size_t j = 0; j < interpretations.size() && !dominated; ++j) dominated = ranks_dominate(ranks[j], ranks[i]);
             if (!dominated) expected.insert(interpretations[i]);
         }
         std::set<std::vector<AssumptionId>> found;

@@ -38,7 +38,7 @@ g::Mechanism cam(const std::string& y) {
     return std::move(*m);
 }
 
-std::string printed(const Diagnostics& d) {
+std::string diagnostics_text(const Diagnostics& d) {
     std::ostringstream os;
     d.print(os);
     return os.str();
@@ -65,7 +65,7 @@ TEST_CASE("bridge/pair_places: computed once, then served from the cache with th
     const auto cache = fresh_cache("served");
     Diagnostics d;
     const auto first = bridge::pair_places(m, spec, {.cache = &cache}, d);
-    REQUIRE_MESSAGE(first.has_value(), printed(d));
+    REQUIRE_MESSAGE(first.has_value(), diagnostics_text(d));
     CHECK(!first->from_cache);
     CHECK(first->name == "cam/follower");
     // Stored under the key of the pair's oracle, though none was kept.
@@ -105,7 +105,7 @@ TEST_CASE("bridge/pair_places: mechanism_places gives each pair the ids pair_pla
     const auto cache = fresh_cache("mechanism");
     Diagnostics d;
     const auto all = bridge::mechanism_places(m, {.cache = &cache, .forces = true}, d);
-    REQUIRE_MESSAGE(all.has_value(), printed(d));
+    REQUIRE_MESSAGE(all.has_value(), diagnostics_text(d));
     const auto modelled = g::kinematic_pairs(m).modelled;
     REQUIRE(all->size() == modelled.size());
     for (std::size_t k = 0; k < modelled.size(); ++k) {
@@ -125,14 +125,14 @@ TEST_CASE("bridge/pair_places: parts that overlap as drawn are refused as --emit
         const auto cache = fresh_cache("overlap");
         Diagnostics d;
         CHECK(!bridge::pair_places(m, spec, {.cache = cached ? &cache : nullptr}, d).has_value());
-        CHECK(printed(d) == printed(emitted));
+        CHECK(diagnostics_text(d) == diagnostics_text(emitted));
         Diagnostics all;
         CHECK(!bridge::mechanism_places(m, {.cache = cached ? &cache : nullptr}, all).has_value());
-        CHECK(printed(all) == printed(emitted));
+        CHECK(diagnostics_text(all) == diagnostics_text(emitted));
     }
-    CHECK(printed(emitted).find("cam.def:5:10: error: 'cam' and 'follower' overlap at this configuration by more than the contact "
+    CHECK(diagnostics_text(emitted).find("cam.def:5:10: error: 'cam' and 'follower' overlap at this configuration by more than the contact "
                                 "tolerance") != std::string::npos);
-    CHECK(printed(emitted).find("(as drawn)") != std::string::npos);
+    CHECK(diagnostics_text(emitted).find("(as drawn)") != std::string::npos);
 }
 
 TEST_CASE("bridge/pair_places: the cache folder and a pair named A--B") {

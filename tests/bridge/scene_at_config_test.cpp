@@ -32,7 +32,7 @@ std::vector<std::string> bundled_metric_scenes() {
     return out;
 }
 
-g::Mechanism read(const std::string& path) {
+g::Mechanism read_metric(const std::string& path) {
     qm::Diagnostics d;
     auto m = g::read_mechanism_file(path, d);
     std::ostringstream os;
@@ -97,7 +97,7 @@ TEST_CASE("bridge/scene_at_config: every bundled metric scene, as drawn and touc
     int scenes = 0, with_contacts = 0, with_corners = 0;
     for (const std::string& path : bundled_metric_scenes()) {
         CAPTURE(path);
-        const g::Mechanism m = read(path);
+        const g::Mechanism m = read_metric(path);
         // Every pair as drawn, and each pair alone at configurations where it touches.
         std::vector<std::pair<qm::bridge::SceneAtConfig, g::Configuration>> cases;
         cases.emplace_back(qm::bridge::SceneAtConfig(m), g::Configuration{std::vector<double>(m.parts.size(), 0.0)});
@@ -124,7 +124,7 @@ TEST_CASE("bridge/scene_at_config: every bundled metric scene, as drawn and touc
 }
 
 TEST_CASE("bridge/scene_at_config: the contacts are the geometry's, once each, between the pair's objects") {
-    const g::Mechanism m = read(std::string(QM_SOURCE_DIR) + "/scenarios/metric/escapement.def");
+    const g::Mechanism m = read_metric(std::string(QM_SOURCE_DIR) + "/scenarios/metric/escapement.def");
     qm::Diagnostics cd;
     const auto q = g::parse_configuration(m, "scape-wheel=12.0983, pallets=-1.2840", cd);
     REQUIRE(q);
@@ -151,7 +151,7 @@ TEST_CASE("bridge/scene_at_config: the contacts are the geometry's, once each, b
 }
 
 TEST_CASE("bridge/scene_at_config: SceneAtConfig takes only the pairs it is given") {
-    const g::Mechanism m = read(std::string(QM_SOURCE_DIR) + "/scenarios/metric/gear_train.def");
+    const g::Mechanism m = read_metric(std::string(QM_SOURCE_DIR) + "/scenarios/metric/gear_train.def");
     qm::Diagnostics cd;
     const auto q = g::parse_configuration(m, "gear-1=1.0875, gear-3=-0.8586", cd);
     REQUIRE(q);

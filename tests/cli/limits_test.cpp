@@ -22,15 +22,15 @@ using qm::test::qm_atms;
 
 namespace {
 const std::string dir = QM_BINARY_DIR;
-const std::string src = QM_SOURCE_DIR;
+const std::string src_dir = QM_SOURCE_DIR;
 
-std::string write(const std::string& name, const std::string& text) {
+std::string write_rules(const std::string& name, const std::string& text) {
     const std::string path = dir + "/limits_test_" + name;
     std::ofstream(path, std::ios::binary) << text;
     return path;
 }
 
-const std::string grow = write("grow.rules", "fact (n 0)\nrule grow\n  when (n ?x)\n  then (n (+ ?x 1))\n");
+const std::string grow = write_rules("grow.rules", "fact (n 0)\nrule grow\n  when (n ?x)\n  then (n (+ ?x 1))\n");
 
 std::string choices(int n) {
     std::string text;
@@ -54,7 +54,7 @@ TEST_CASE("cli/limits: the default limits stop the runaway programs") {
     CHECK(r.err == grow + ":2:1: error: fact limit 500000 reached while firing rule 'grow'; raise it with --max-facts\n");
 #endif
     // 2^40 interpretations: stopped while they are enumerated (they were once all collected first).
-    const std::string forty = write("forty.rules", choices(40));
+    const std::string forty = write_rules("forty.rules", choices(40));
     auto c = qm_atms("run " + forty + " --max-environments 20000", "limits");
     CHECK(c.status == 2);
     CHECK(c.out.empty());
@@ -63,21 +63,21 @@ TEST_CASE("cli/limits: the default limits stop the runaway programs") {
 }
 
 TEST_CASE("cli/limits: a limit that is not reached changes nothing") {
-    const std::string ten = write("ten.rules", choices(10));
+    const std::string ten = write_rules("ten.rules", choices(10));
     auto free = qm_atms("run " + ten + " --json", "limits");
     REQUIRE(free.status == 0);
     CHECK(free.out.find("\"interpretations\"") != std::string::npos);
     auto bounded = qm_atms("run " + ten + " --json --max-facts 1000 --max-environments 100000 --max-memory 2G", "limits");
     CHECK(bounded.status == 0);
     CHECK(bounded.out == free.out);
-    const std::string scene = src + "/scenarios/alex/arch.def --rules " + src + "/rules";
+    const std::string scene = src_dir + "/scenarios/alex/arch.def --rules " + src_dir + "/rules";
     auto analysed = qm_atms(scene + " --json", "limits");
     REQUIRE(analysed.status == 0);
     CHECK(qm_atms(scene + " --json --max-facts 100000 --max-environments 1000000", "limits").out == analysed.out);
 }
 
 TEST_CASE("cli/limits: a scene analysed under a tiny limit stops with exit 2 and writes nothing") {
-    const std::string scene = src + "/scenarios/alex/arch.def --rules " + src + "/rules";
+    const std::string scene = src_dir + "/scenarios/alex/arch.def --rules " + src_dir + "/rules";
     for (const std::string& extra : {std::string(" --json"), std::string(""), std::string(" --why 'Translational-Freedom (cross-bar (+ +))'")}) {
         auto f = qm_atms(scene + extra + " --max-facts 10", "limits");
         CHECK(f.status == 2);
@@ -87,7 +87,7 @@ TEST_CASE("cli/limits: a scene analysed under a tiny limit stops with exit 2 and
         auto e = qm_atms(scene + extra + " --max-environments 10", "limits");
         CHECK(e.status == 2);
         CHECK(e.out.empty());
-        CHECK(e.err.ends_with("environment limit 10 reached while analysing " + src +
+        CHECK(e.err.ends_with("environment limit 10 reached while analysing " + src_dir +
                               "/scenarios/alex/arch.def; raise it with --max-environments\n"));
     }
 }
@@ -125,7 +125,7 @@ TEST_CASE("cli/limits: a small --max-memory still bounds the process") {
 #endif
 
 TEST_CASE("cli/options: every option error names the option and what it expected") {
-    const std::string scene = src + "/scenarios/alex/arch.def";
+    const std::string scene = src_dir + "/scenarios/alex/arch.def";
     const std::vector<std::pair<std::string, std::string>> cases = {
         {"run", "no program given"},
         {"run x.rules --max-facts", "--max-facts expects a positive number, but nothing follows it"},
@@ -159,7 +159,7 @@ TEST_CASE("cli/options: every option error names the option and what it expected
 }
 
 TEST_CASE("cli/options: --situation out of range is located however it is wrong") {
-    const std::string scene = src + "/scenarios/alex/arch.def --rules " + src + "/rules";
+    const std::string scene = src_dir + "/scenarios/alex/arch.def --rules " + src_dir + "/rules";
     for (const auto& [value, found] : std::vector<std::pair<std::string, std::string>>{
              {"0", "0"}, {"-1", "-1"}, {"999", "999"}, {"abc", "'abc'"}, {"1x", "'1x'"}}) {
         auto r = qm_atms(scene + " --situation " + value, "options");
@@ -169,31 +169,31 @@ TEST_CASE("cli/options: --situation out of range is located however it is wrong"
 }
 
 TEST_CASE("cli/files: a folder or a missing file says so; a file given as the rules folder too") {
-    auto folder = qm_atms(src + "/scenarios", "files");
+    auto folder = qm_atms(src_dir + "/scenarios", "files");
     CHECK(folder.status == 2);
-    CHECK(folder.err == src + "/scenarios:1:1: error: cannot read scene file '" + src + "/scenarios': it is a directory, not a file\n");
+    CHECK(folder.err == src_dir + "/scenarios:1:1: error: cannot read scene file '" + src_dir + "/scenarios': it is a directory, not a file\n");
     auto missing = qm_atms(dir + "/no_such_scene.def", "files");
     CHECK(missing.status == 2);
     CHECK(missing.err == dir + "/no_such_scene.def:1:1: error: cannot read scene file '" + dir + "/no_such_scene.def': no such file\n");
-    const std::string scene = src + "/scenarios/alex/arch.def";
+    const std::string scene = src_dir + "/scenarios/alex/arch.def";
     auto rules_file = qm_atms(scene + " --rules " + scene, "files");
     CHECK(rules_file.status == 2);
     CHECK(rules_file.err == scene + ":1:1: error: expected a folder of .rules files (the laws), but it is a file, not a folder\n");
     auto no_rules = qm_atms(scene + " --rules " + dir + "/no_such_folder", "files");
     CHECK(no_rules.err == dir + "/no_such_folder:1:1: error: expected a folder of .rules files (the laws), but there is no such folder\n");
-    auto empty = qm_atms(scene + " --rules " + src + "/docs", "files");
-    CHECK(empty.err == src + "/docs:1:1: error: expected a folder of .rules files (the laws), but it holds none\n");
+    auto empty = qm_atms(scene + " --rules " + src_dir + "/docs", "files");
+    CHECK(empty.err == src_dir + "/docs:1:1: error: expected a folder of .rules files (the laws), but it holds none\n");
 }
 
 TEST_CASE("cli/files: a UTF-8 byte-order mark at the start of a scene, metric scene or rule file is accepted") {
-    const std::string rules = " --rules " + src + "/rules --json";
+    const std::string rules = " --rules " + src_dir + "/rules --json";
     for (const auto& [command, file, options] : {std::tuple{"", "scenarios/alex/arch.def", rules},
                                                  std::tuple{"", "scenarios/alex/block_stack.def", rules},
                                                  std::tuple{"", "scenarios/metric/cam.def", rules},
                                                  std::tuple{"run ", "scenarios/rules/queens5.rules", std::string(" --json")}}) {
         CAPTURE(file);
-        const std::string original = src + "/" + file;
-        const std::string marked = write("bom_" + original.substr(original.rfind('/') + 1), "\xEF\xBB\xBF" + qm::test::slurp(original));
+        const std::string original = src_dir + "/" + file;
+        const std::string marked = write_rules("bom_" + original.substr(original.rfind('/') + 1), "\xEF\xBB\xBF" + qm::test::slurp(original));
         auto a = qm_atms(command + original + options, "files"), b = qm_atms(command + marked + options, "files");
         REQUIRE(a.status == 0);
         CHECK(b.status == 0);

@@ -25,7 +25,7 @@ using Array = nlohmann::json::array_t;
 using Result = qm::test::Run;
 using qm::test::slurp;
 
-Result qm_atms(const std::string& args) { return qm::test::qm_atms(args, "metric_test"); }
+Result metric_run(const std::string& args) { return qm::test::qm_atms(args, "metric_test"); }
 
 
 const std::string table_top =
@@ -38,7 +38,7 @@ const std::string table_top =
 
 TEST_CASE("cli/metric_command: --emit-def writes the Alex scene at a configuration (the cam touching its follower)") {
     // The cam's top is at 0.5 + 0.2 sin(30 deg) = 0.6: the follower, drawn at 0.5, rests on it at 0.1.
-    const Result r = qm_atms("--emit-def " + metric_scene("cam.def") + " 'cam=30, follower=0.1'");
+    const Result r = metric_run("--emit-def " + metric_scene("cam.def") + " 'cam=30, follower=0.1'");
     CHECK(r.status == 0);
     CHECK(r.err.empty());
     CHECK(r.out ==
@@ -59,14 +59,14 @@ TEST_CASE("cli/metric_command: --emit-def writes the Alex scene at a configurati
           "   (Force cam (0 +) (- 0) motor)\n"
           "   (Force follower (0 -) (0 0) gravity)))\n");
     // Lifted clear of the cam there is no contact; the forces still act.
-    const Result lifted = qm_atms("--emit-def " + metric_scene("cam.def") + " 'cam=30, follower=0.2'");
+    const Result lifted = metric_run("--emit-def " + metric_scene("cam.def") + " 'cam=30, follower=0.2'");
     CHECK(lifted.status == 0);
     CHECK(count(lifted.out, "Contact") == 0);
     CHECK(count(lifted.out, "(Force ") == 2);
 }
 
 TEST_CASE("cli/metric_command: a block on a table touches at both ends of its bottom, with distinct origin directions") {
-    const Result r = qm_atms("--emit-def " + write_temp("table_top.def", table_top));
+    const Result r = metric_run("--emit-def " + write_temp("table_top.def", table_top));
     CHECK(r.status == 0);
     CHECK(r.out.find("(block-s1 (0 -) (+ +))") != std::string::npos);  // bottom-left: the pivot is up and right
     CHECK(r.out.find("(block-s1-2 (0 -) (- +))") != std::string::npos);
@@ -77,13 +77,13 @@ TEST_CASE("cli/metric_command: a block on a table touches at both ends of its bo
     CHECK(r.out.find("(slider (- -) (- 0) (- +) (0 -) (+ -) (+ 0) (+ +))") != std::string::npos);
     // Its corner resting on the table: an Alex corner between its two lower sides (Def 18); the
     // laws give it the reverse of the table's normal (3.1.1, rules/corners.rules).
-    const Result down = qm_atms("--emit-def " + write_temp("table_top.def", table_top) + " 'block=0, slider=0'");
+    const Result down = metric_run("--emit-def " + write_temp("table_top.def", table_top) + " 'block=0, slider=0'");
     CHECK(down.status == 0);
     CHECK(down.out.find("(slider-s4 (- -) (0 0))") != std::string::npos);
     CHECK(down.out.find("(slider-s1 (+ -) (0 0))") != std::string::npos);
     CHECK(down.out.find("(slider-c1 slider-s4 slider-s1 (0 0))") != std::string::npos);
     CHECK(down.out.find("(Contact table-s3 slider-c1)") != std::string::npos);
-    const Result up = qm_atms("--emit-def " + write_temp("table_top.def", table_top) + " 'slider=1'");
+    const Result up = metric_run("--emit-def " + write_temp("table_top.def", table_top) + " 'slider=1'");
     CHECK(up.out.find("(slider (- -) (- 0) (- +) (0 -) (+ -) (+ 0) (+ +))") == std::string::npos);  // off its lower limit
     CHECK(up.out.find("(slider (- -) (- 0) (- +) (0 +) (+ -) (+ 0) (+ +))") != std::string::npos);  // on its upper one
 }
@@ -93,7 +93,7 @@ TEST_CASE("cli/metric_command: corner against corner is written as two Alex corn
         "(Defmechanism tips\n"
         "  Parts ((upper (polygon (0 -0.5) (0.5 0) (0 0.5) (-0.5 0)) (at 0 0.5) (translation (0 1) (limits -1 1)))\n"
         "         (lower (polygon (0 -0.5) (0.5 0) (0 0.5) (-0.5 0)) (at 0 -0.5) (rotation))))\n";
-    const Result r = qm_atms("--emit-def " + write_temp("tips.def", tips));
+    const Result r = metric_run("--emit-def " + write_temp("tips.def", tips));
     CHECK(r.status == 0);
     CHECK(r.err.empty());
     CHECK(r.out.find("(upper-c1 upper-s4 upper-s1 (0 0))") != std::string::npos);
@@ -101,7 +101,7 @@ TEST_CASE("cli/metric_command: corner against corner is written as two Alex corn
     CHECK(r.out.find("(Contact upper-c1 lower-c3)") != std::string::npos);
     // The laws decide the contact (rules/corners.rules): the upper tip, which slides only
     // vertically, moves down only if it pushes the pivoted lower diamond round.
-    const Result a = qm_atms(write_temp("tips.def", tips) + " --json");
+    const Result a = metric_run(write_temp("tips.def", tips) + " --json");
     CHECK(a.status == 0);
     auto doc = qm::test::read_json(a.out);
     REQUIRE_FALSE(doc.is_discarded());
@@ -117,7 +117,7 @@ TEST_CASE("cli/metric_command: corner against corner is written as two Alex corn
 TEST_CASE("cli/metric_command: parts on one shaft are one Alex object; undeclared pairs are not looked at") {
     // gear-1 turned onto gear-2's teeth, and gear-3 back onto pinion-2's (gear-2 and pinion-2 stay
     // as drawn: one coordinate for the shaft).
-    const Result r = qm_atms("--emit-def " + metric_scene("gear_train.def") + " 'gear-1=1.0875, gear-3=-0.8586'");
+    const Result r = metric_run("--emit-def " + metric_scene("gear_train.def") + " 'gear-1=1.0875, gear-3=-0.8586'");
     CHECK(r.status == 0);
     CHECK(r.out.find("Individuals (gear-1 gear-2 gear-3)") != std::string::npos);  // pinion-2 rides on gear-2
     const auto group = r.out.substr(r.out.find("    (gear-2\n"), r.out.find("    (gear-3\n") - r.out.find("    (gear-2\n"));
@@ -161,28 +161,28 @@ TEST_CASE("cli/metric_command: parts that overlap as drawn are refused by every 
 }
 
 TEST_CASE("cli/metric_command: bad input is located, exit status 2") {
-    Result r = qm_atms("--emit-def " + metric_scene("cam.def") + " 'cam=30, follower=0'");
+    Result r = metric_run("--emit-def " + metric_scene("cam.def") + " 'cam=30, follower=0'");
     CHECK(r.status == 2);
     CHECK(r.err.find("cam.def:8:10: error: 'cam' and 'follower' overlap at this configuration") != std::string::npos);
     CHECK(r.err.find("    Pairs ((cam follower))\n           ^\n") != std::string::npos);
-    r = qm_atms("--emit-def " + metric_scene("cam.def") + " 'cam=30, wheel=2'");
+    r = metric_run("--emit-def " + metric_scene("cam.def") + " 'cam=30, wheel=2'");
     CHECK(r.status == 2);
     CHECK(r.err == "CONFIG:1:9: error: unknown part 'wheel'; the moving parts are cam, follower\n  cam=30, wheel=2\n          ^\n");
-    r = qm_atms("--emit-def " + metric_scene("cam.def") + " 'follower=9'");
+    r = metric_run("--emit-def " + metric_scene("cam.def") + " 'follower=9'");
     CHECK(r.status == 2);
     CHECK(r.err.find("outside its limits") != std::string::npos);
-    r = qm_atms("--emit-def " + write_temp("open.def", "(Defmechanism open Parts ((p (profile (0 0) (line 1 0) (line 1 1) (line 0 2)) (fixed))))"));
+    r = metric_run("--emit-def " + write_temp("open.def", "(Defmechanism open Parts ((p (profile (0 0) (line 1 0) (line 1 1) (line 0 2)) (fixed))))"));
     CHECK(r.status == 2);
     CHECK(r.err.find("open.def:1:67: error: part 'p': the profile is open") != std::string::npos);
-    r = qm_atms("--places " + write_temp("pairs.def", "(Defmechanism p Parts ((a (block) (rotation))) Pairs ((a b)))"));
+    r = metric_run("--places " + write_temp("pairs.def", "(Defmechanism p Parts ((a (block) (rotation))) Pairs ((a b)))"));
     CHECK(r.status == 2);
     CHECK(r.err.find("pairs.def:1:58: error: unknown part 'b'") != std::string::npos);
-    r = qm_atms("--places " + std::string(QM_BINARY_DIR) + "/no-such-file.def");
+    r = metric_run("--places " + std::string(QM_BINARY_DIR) + "/no-such-file.def");
     CHECK(r.status == 2);
     CHECK(r.err.find("cannot read metric scene file") != std::string::npos);
-    r = qm_atms("--emit-def");
+    r = metric_run("--emit-def");
     CHECK(r.status == 2);
-    const Result help = qm_atms("--help");
+    const Result help = metric_run("--help");
     CHECK(help.status == 0);
     CHECK(help.out.find("--emit-def METRIC-SCENE") != std::string::npos);
     CHECK(help.out.find("--places METRIC-SCENE") != std::string::npos);
@@ -191,31 +191,31 @@ TEST_CASE("cli/metric_command: bad input is located, exit status 2") {
 TEST_CASE("cli/metric_command: --places prints each pair's vocabulary, reuses the cache, writes JSON and SVG") {
     const std::string cache = std::string(QM_BINARY_DIR) + "/metric_test_cache";
     std::filesystem::remove_all(cache);
-    const Result first = qm_atms("--places " + metric_scene("scotch_yoke.def") + " --cache " + cache);
+    const Result first = metric_run("--places " + metric_scene("scotch_yoke.def") + " --cache " + cache);
     CHECK(first.status == 0);
     CHECK(first.out.find("mechanism scotch-yoke: 1 kinematic pair\n") == 0);
     CHECK(first.out.find("pair crank yoke (q0 = crank: rotation 0..360 degrees periodic; q1 = yoke: translation -1.4..0.2)\n") != std::string::npos);
     CHECK(first.out.find("from cache") == std::string::npos);
     CHECK(count(first.out, "\nplace ") > 10);
     CHECK(count(first.out, "(adjacent ") > 50);
-    const Result second = qm_atms("--places " + metric_scene("scotch_yoke.def") + " --cache " + cache);
+    const Result second = metric_run("--places " + metric_scene("scotch_yoke.def") + " --cache " + cache);
     CHECK(second.out.find(") from cache\n") != std::string::npos);
     // The same vocabulary, whether computed or read back.
     CHECK(second.out.substr(second.out.find("places ")) == first.out.substr(first.out.find("places ")));
-    const Result json = qm_atms("--places " + metric_scene("scotch_yoke.def") + " --json --cache " + cache);
+    const Result json = metric_run("--places " + metric_scene("scotch_yoke.def") + " --json --cache " + cache);
     CHECK(json.status == 0);
     CHECK(json.out.find("{\"schema\":\"qm-metric-places/1\",\"mechanism\":\"scotch-yoke\",\"pairs\":[{\"parts\":[\"crank\",\"yoke\"],\"from_cache\":true,"
                         "\"vocabulary\":{\"schema\":\"qm-place-vocabulary/1\"") == 0);
     CHECK(json.out.find("],\"skipped\":[],\"linkages\":[]}\n") != std::string::npos);
     const std::string svg = std::string(QM_BINARY_DIR) + "/metric_test_svg";
     std::filesystem::remove_all(svg);
-    const Result pictures = qm_atms("--places " + metric_scene("gear_train.def") + " --no-cache --svg " + svg);
+    const Result pictures = metric_run("--places " + metric_scene("gear_train.def") + " --no-cache --svg " + svg);
     CHECK(pictures.status == 0);
     CHECK(pictures.out.find("linkage gear-2 pinion-2\n") != std::string::npos);
     CHECK(slurp(svg + "/gear-1--gear-2.svg").find("<svg") != std::string::npos);
     CHECK(slurp(svg + "/pinion-2--gear-3.svg").find("<svg") != std::string::npos);
     // A declared pair that can never touch gets no configuration space (Def 20).
-    const Result far = qm_atms("--places " + write_temp("far.def", "(Defmechanism far Parts ((a (disk-cam) (rotation)) (b (disk-cam) (at 9 0) (rotation))) Pairs ((a b)))") +
+    const Result far = metric_run("--places " + write_temp("far.def", "(Defmechanism far Parts ((a (disk-cam) (rotation)) (b (disk-cam) (at 9 0) (rotation))) Pairs ((a b)))") +
                                " --no-cache");
     CHECK(far.status == 0);
     CHECK(far.out.find("no configuration space for a b: their motion envelopes do not intersect, so they never touch (Def 20)") != std::string::npos);
@@ -225,9 +225,9 @@ TEST_CASE("cli/metric_command: --places prints each pair's vocabulary, reuses th
 // rotation in degrees, as --config and --emit-def take it: a join place's point, typed back as a
 // configuration, puts the two parts in contact; the JSON keeps radians and says so per axis.
 TEST_CASE("cli/metric_command: --places prints rotations in degrees, the unit --emit-def and --config take") {
-    const Result text = qm_atms("--places " + metric_scene("scotch_yoke.def") + " --no-cache");
+    const Result text = metric_run("--places " + metric_scene("scotch_yoke.def") + " --no-cache");
     REQUIRE(text.status == 0);
-    const Result json = qm_atms("--places " + metric_scene("scotch_yoke.def") + " --no-cache --json");
+    const Result json = metric_run("--places " + metric_scene("scotch_yoke.def") + " --no-cache --json");
     REQUIRE(json.status == 0);
     CHECK(json.out.find("\"periodic\":true,\"samples\":64,\"unit\":\"radian\"}") != std::string::npos);
     CHECK(json.out.find("\"samples\":64,\"unit\":\"length\"}") != std::string::npos);
@@ -243,7 +243,7 @@ TEST_CASE("cli/metric_command: --places prints rotations in degrees, the unit --
         REQUIRE(std::regex_search(json.out, m, point));
         CHECK(std::stod(crank) == doctest::Approx(std::stod(m[1]) * 180.0 / 3.14159265358979323846).epsilon(1e-5));
         if (std::stod(crank) > 6.3) ++beyond_a_radian;
-        const Result at = qm_atms("--emit-def " + metric_scene("scotch_yoke.def") + " 'crank=" + crank + ", yoke=" + yoke + "'");
+        const Result at = metric_run("--emit-def " + metric_scene("scotch_yoke.def") + " 'crank=" + crank + ", yoke=" + yoke + "'");
         CHECK(at.status == 0);
         CHECK(at.out.find("(Contact crank-") != std::string::npos);
     }

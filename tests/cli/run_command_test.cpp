@@ -19,16 +19,16 @@
 
 namespace {
 
-using Json = nlohmann::ordered_json;  // ordered: the tests check the order of the keys
-using Array = Json::array_t;
-using Object = Json::object_t;
+using OrderedJson = nlohmann::ordered_json;  // ordered: the tests check the order of the keys
+using OrderedArray = OrderedJson::array_t;
+using OrderedObject = OrderedJson::object_t;
 using Result = qm::test::Run;
 
 // Runs in the binary folder, so that the relative paths in messages are the same in every tree.
-Result qm_atms(const std::string& args) { return qm::test::run_executable("./cli/qm-atms", args, "cli_test", {std::nullopt, QM_BINARY_DIR}); }
+Result run_cli(const std::string& args) { return qm::test::run_executable("./cli/qm-atms", args, "cli_test", {std::nullopt, QM_BINARY_DIR}); }
 
 // Written in the binary directory, named relative to it (qm_atms runs there), so messages are stable.
-std::string write_temp(const std::string& name, const std::string& text) {
+std::string write_relative(const std::string& name, const std::string& text) {
     std::ofstream(std::string(QM_BINARY_DIR) + "/" + name) << text;
     return name;
 }
@@ -38,11 +38,11 @@ std::string scenario(const std::string& name) { return std::string(QM_SOURCE_DIR
 using Env = std::set<std::string>;
 
 // An array of arrays of strings (a label, the nogoods, the interpretations), as sets.
-std::set<Env> env_list(const Json& j) {
+std::set<Env> env_list(const OrderedJson& j) {
     std::set<Env> out;
-    for (const Json& e : j.get_ref<const Array&>()) {
+    for (const OrderedJson& e : j.get_ref<const OrderedArray&>()) {
         Env env;
-        for (const Json& a : e.get_ref<const Array&>()) env.insert(a.get<std::string>());
+        for (const OrderedJson& a : e.get_ref<const OrderedArray&>()) env.insert(a.get<std::string>());
         out.insert(env);
     }
     return out;
@@ -75,19 +75,19 @@ TEST_CASE("cli/run_command: --json for N-queens equals a brute-force enumeration
     const std::map<int, std::size_t> known = {{4, 2}, {5, 10}, {6, 4}, {7, 40}, {8, 92}};  // OEIS A000170
     for (auto [n, count] : known) {
         CAPTURE(n);
-        Result r = qm_atms("run " + scenario("queens" + std::to_string(n) + ".rules") + " --json");
+        Result r = run_cli("run " + scenario("queens" + std::to_string(n) + ".rules") + " --json");
         CHECK(r.status == 0);
         CHECK(r.err.empty());
         REQUIRE(r.out.size() > 1);
         CHECK(r.out.back() == '\n');
-        const auto top = qm::test::read_json<Json>(r.out);
+        const auto top = qm::test::read_json<OrderedJson>(r.out);
         REQUIRE_FALSE(top.is_discarded());
-        REQUIRE(top.get_ref<const Object&>().size() == 3);  // the order of the keys: the exact output below
+        REQUIRE(top.get_ref<const OrderedObject&>().size() == 3);  // the order of the keys: the exact output below
 
         // Facts: every (queen r c), labelled by its own assumption, and every premise (row r).
         std::map<std::string, std::set<Env>> labels;
-        for (const Json& f : top.at("facts").get_ref<const Array&>()) {
-            REQUIRE(f.get_ref<const Object&>().size() == 2);
+        for (const OrderedJson& f : top.at("facts").get_ref<const OrderedArray&>()) {
+            REQUIRE(f.get_ref<const OrderedObject&>().size() == 2);
             labels[f.at("fact").get<std::string>()] = env_list(f.at("label"));
         }
         std::map<std::string, std::set<Env>> expected_labels;
@@ -111,21 +111,21 @@ TEST_CASE("cli/run_command: --json for N-queens equals a brute-force enumeration
 
         const std::set<Env> interpretations = env_list(top.at("interpretations"));
         std::set<Env> expected;
-        CHECK(top.at("interpretations").get_ref<const Array&>().size() == count);  // no duplicates either
+        CHECK(top.at("interpretations").get_ref<const OrderedArray&>().size() == count);  // no duplicates either
         std::vector<int> cols(static_cast<std::size_t>(n) + 1, 0);
         solutions(n, 1, cols, expected);
         CHECK(expected.size() == count);
         CHECK(interpretations == expected);
         // Deterministic: a second run prints the same bytes.
-        CHECK(qm_atms("run " + scenario("queens" + std::to_string(n) + ".rules") + " --json").out == r.out);
+        CHECK(run_cli("run " + scenario("queens" + std::to_string(n) + ".rules") + " --json").out == r.out);
     }
 }
 
 TEST_CASE("cli/run_command: --json writes a fact that holds nowhere with an empty label") {
-    std::string p = write_temp("cli_json_empty.rules",
+    std::string p = write_relative("cli_json_empty.rules",
                                "assume (open b)\nassume (closed b)\nrule door when (open ?d) (closed ?d) then (ajar ?d)\n"
                                "rule exclusive when (open ?d) (closed ?d) then false\n");
-    Result r = qm_atms("run " + p + " --json");
+    Result r = run_cli("run " + p + " --json");
     CHECK(r.status == 0);
     CHECK(r.out == "{\"facts\": [{\"fact\": \"(ajar b)\", \"label\": []}, {\"fact\": \"(closed b)\", \"label\": "
                    "[[\"(closed b)\"]]}, {\"fact\": \"(open b)\", \"label\": [[\"(open b)\"]]}], \"nogoods\": "
@@ -133,11 +133,11 @@ TEST_CASE("cli/run_command: --json writes a fact that holds nowhere with an empt
 }
 
 TEST_CASE("cli/run_command: --why prints the justification tree, or the nogoods ruling a fact out") {
-    std::string held = write_temp("cli_why_holds.rules",
+    std::string held = write_relative("cli_why_holds.rules",
                                   "fact (edge a b)\nfact (edge b c)\nassume (open b)\n\n"
                                   "rule path-1\n  when (edge ?x ?y)\n  then (path ?x ?y)\n\n"
                                   "rule path-2\n  when (path ?x ?y) (edge ?y ?z) (open ?y)\n  then (path ?x ?z)\n");
-    Result h = qm_atms("run " + held + " --why '(path a c)'");
+    Result h = run_cli("run " + held + " --why '(path a c)'");
     CHECK(h.status == 0);
     CHECK(h.out == "(path a c) holds\n"
                    "  in {(open b)}:\n"
@@ -147,26 +147,26 @@ TEST_CASE("cli/run_command: --why prints the justification tree, or the nogoods 
                    "    (path a b) <= rule path-1 at cli_why_holds.rules:5 {?x = a, ?y = b}: (edge a b)\n"
                    "    (path a c) <= rule path-2 at cli_why_holds.rules:9 {?x = a, ?y = b, ?z = c}: (path a b), "
                    "(edge b c), (open b)\n");
-    std::string out = write_temp("cli_why_out.rules",
+    std::string out = write_relative("cli_why_out.rules",
                                  "assume (open b)\nassume (closed b)\n\nrule door\n  when (open ?d) (closed ?d)\n"
                                  "  then (ajar ?d)\n\nrule exclusive\n  when (open ?d) (closed ?d)\n  then false\n");
-    Result o = qm_atms("run " + out + " --why '(ajar b)'");
+    Result o = run_cli("run " + out + " --why '(ajar b)'");
     CHECK(o.status == 0);
     CHECK(o.out == "(ajar b) is ruled out: every environment supporting it is nogood\n"
                    "  nogood {(closed b), (open b)}:\n"
                    "    (closed b) <= assumption at cli_why_out.rules:2: assume (closed b)\n"
                    "    (open b) <= assumption at cli_why_out.rules:1: assume (open b)\n"
                    "    false <= rule exclusive at cli_why_out.rules:8 {?d = b}: (open b), (closed b)\n");
-    Result none = qm_atms("run " + out + " --why '(ajar c)'");
+    Result none = run_cli("run " + out + " --why '(ajar c)'");
     CHECK(none.status == 0);
     CHECK(none.out == "(ajar c) is not a fact of this program (no rule concludes it)\n");
     // The bundled polybox: (value f 12) is excluded by both of de Kleer and Williams' conflicts.
     // The `not` conditions a firing relied on are shown after it, under its binding.
-    Result birds = qm_atms("run " + scenario("birds.rules") + " --why '(flies tweety)'");
+    Result birds = run_cli("run " + scenario("birds.rules") + " --why '(flies tweety)'");
     CHECK(birds.status == 0);
     CHECK(birds.out.find("    (flies tweety) <= rule birds-fly-unless-penguins at " + scenario("birds.rules") +
                          ":16 {?b = tweety}: (bird tweety)\n      and not (penguin tweety)\n") != std::string::npos);
-    Result poly = qm_atms("run " + scenario("polybox.rules") + " --why '(value f 12)'");
+    Result poly = run_cli("run " + scenario("polybox.rules") + " --why '(value f 12)'");
     CHECK(poly.status == 0);
     CHECK(poly.out.find("(value f 12) is ruled out") == 0);
     CHECK(poly.out.find("  nogood {(mode a1 ok), (mode m1 ok), (mode m2 ok)}:\n") != std::string::npos);
@@ -174,8 +174,8 @@ TEST_CASE("cli/run_command: --why prints the justification tree, or the nogoods 
 }
 
 TEST_CASE("cli/run_command: bad input exits 2 with located diagnostics and a caret") {
-    std::string syntax = write_temp("cli_bad_syntax.rules", "fact (p 1)\nrule r when (p ?x) then (q ?y)\nfact q\n");
-    Result r = qm_atms("run " + syntax);
+    std::string syntax = write_relative("cli_bad_syntax.rules", "fact (p 1)\nrule r when (p ?x) then (q ?y)\nfact q\n");
+    Result r = run_cli("run " + syntax);
     CHECK(r.status == 2);
     CHECK(r.out.empty());
     CHECK(r.err == "cli_bad_syntax.rules:2:28: error: variable ?y is used before it is bound\n"
@@ -184,44 +184,44 @@ TEST_CASE("cli/run_command: bad input exits 2 with located diagnostics and a car
                    "cli_bad_syntax.rules:3:6: error: expected an atom like (p ?x) but found 'q'\n"
                    "  fact q\n"
                    "       ^\n");
-    std::string negation = write_temp("cli_bad_negation.rules",
+    std::string negation = write_relative("cli_bad_negation.rules",
                                       "fact (bird opus)\nassume (penguin opus)\n"
                                       "rule flies when (bird ?b) not (penguin ?b) then (flies ?b)\n");
-    Result n = qm_atms("run " + negation);
+    Result n = run_cli("run " + negation);
     CHECK(n.status == 2);
     CHECK(n.err.find(negation + ":3:31: error: rule 'flies': cannot decide (penguin opus)") == 0);
     CHECK(n.err.find("\n  rule flies when (bird ?b) not (penguin ?b) then (flies ?b)\n"
                      "                                ^\n") != std::string::npos);
-    Result why = qm_atms("run " + scenario("queens4.rules") + " --why 'queen 1 2'");
+    Result why = run_cli("run " + scenario("queens4.rules") + " --why 'queen 1 2'");
     CHECK(why.status == 2);
     CHECK(why.err == "--why:1:1: error: expected an atom like (p ?x) but found 'queen'\n  queen 1 2\n  ^\n");
-    Result ground = qm_atms("run " + scenario("queens4.rules") + " --why '(queen ?r 2)'");
+    Result ground = run_cli("run " + scenario("queens4.rules") + " --why '(queen ?r 2)'");
     CHECK(ground.status == 2);
     CHECK(ground.err.find("--why:1:8: error: expected a constant but found the variable ?r") == 0);
-    Result missing = qm_atms("run /no/such/file.rules");
+    Result missing = run_cli("run /no/such/file.rules");
     CHECK(missing.status == 2);
     CHECK(missing.err == "/no/such/file.rules:1:1: error: cannot open rule file '/no/such/file.rules': no such file\n");
-    CHECK(qm_atms("").status == 2);  // no command at all; the options' errors: limits_test.cpp
+    CHECK(run_cli("").status == 2);  // no command at all; the options' errors: limits_test.cpp
 }
 
 namespace {
 // An object's keys, in the order read.
-std::vector<std::string> keys_of(const Json& object) {
+std::vector<std::string> keys_of(const OrderedJson& object) {
     std::vector<std::string> keys;
-    for (const auto& [key, value] : object.get_ref<const Object&>()) keys.push_back(key);
+    for (const auto& [key, value] : object.get_ref<const OrderedObject&>()) keys.push_back(key);
     return keys;
 }
 
-std::string joined(const Json& list, const char* sep) {
+std::string joined(const OrderedJson& list, const char* sep) {
     std::string out;
-    for (std::size_t i = 0; i < list.get_ref<const Array&>().size(); ++i) out += (i > 0 ? sep : "") + list.at(i).get<std::string>();
+    for (std::size_t i = 0; i < list.get_ref<const OrderedArray&>().size(); ++i) out += (i > 0 ? sep : "") + list.at(i).get<std::string>();
     return out;
 }
 }  // namespace
 
 // `run --why FACT --json`: the JSON must say exactly what the text form says.
 TEST_CASE("cli/run_command: --why with --json gives the explanation as JSON, step for step the text form") {
-    std::string held = write_temp("cli_why_json.rules",
+    std::string held = write_relative("cli_why_json.rules",
                                   "fact (edge a b)\nfact (edge b c)\nassume (open b)\nassume (shut b)\n\n"
                                   "rule a-is-start\n  when (edge ?x ?y) not (edge ?w ?x)\n  then (start ?x)\n\n"
                                   "rule path-1\n  when (edge ?x ?y)\n  then (path ?x ?y)\n\n"
@@ -231,38 +231,38 @@ TEST_CASE("cli/run_command: --why with --json gives the explanation as JSON, ste
                                   "rule exclusive\n  when (open ?d) (shut ?d)\n  then false\n");
     for (const char* fact : {"(path a c)", "(ajar b)", "(path a b)", "(start a)"}) {
         CAPTURE(fact);
-        Result text = qm_atms("run " + held + " --why '" + fact + "'");
-        Result json = qm_atms("run " + held + " --why '" + fact + "' --json");
+        Result text = run_cli("run " + held + " --why '" + fact + "'");
+        Result json = run_cli("run " + held + " --why '" + fact + "' --json");
         REQUIRE(json.status == 0);
         CHECK(json.err.empty());
-        const auto doc = qm::test::read_json<Json>(json.out);
+        const auto doc = qm::test::read_json<OrderedJson>(json.out);
         REQUIRE_FALSE(doc.is_discarded());
         REQUIRE(keys_of(doc) == std::vector<std::string>{"fact", "status", "derivations", "nogoods"});
         CHECK(doc.at("fact").get<std::string>() == fact);
         const std::string status = doc.at("status").get<std::string>();
         // Rebuild the text form from the JSON and compare with what --why prints.
         std::string rebuilt = std::string(fact) + (status == "holds" ? " holds\n" : " is ruled out: every environment supporting it is nogood\n");
-        CHECK(doc.at(status == "holds" ? "nogoods" : "derivations").get_ref<const Array&>().empty());
-        for (const Json& d : doc.at(status == "holds" ? "derivations" : "nogoods").get_ref<const Array&>()) {
+        CHECK(doc.at(status == "holds" ? "nogoods" : "derivations").get_ref<const OrderedArray&>().empty());
+        for (const OrderedJson& d : doc.at(status == "holds" ? "derivations" : "nogoods").get_ref<const OrderedArray&>()) {
             REQUIRE(keys_of(d) == std::vector<std::string>{"environment", "steps"});
             rebuilt += std::string(status == "holds" ? "  in {" : "  nogood {") + joined(d.at("environment"), ", ") + "}:\n";
-            for (const Json& step : d.at("steps").get_ref<const Array&>()) {
+            for (const OrderedJson& step : d.at("steps").get_ref<const OrderedArray&>()) {
                 REQUIRE(keys_of(step) == std::vector<std::string>{"fact", "informant", "binding", "antecedents", "not"});
                 rebuilt += "    " + step.at("fact").get<std::string>() + " <= " + step.at("informant").get<std::string>();
-                if (!step.at("binding").get_ref<const Array&>().empty()) rebuilt += " {" + joined(step.at("binding"), ", ") + "}";
-                if (!step.at("antecedents").get_ref<const Array&>().empty()) rebuilt += ": " + joined(step.at("antecedents"), ", ");
+                if (!step.at("binding").get_ref<const OrderedArray&>().empty()) rebuilt += " {" + joined(step.at("binding"), ", ") + "}";
+                if (!step.at("antecedents").get_ref<const OrderedArray&>().empty()) rebuilt += ": " + joined(step.at("antecedents"), ", ");
                 rebuilt += "\n";
-                for (const Json& absent : step.at("not").get_ref<const Array&>()) rebuilt += "      and not " + absent.get<std::string>() + "\n";
+                for (const OrderedJson& absent : step.at("not").get_ref<const OrderedArray&>()) rebuilt += "      and not " + absent.get<std::string>() + "\n";
             }
         }
         CHECK(rebuilt == text.out);
     }
-    Result held_json = qm_atms("run " + held + " --why '(path a c)' --json");
+    Result held_json = run_cli("run " + held + " --why '(path a c)' --json");
     CHECK(held_json.out.find("\"status\": \"holds\"") != std::string::npos);
     CHECK(held_json.out.find("\"environment\": [\"(open b)\"]") != std::string::npos);
     CHECK(held_json.out.find("\"environment\": [\"(shut b)\"]") != std::string::npos);
-    CHECK(qm_atms("run " + held + " --why '(ajar b)' --json").out.find("\"status\": \"ruled-out\"") != std::string::npos);
+    CHECK(run_cli("run " + held + " --why '(ajar b)' --json").out.find("\"status\": \"ruled-out\"") != std::string::npos);
     // A fact nothing concludes: status unsupported, written in canonical notation.
-    CHECK(qm_atms("run " + held + " --why '( path  c   a)' --json").out ==
+    CHECK(run_cli("run " + held + " --why '( path  c   a)' --json").out ==
           "{\"fact\": \"(path c a)\", \"status\": \"unsupported\", \"derivations\": [], \"nogoods\": []}\n");
 }

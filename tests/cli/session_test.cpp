@@ -20,8 +20,8 @@
 
 namespace {
 
-const std::string source = QM_SOURCE_DIR;
-std::string scene(const std::string& name) { return source + "/scenarios/alex/" + name; }
+const std::string source_root = QM_SOURCE_DIR;
+std::string scene(const std::string& name) { return source_root + "/scenarios/alex/" + name; }
 
 qm::test::Run session(const std::string& args, const std::string& input) { return qm::test::qm_atms(args + " -i", "session", {input, ""}); }
 

@@ -21,7 +21,7 @@ using namespace qm::engine;
 
 namespace {
 
-const char* program = R"(fact (ranked a)
+const char* ranked_program = R"(fact (ranked a)
 fact (ranked b)
 fact (object a)
 fact (object b)
@@ -56,7 +56,7 @@ std::string errors_of(const std::string& text) {
 TEST_CASE("engine/preferences: `prefer` reads, prints and passes the checker") {
     qm::Diagnostics d;
     ProgramSpec spec;
-    read_rule_text(program, "p.rules", spec, d);
+    read_rule_text(ranked_program, "p.rules", spec, d);
     CHECK(!d.has_errors());
     REQUIRE(spec.preferences.size() == 1);
     CHECK(spec.preferences[0].up_to == 5);
@@ -103,7 +103,7 @@ TEST_CASE("engine/preferences: a syntax error in `prefer` is located") {
 }
 
 TEST_CASE("engine/preferences: ranks by the rank facts holding in an environment") {
-    const auto engine = test::run_rule_text(program, "p.rules");
+    const auto engine = test::run_rule_text(ranked_program, "p.rules");
     Engine& e = *engine;
     REQUIRE(e.choice_sets().size() == 3);
     // Which set is whose, and which member stands for which direction.

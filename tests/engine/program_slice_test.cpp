@@ -14,7 +14,7 @@
 #include <set>
 #include <sstream>
 
-using namespace qm;
+using qm::Diagnostics;
 using namespace qm::engine;
 
 namespace {
@@ -40,7 +40,7 @@ std::map<std::string, std::string> outcome(const ProgramSpec& spec, const std::v
     auto program = compile_program(spec, d);
     REQUIRE(program.has_value());
     Engine e(std::move(program->program), std::move(program->values));
-    std::vector<atms::AssumptionId> assumed;
+    std::vector<qm::atms::AssumptionId> assumed;
     for (const auto& [text, assumption] : inputs) {
         const auto open = text.find(' ');
         const ValueId predicate = e.values().symbol(text.substr(1, open - 1));

@@ -9,7 +9,7 @@
 using namespace qm::engine;
 
 namespace {
-std::unique_ptr<Engine> run(const std::string& text) { return test::run_rule_text(text, "q.rules"); }
+std::unique_ptr<Engine> run_quantified(const std::string& text) { return test::run_rule_text(text, "q.rules"); }
 
 std::vector<EnvText> label_of(Engine& e, const std::string& fact) {
     for (const auto& f : make_report(e).facts)
@@ -21,7 +21,7 @@ std::vector<EnvText> label_of(Engine& e, const std::string& fact) {
 TEST_CASE("engine/matcher: a `for all` condition needs every element's fact, each an antecedent") {
     // (covered ?x) needs (mark ?x k) for every k in 1..3 with k != 2; (mark a 2) is irrelevant.
     // The marks of b arrive through a rule chain, after the covering rule was first matched.
-    auto r = run("assume (mark a 1)\nassume (mark a 3)\nfact (thing a)\nfact (thing b)\nfact (seed b)\n"
+    auto r = run_quantified("assume (mark a 1)\nassume (mark a 3)\nfact (thing a)\nfact (thing b)\nfact (seed b)\n"
                  "assume (mark c 1)\nfact (thing c)\n"
                  "rule covered when (thing ?x) [for all ?k in (range 1 3) where (!= ?k 2): (mark ?x ?k)]\n"
                  "  then (covered ?x)\n"
@@ -34,7 +34,7 @@ TEST_CASE("engine/matcher: a `for all` condition needs every element's fact, eac
 }
 
 TEST_CASE("engine/matcher: `exists` fires once per witness, with the witness's facts as antecedents") {
-    auto r = run("assume (edge a b)\nassume (edge a c)\nfact (node a)\nfact (red c)\nfact (red b)\n"
+    auto r = run_quantified("assume (edge a b)\nassume (edge a c)\nfact (node a)\nfact (red c)\nfact (red b)\n"
                  "rule has-red-neighbour when (node ?x) [exists ?y in {b c d} where (!= ?y d): (edge ?x ?y) and (red ?y)]\n"
                  "  then (touches-red ?x ?y)\n");
     Engine& e = *r;
@@ -44,7 +44,7 @@ TEST_CASE("engine/matcher: `exists` fires once per witness, with the witness's f
 }
 
 TEST_CASE("engine/engine: a `for all` consequent asserts one fact per element passing its test") {
-    auto r = run("assume (size 4)\n"
+    auto r = run_quantified("assume (size 4)\n"
                  "rule pick-two when (size ?n) then [for all ?k in (range 1 ?n) where (= (abs (- ?k 2)) 0): (chosen ?k)]\n"
                  "  (done ?n)\n");
     Engine& e = *r;
@@ -54,7 +54,7 @@ TEST_CASE("engine/engine: a `for all` consequent asserts one fact per element pa
 }
 
 TEST_CASE("engine/engine: `(= ?x TERM)` binds, and compares once bound") {
-    auto r = run("fact (n 3)\nfact (n 4)\n"
+    auto r = run_quantified("fact (n 3)\nfact (n 4)\n"
                  "rule double when (n ?a) (= ?b (+ ?a ?a)) then (twice ?a ?b)\n"
                  "rule square-is-double when (n ?a) (= (* ?a ?a) (+ ?a ?a)) then (fixed ?a)\n");
     Engine& e = *r;

@@ -18,7 +18,7 @@ using namespace qm::engine;
 
 namespace {
 
-std::unique_ptr<Engine> run(const std::string& text) {
+std::unique_ptr<Engine> run_builtins(const std::string& text) {
     return test::run_rule_text(text, "builtins.rules");
 }
 
@@ -77,7 +77,7 @@ std::string signs_of(const std::string& printed) {  // "(+ 0)" -> "+0"
 }  // namespace
 
 TEST_CASE("engine/rule_builtins: sign-sum and sign-product reproduce Tables 2.2 and 2.3") {
-    auto e = run("fact (sign (+))\nfact (sign (0))\nfact (sign (-))\nfact (sign (?))\n"
+    auto e = run_builtins("fact (sign (+))\nfact (sign (0))\nfact (sign (-))\nfact (sign (?))\n"
                  "rule tables\n  when (sign ?x) (sign ?y)\n"
                  "  then (sum ?x ?y (sign-sum ?x ?y)) (product ?x ?y (sign-product ?x ?y))\n");
     auto sums = facts(*e, "sum");
@@ -99,7 +99,7 @@ TEST_CASE("engine/rule_builtins: sign-sum and sign-product reproduce Tables 2.2 
 }
 
 TEST_CASE("engine/rule_builtins: half planes follow Definitions 12-13; an ambiguous dot product is false (7.3)") {
-    auto e = run("fact (dimension 2)\nfact (dimension 3)\n"
+    auto e = run_builtins("fact (dimension 2)\nfact (dimension 3)\n"
                  "rule directions\n  when (dimension ?n)\n  then [for all ?d in (translations ?n): (dir ?n ?d)]\n"
                  "rule half-planes\n  when (dir ?n ?x) (dir ?n ?y)\n  then (pair ?x ?y (dot-sign ?x ?y))\n"
                  "rule closed\n  when (dir ?n ?x) (dir ?n ?y) (half-plane ?x ?y)\n  then (hp ?x ?y)\n"
@@ -128,7 +128,7 @@ TEST_CASE("engine/rule_builtins: half planes follow Definitions 12-13; an ambigu
 }
 
 TEST_CASE("engine/rule_builtins: rotate-90 is the quarter turn of Definition 14 and Table 2.4 in 2-D") {
-    auto e = run("fact (dimension 2)\n"
+    auto e = run_builtins("fact (dimension 2)\n"
                  "rule directions\n  when (dimension ?n)\n  then [for all ?d in (translations ?n): (dir ?d)]\n"
                  "rule turns\n  when (dir ?x)\n"
                  "  then (turn ?x (+) (rotate-90 ?x (+))) (turn ?x (-) (rotate-90 ?x (-)))\n"
@@ -155,7 +155,7 @@ TEST_CASE("engine/rule_builtins: rotate-90 is the quarter turn of Definition 14 
 
 TEST_CASE("engine/rule_builtins: rotate-90 per axis in 3-D follows Table 2.1") {
     // Table 2.1: a positive rotation about x turns y to z, about y turns z to x, about z turns x to y.
-    auto e = run("fact (v (+ 0 0) (0 0 +))\nfact (v (0 + 0) (+ 0 0))\nfact (v (0 0 +) (0 + 0))\n"
+    auto e = run_builtins("fact (v (+ 0 0) (0 0 +))\nfact (v (0 + 0) (+ 0 0))\nfact (v (0 0 +) (0 + 0))\n"
                  "rule turn\n  when (v ?x ?r)\n  then (turned ?x ?r (rotate-90 ?x ?r))\n");
     auto turned = facts(*e, "turned");
     CHECK(turned.count({"(+ 0 0)", "(0 0 +)", "(0 + 0)"}) == 1);
@@ -164,7 +164,7 @@ TEST_CASE("engine/rule_builtins: rotate-90 per axis in 3-D follows Table 2.1") {
 }
 
 TEST_CASE("engine/rule_builtins: direction sets (Definitions 1, 4) and zero tests (Definitions 3, 6)") {
-    auto e = run("fact (dimension 2)\nfact (dimension 3)\n"
+    auto e = run_builtins("fact (dimension 2)\nfact (dimension 3)\n"
                  "rule sets\n  when (dimension ?n)\n"
                  "  then [for all ?t in (translations ?n) where (zero? ?t): (zero-t ?n ?t)]\n"
                  "       [for all ?r in (rotations ?n): (rot ?n ?r)]\n"

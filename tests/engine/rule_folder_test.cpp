@@ -11,7 +11,8 @@
 #include <set>
 #include <sstream>
 
-using namespace qm;
+using qm::Diagnostics;
+using qm::Severity;
 using namespace qm::engine;
 namespace fs = std::filesystem;
 
@@ -36,7 +37,7 @@ std::string printed(const Diagnostics& d) {
 }
 
 template <class Rules>
-std::set<std::string> rule_names(const Rules& rules) {
+std::set<std::string> folder_rule_names(const Rules& rules) {
     std::set<std::string> out;
     for (const auto& r : rules) out.insert(r.name);
     return out;
@@ -83,7 +84,7 @@ TEST_CASE("engine/rule_folder: the program keeps the spec it was compiled from, 
     REQUIRE_MESSAGE(p.has_value(), printed(d));
     CHECK(d.items().empty());
     CHECK(p->spec.rules.size() == 3);
-    CHECK(rule_names(p->compiled.program.rules) == std::set<std::string>{"chain-link", "chain-step", "loop-out"});
+    CHECK(folder_rule_names(p->compiled.program.rules) == std::set<std::string>{"chain-link", "chain-step", "loop-out"});
     CHECK(p->compiled.citations.at((dir / "chains.rules").string()) == "Definition 22");
     // The spec is what reading the files gives.
     ProgramSpec again;
@@ -122,7 +123,7 @@ TEST_CASE("engine/rule_folder: a slice compiles from the spec read to the rules 
         const LoadedProgram slice = compile_slice(*p, {"link"}, outputs);
         std::set<std::string> names;
         for (const auto& r : kept.rules) names.insert(r.name);
-        CHECK(rule_names(slice.program.rules) == names);
+        CHECK(folder_rule_names(slice.program.rules) == names);
     }
     // With no input nothing can fire.
     CHECK(compile_slice(*p, {}, {"chained"}).program.rules.empty());

@@ -38,7 +38,7 @@ struct Rule {
     std::vector<Literal> body;
 };
 
-std::string text(const std::vector<std::pair<int, int>>& facts, const std::vector<Rule>& rules) {
+std::string negation_text(const std::vector<std::pair<int, int>>& facts, const std::vector<Rule>& rules) {
     const char* vars[] = {"?x", "?y", "?z"};
     std::ostringstream out;
     for (auto [p, c] : facts) out << "fact (q" << p << " " << constants[c] << ")\n";
@@ -121,7 +121,7 @@ struct Loaded {
     qm::Diagnostics diagnostics;
 };
 
-Loaded load(const std::string& source) {
+Loaded load_negation(const std::string& source) {
     Loaded l;
     ProgramSpec spec;
     read_rule_text(source, "n.rules", spec, l.diagnostics);
@@ -161,9 +161,9 @@ TEST_CASE("engine/rule_negation: random programs: stratifiable ones are accepted
             for (int k = 0, m = pick(3); k < m; ++k) r.body.push_back({pick(predicates), true, pick(3)});
             rules.push_back(r);
         }
-        const std::string source = text(facts, rules);
+        const std::string source = negation_text(facts, rules);
         CAPTURE(source);
-        Loaded l = load(source);
+        Loaded l = load_negation(source);
         const bool expected = stratifiable(rules);
         CHECK(l.program.has_value() == expected);
         if (!expected) {

@@ -53,7 +53,7 @@ bool same(const ProgramSpec& a, const ProgramSpec& b) {
     return same_all(a.rules, b.rules) && same_all(a.facts, b.facts) && same_all(a.assumptions, b.assumptions);
 }
 
-ProgramSpec read(const std::string& text, qm::Diagnostics& d) {
+ProgramSpec read_spec(const std::string& text, qm::Diagnostics& d) {
     ProgramSpec spec;
     read_rule_text(text, "printed.rules", spec, d);
     return spec;
@@ -187,7 +187,7 @@ TEST_CASE("engine/rule_printer: every bundled rule file reads back to the same s
             read_rule_file(entry.path().string(), original, d);
             REQUIRE(!d.has_errors());
             std::string text = print_program(original);
-            ProgramSpec again = read(text, d);
+            ProgramSpec again = read_spec(text, d);
             CAPTURE(text);
             CHECK(!d.has_errors());
             CHECK(same(original, again));
@@ -204,7 +204,7 @@ TEST_CASE("engine/rule_printer: seeded random specs of every form read back to t
         std::string text = print_program(spec);
         CAPTURE(text);
         qm::Diagnostics d;
-        ProgramSpec again = read(text, d);
+        ProgramSpec again = read_spec(text, d);
         CHECK(!d.has_errors());
         CHECK(same(spec, again));
         CHECK(print_program(again) == text);
@@ -217,7 +217,7 @@ TEST_CASE("engine/rule_printer: the printed forms are the documented ones") {
     TermSpec set{TermSpec::Kind::set, "", 0, {TermSpec{TermSpec::Kind::integer, "", -3, {}, {}}, dir}, {}};
     CHECK(print_term(set) == "{-3 (+ 0 -)}");
     qm::Diagnostics d;
-    ProgramSpec p = read("rule r\n  when (a ?x) not (b ?x)\n  then [exactly one ?s in {u w}: assume (m ?x ?s)]\n", d);
+    ProgramSpec p = read_spec("rule r\n  when (a ?x) not (b ?x)\n  then [exactly one ?s in {u w}: assume (m ?x ?s)]\n", d);
     REQUIRE(!d.has_errors());
     CHECK(print_program(p) == "\nrule r\n  when (a ?x) not (b ?x)\n  then [exactly one ?s in {u w}: assume (m ?x ?s)]\n");
 }

@@ -14,13 +14,13 @@
 using namespace qm::engine;
 
 namespace {
-std::unique_ptr<Engine> engine_for(const std::string& text) { return test::engine_for(text, "limits.rules"); }
+std::unique_ptr<Engine> limited_engine(const std::string& text) { return test::engine_for(text, "limits.rules"); }
 RunOptions at_most(std::size_t steps) {
     RunOptions o;
     o.max_steps = steps;
     return o;
 }
-std::string printed(const qm::Diagnostics& d) {
+std::string diagnostics_text(const qm::Diagnostics& d) {
     std::ostringstream out;
     d.print(out);
     return out.str();
@@ -28,12 +28,12 @@ std::string printed(const qm::Diagnostics& d) {
 }  // namespace
 
 TEST_CASE("engine/run_options: a program that counts for ever stops at the limit, located at the rule") {
-    auto e = engine_for("fact (n 0)\nrule count\n  when (n ?x)\n  then (n (+ ?x 1))\n");
+    auto e = limited_engine("fact (n 0)\nrule count\n  when (n ?x)\n  then (n (+ ?x 1))\n");
     qm::Diagnostics d;
     e->run(d, at_most(1000));
     REQUIRE(d.size() == 1);
-    CHECK(printed(d).rfind("limits.rules:2:1: error: rule 'count': the run stopped here after ", 0) == 0);
-    CHECK(printed(d).find("(RunOptions::max_steps)") != std::string::npos);
+    CHECK(diagnostics_text(d).rfind("limits.rules:2:1: error: rule 'count': the run stopped here after ", 0) == 0);
+    CHECK(diagnostics_text(d).find("(RunOptions::max_steps)") != std::string::npos);
     // Each firing is one step (the new fact seeds its own match, which tries no other fact).
     CHECK(e->rule_firings() == 1000);
     CHECK(e->facts().size() == 1001);
@@ -45,17 +45,17 @@ TEST_CASE("engine/run_options: a join over many facts and a huge choice set stop
     std::string many;
     for (int i = 0; i < 200; ++i) many += "fact (k " + std::to_string(i) + ")\n";
     // 200^4 = 1.6 * 10^9 combinations, none passing the test: the matcher alone would take long.
-    auto join = engine_for(many + "rule four\n  when (k ?a) (k ?b) (k ?c) (k ?d) (< ?d 0)\n  then (never)\n");
+    auto join = limited_engine(many + "rule four\n  when (k ?a) (k ?b) (k ?c) (k ?d) (< ?d 0)\n  then (never)\n");
     qm::Diagnostics d;
     join->run(d, at_most(100000));
     REQUIRE(d.size() == 1);
-    CHECK(printed(d).rfind("limits.rules:201:1: error: rule 'four': the run stopped here", 0) == 0);
+    CHECK(diagnostics_text(d).rfind("limits.rules:201:1: error: rule 'four': the run stopped here", 0) == 0);
     // 5 * 10^9 nogoods between the pairs of 100000 assumptions: refused before any is assumed.
-    auto big = engine_for("fact (o a)\nrule wide\n  when (o ?x)\n  then [exactly one ?k in (range 1 100000): assume (k ?k)]\n");
+    auto big = limited_engine("fact (o a)\nrule wide\n  when (o ?x)\n  then [exactly one ?k in (range 1 100000): assume (k ?k)]\n");
     qm::Diagnostics b;
     big->run(b, at_most(1000000));
     REQUIRE(b.size() == 1);
-    CHECK(printed(b).rfind("limits.rules:4:8: error: rule 'wide': the run stopped here", 0) == 0);
+    CHECK(diagnostics_text(b).rfind("limits.rules:4:8: error: rule 'wide': the run stopped here", 0) == 0);
     CHECK(big->choice_sets().empty());
     CHECK(big->facts().size() == 1);
     CHECK(big->atms().minimal_nogoods().empty());

@@ -11,12 +11,12 @@
 #include <set>
 #include <string>
 
-using namespace qm;
+using qm::Diagnostics;
 using namespace qm::engine;
 
 namespace {
 
-const char* const text = R"(
+const char* const shared_text = R"(
 input (p ?x)
 input (r ?x)
 input (t ?x)
@@ -31,10 +31,10 @@ rule r3
   then (u ?x)
 )";
 
-LoadedProgram load() {
+LoadedProgram load_shared() {
     ProgramSpec spec;
     Diagnostics d;
-    read_rule_text(text, "shared.rules", spec, d);
+    read_rule_text(shared_text, "shared.rules", spec, d);
     REQUIRE(!d.has_errors());
     auto p = compile_program(spec, d);
     REQUIRE(p.has_value());
@@ -59,7 +59,7 @@ void add(Engine& e, const char* predicate, std::int64_t x) {
 }  // namespace
 
 TEST_CASE("share_program: plans and triggers") {
-    LoadedProgram p = load();
+    LoadedProgram p = load_shared();
     ValueTable values = p.values;
     const auto shared = share_program(p.program);
     REQUIRE(shared->plans.size() == 3);
@@ -82,7 +82,7 @@ TEST_CASE("share_program: plans and triggers") {
 }
 
 TEST_CASE("engines over one shared program and one shared table: as over their own copies, independent") {
-    LoadedProgram p = load();
+    LoadedProgram p = load_shared();
     ValueTable values = p.values;
     values.share();
     const auto shared = share_program(p.program);

@@ -22,10 +22,10 @@ using namespace qm::envision::testing;
 
 namespace {
 
-struct Scene {
+struct PairsScene {
     const Envisionment& e;
     const ChainEnvisionment& c;
-    explicit Scene(const Envisionment& env) : e(env), c(env.chains.at(0)) {}
+    explicit PairsScene(const Envisionment& env) : e(env), c(env.chains.at(0)) {}
 
     std::size_t pair(const std::string& name) const {  // position of pair "A/B" in the chain
         for (std::size_t k = 0; k < c.chain.pairs.size(); ++k)
@@ -47,7 +47,7 @@ struct Scene {
     std::size_t size() const { return c.states.size(); }
 };
 
-BehaviourAnswer ask(const Scene& s, const std::string& steps, const std::vector<std::string>& avoid = {}) {
+BehaviourAnswer ask_pairs(const PairsScene& s, const std::string& steps, const std::vector<std::string>& avoid = {}) {
     Diagnostics d;
     auto b = parse_behaviour(s.e, steps, "--path", avoid, d);
     REQUIRE_MESSAGE(b.has_value(), printed(d));
@@ -55,7 +55,7 @@ BehaviourAnswer ask(const Scene& s, const std::string& steps, const std::vector<
 }
 
 // One chain, every declared pair in it, and more than one pair with states in contact.
-void one_chain_of_interacting_pairs(const Scene& s, std::size_t pairs) {
+void one_chain_of_interacting_pairs(const PairsScene& s, std::size_t pairs) {
     REQUIRE(s.e.chains.size() == 1);
     CHECK(s.c.chain.pairs.size() == pairs);
     std::size_t interacting = 0;
@@ -70,7 +70,7 @@ void one_chain_of_interacting_pairs(const Scene& s, std::size_t pairs) {
 }
 
 // Terminal states in which a part moves while no pair of it touches: nothing stops it there.
-std::vector<StateId> stuck_in_free_space(const Scene& s, std::size_t part, const std::vector<std::size_t>& its_pairs) {
+std::vector<StateId> stuck_in_free_space(const PairsScene& s, std::size_t part, const std::vector<std::size_t>& its_pairs) {
     std::vector<StateId> out;
     for (const StateId t : s.c.graph.terminal) {
         bool free = s.motion(t, part) != 0;
@@ -88,11 +88,11 @@ const std::vector<std::string> turning_forward(const std::string& part, char for
 }  // namespace
 
 TEST_CASE("envision/multi_pair: pawl_ratchet, a crank rocks a lever whose pawl drives the ratchet wheel") {
-    const Scene s(envisioned_once("scenarios/clock/pawl_ratchet.def"));
+    const PairsScene s(envisioned_once("scenarios/clock/pawl_ratchet.def"));
     one_chain_of_interacting_pairs(s, 2);
     // The crank turning counter-clockwise throughout: the lever pushes the wheel clockwise on its
     // forward stroke, comes back, and pushes it clockwise again.
-    const auto a = ask(s, "lever/ratchet-wheel:contact lever=+ ratchet-wheel=- ; lever=- ; lever/ratchet-wheel:contact lever=+ ratchet-wheel=-",
+    const auto a = ask_pairs(s, "lever/ratchet-wheel:contact lever=+ ratchet-wheel=- ; lever=- ; lever/ratchet-wheel:contact lever=+ ratchet-wheel=-",
                        turning_forward("crank", '+'));
     REQUIRE(!a.path.empty());
     CHECK(path_follows_transitions(s.c, a.path));
@@ -104,18 +104,18 @@ TEST_CASE("envision/multi_pair: pawl_ratchet, a crank rocks a lever whose pawl d
 // turning), so the crank stops. Probing every cell of a division found both faces but made the
 // vocabulary depend on the grid (tests/geometry/vocabulary_stability_test.cpp).
 TEST_CASE("envision/multi_pair: pawl_ratchet, the crank never stops in free space" * doctest::may_fail()) {
-    const Scene s(envisioned_once("scenarios/clock/pawl_ratchet.def"));
+    const PairsScene s(envisioned_once("scenarios/clock/pawl_ratchet.def"));
     CHECK(stuck_in_free_space(s, s.object("crank"), {s.pair("crank/lever")}).empty());
 }
 
 TEST_CASE("envision/multi_pair: [large] geneva_detent, the pin turns the wheel a quarter turn, the detent holds it between") {
-    const Scene s(envisioned_once("scenarios/clock/geneva_detent.def"));
+    const PairsScene s(envisioned_once("scenarios/clock/geneva_detent.def"));
     one_chain_of_interacting_pairs(s, 2);
     const auto pin = s.pair("driver/wheel"), detent = s.pair("wheel/detent");
     const auto wheel = s.object("wheel");
     // The driver turning clockwise throughout: the pin in a slot turns the wheel counter-clockwise,
     // leaves it, the wheel comes to rest with the detent against it, and the pin enters again.
-    const auto a = ask(s, "driver/wheel:contact driver=- wheel=+ ; driver/wheel:free wheel/detent:contact wheel=0 ; driver/wheel:contact driver=- wheel=+",
+    const auto a = ask_pairs(s, "driver/wheel:contact driver=- wheel=+ ; driver/wheel:free wheel/detent:contact wheel=0 ; driver/wheel:contact driver=- wheel=+",
                        turning_forward("driver", '-'));
     REQUIRE(!a.path.empty());
     CHECK(path_follows_transitions(s.c, a.path));
@@ -136,16 +136,16 @@ TEST_CASE("envision/multi_pair: [large] geneva_detent, the pin turns the wheel a
 // driver/wheel join 5 (7.7 degrees) no step finds a state (#629: the driver at rest while the
 // detent turns).
 TEST_CASE("envision/multi_pair: [large] geneva_detent, the driver never stops in free space" * doctest::may_fail()) {
-    const Scene s(envisioned_once("scenarios/clock/geneva_detent.def"));
+    const PairsScene s(envisioned_once("scenarios/clock/geneva_detent.def"));
     CHECK(stuck_in_free_space(s, s.object("driver"), {s.pair("driver/wheel")}).empty());
 }
 
 TEST_CASE("envision/multi_pair: crank_latch, the slider strikes the latch, which swings and springs back to its stop") {
-    const Scene s(envisioned_once("scenarios/clock/crank_latch.def"));
+    const PairsScene s(envisioned_once("scenarios/clock/crank_latch.def"));
     one_chain_of_interacting_pairs(s, 3);
     // The crank turning counter-clockwise throughout: the latch rests on its stop, the slider
     // strikes it and pushes it aside, the latch swings back and lands on the stop again.
-    const auto a = ask(s, "latch/stop:contact slider/latch:free crank=+ latch=0 ; slider/latch:contact slider=+ latch=+ ; "
+    const auto a = ask_pairs(s, "latch/stop:contact slider/latch:free crank=+ latch=0 ; slider/latch:contact slider=+ latch=+ ; "
                           "slider/latch:free latch=- ; latch/stop:contact latch=0",
                        turning_forward("crank", '+'));
     REQUIRE(!a.path.empty());
@@ -160,18 +160,18 @@ TEST_CASE("envision/multi_pair: crank_latch, the slider strikes the latch, which
 }
 
 TEST_CASE("envision/multi_pair: crank_latch, the crank never stops while turning in free space") {
-    const Scene s(envisioned_once("scenarios/clock/crank_latch.def"));
+    const PairsScene s(envisioned_once("scenarios/clock/crank_latch.def"));
     CHECK(stuck_in_free_space(s, s.object("crank"), {s.pair("crank/slider")}).empty());
 }
 
 TEST_CASE("envision/multi_pair: [large] escapement_train, de Carle's cycle with the gear train turning through its play (9.1.5)") {
-    const Scene s(envisioned_once("scenarios/clock/escapement_train.def"));
+    const PairsScene s(envisioned_once("scenarios/clock/escapement_train.def"));
     one_chain_of_interacting_pairs(s, 3);
     // Each gear pair keeps its play (gap-epsilon 0): the band between two CSEG loops, 3 places.
     for (const auto& name : {"gear-1/gear-2", "gear-3/gear-4"})
         CHECK(s.e.pairs[s.c.chain.pairs[s.pair(name)]].vocabulary.places.size() == 3);
     const std::string P = "scape-wheel/pallets";
-    const auto a = ask(s, P + "-4 scape-wheel=- pallets=+ ; " + P + ":free scape-wheel=- ; " + P + "-57 scape-wheel=+ ; " + P +
+    const auto a = ask_pairs(s, P + "-4 scape-wheel=- pallets=+ ; " + P + ":free scape-wheel=- ; " + P + "-57 scape-wheel=+ ; " + P +
                               "-57 scape-wheel=- pallets=- ; " + P + ":free scape-wheel=- ; " + P + "-54 scape-wheel=+ ; " + P +
                               "-54 scape-wheel=- pallets=+ ; " + P + ":free scape-wheel=- ; " + P + "-4 scape-wheel=- pallets=+");
     REQUIRE(!a.path.empty());
@@ -230,7 +230,7 @@ TEST_CASE("envision/multi_pair: clock, a gear pair wrapping while the escapement
     const auto& e = envisioned_once("scenarios/clock/clock.def");
     const auto train = std::find_if(e.chains.begin(), e.chains.end(), [&](const ChainEnvisionment& c) { return c.chain.pairs.size() > 1; });
     REQUIRE(train != e.chains.end());
-    const Scene s{e};
+    const PairsScene s{e};
     REQUIRE(&s.c == &*train);
     const std::size_t wheel = s.object("scape-wheel");
     // A lap that keeps the escapement in one place cannot turn the scape wheel round: the wheel

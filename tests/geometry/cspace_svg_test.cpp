@@ -28,9 +28,9 @@ using qm::geometry::test::SvgElement;
 
 namespace {
 
-class Box final : public PairOracle {  // blocked iff q in the open box (x0,x1) x (y0,y1)
+class OpenBox final : public PairOracle {  // blocked iff q in the open box (x0,x1) x (y0,y1)
 public:
-    Box(double x0, double x1, double y0, double y1) : x0_(x0), x1_(x1), y0_(y0), y1_(y1) {}
+    OpenBox(double x0, double x1, double y0, double y1) : x0_(x0), x1_(x1), y0_(y0), y1_(y1) {}
     bool blocked(const Eigen::Vector2d& q) const override { return q[0] > x0_ && q[0] < x1_ && q[1] > y0_ && q[1] < y1_; }
     Eigen::Vector2d free_normal(const Eigen::Vector2d& q) const override {
         const double d[4] = {q[0] - x0_, x1_ - q[0], q[1] - y0_, y1_ - q[1]};
@@ -74,7 +74,7 @@ TEST_CASE("geometry/cspace_svg: the blocked region is filled from the bisected b
     // A box obstacle with sides off the grid: its filled area is the box's up to the four corner
     // cells (marching squares cuts each corner by at most half a cell); shading whole cells round
     // every blocked sample would be off by about half a cell all round.
-    const Box box(0.1013, 0.2987, 0.1511, 0.4489);
+    const OpenBox box(0.1013, 0.2987, 0.1511, 0.4489);
     const std::array<CSpaceAxis, 2> axes{CSpaceAxis{0, 1, false, 41}, CSpaceAxis{0, 1, false, 41}};
     const auto res = built(box, axes);
     const auto svg = parse_svg(picture(box, res, {640, 480, "box", true}));
@@ -256,7 +256,7 @@ TEST_CASE("geometry/cspace_svg: every division is drawn its whole length, the ri
     {
         // A box obstacle near the left of a square of translations: the FSDs from its corners
         // run to the square's sides, those to the right and up longer than half the side.
-        const Box box(0.1, 0.2, 0.15, 0.3);
+        const OpenBox box(0.1, 0.2, 0.15, 0.3);
         const std::array<CSpaceAxis, 2> axes{CSpaceAxis{0, 1, false, 41}, CSpaceAxis{0, 1, false, 41}};
         const auto res = built(box, axes);
         REQUIRE(res.vocabulary.count(PlaceKind::fsd) == 8);

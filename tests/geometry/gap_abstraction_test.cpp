@@ -40,7 +40,7 @@ PlaceRequest square(double gap_epsilon) {
     return r;
 }
 
-std::string gears(double gap_epsilon) {
+std::string gap_gears(double gap_epsilon) {
     std::ostringstream s;
     s << "(Defmechanism gp Settings ((grid 48 48) (gap-epsilon " << gap_epsilon << "))"
       << " Parts ((g1 (spur-gear (teeth 12) (pitch-radius 1) (play 0.03)) (rotation))"
@@ -50,7 +50,7 @@ std::string gears(double gap_epsilon) {
 
 PlaceVocabulary gear_places(double gap_epsilon) {
     qm::Diagnostics d;
-    const auto m = read_mechanism("gp.def", gears(gap_epsilon), d);
+    const auto m = read_mechanism("gp.def", gap_gears(gap_epsilon), d);
     REQUIRE(m);
     const auto sel = kinematic_pairs(*m);
     REQUIRE(sel.modelled.size() == 1);

@@ -13,7 +13,7 @@ using namespace qm::geometry;
 
 namespace {
 
-Mechanism read(const std::string& text) { return test::read(text, "k.def"); }
+Mechanism read_pairs(const std::string& text) { return test::read(text, "k.def"); }
 
 std::string names(const Mechanism& m, const std::vector<PairSpec>& pairs) {
     std::string out;
@@ -26,7 +26,7 @@ std::string names(const Mechanism& m, const std::vector<PairSpec>& pairs) {
 TEST_CASE("geometry/kinematic_pairs: undeclared pairs are the parts whose motion envelopes meet (Def 20)") {
     // Three disks turning about offset pivots, a fixed block and a slider. a and b can touch, c
     // is too far from both, the slider's stroke brings it to the block.
-    const auto m = read(
+    const auto m = read_pairs(
         "(Defmechanism d Parts ((a (disk-cam (radius 0.5) (eccentricity 0.3)) (rotation))"
         " (b (disk-cam (radius 0.4) (eccentricity 0.3)) (at 1.4 0) (rotation))"
         " (c (disk-cam (radius 0.2)) (at 0 5) (rotation))"
@@ -59,7 +59,7 @@ TEST_CASE("geometry/kinematic_pairs: undeclared pairs are the parts whose motion
 }
 
 TEST_CASE("geometry/kinematic_pairs: a declared pair that can never touch is skipped with its reason") {
-    const auto m = read("(Defmechanism d Parts ((a (disk-cam) (rotation)) (b (disk-cam) (at 9 0) (rotation))) Pairs ((a b)))");
+    const auto m = read_pairs("(Defmechanism d Parts ((a (disk-cam) (rotation)) (b (disk-cam) (at 9 0) (rotation))) Pairs ((a b)))");
     const auto sel = kinematic_pairs(m);
     CHECK(sel.modelled.empty());
     REQUIRE(sel.skipped.size() == 1);
@@ -70,7 +70,7 @@ TEST_CASE("geometry/kinematic_pairs: a declared pair that can never touch is ski
 TEST_CASE("geometry/kinematic_pairs: a pair's fingerprint is its oracle's, and changes with the chordal tolerance") {
     const std::string text = "(Defmechanism d Settings ((chordal-tolerance %)) Parts ((a (disk-cam (radius 0.5) (eccentricity 0.2)) (rotation))"
                              " (b (follower (width 2) (height 0.5)) (at 0 0.5) (translation (0 1) (limits -0.3 0.5)))))";
-    auto with = [&](const std::string& tolerance) { return read(std::string(text).replace(text.find('%'), 1, tolerance)); };
+    auto with = [&](const std::string& tolerance) { return read_pairs(std::string(text).replace(text.find('%'), 1, tolerance)); };
     const auto m = with("1e-4"), finer = with("1e-5");
     const auto pair = kinematic_pairs(m).modelled.at(0);
     CHECK(pair_fingerprint(m, pair) == pair_oracle(m, pair)->fingerprint());
@@ -78,7 +78,7 @@ TEST_CASE("geometry/kinematic_pairs: a pair's fingerprint is its oracle's, and c
 }
 
 TEST_CASE("geometry/kinematic_pairs: axes follow the degrees of freedom, symmetry and windows") {
-    const auto m = read(
+    const auto m = read_pairs(
         "(Defmechanism d Settings ((grid 40 30) (boundary-tolerance 1e-7))"
         " Parts ((wheel (scape-wheel (teeth 15)) (rotation)) (pallets (anchor) (at 0 1.4) (rotation))"
         " (stop (block (width 0.2) (height 0.2)) (at 1.05 0) (fixed)) (slide (follower) (at 0 1.05) (translation (0 1) (limits 0 0.5))))"
@@ -111,7 +111,7 @@ TEST_CASE("geometry/kinematic_pairs: axes follow the degrees of freedom, symmetr
 }
 
 TEST_CASE("geometry/kinematic_pairs: forces on either shaft become external divisions; they cost the wheel its period") {
-    const auto m = read(
+    const auto m = read_pairs(
         "(Defmechanism d Parts ((gear (spur-gear (teeth 12) (play 0.05)) (rotation))"
         " (pinion (spur-gear (teeth 10) (pitch-radius 0.8333333333333334) (play 0.05)) (rotation))"
         " (idler (spur-gear (teeth 8) (pitch-radius 0.6666666666666666) (addendum 0.8) (play 0.05)) (at 0 1.5) (rotation))"

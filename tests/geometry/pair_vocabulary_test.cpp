@@ -42,7 +42,7 @@ Built build(const Mechanism& m, std::size_t pair = 0) {
 
 // A relabelling-invariant summary: each place's kind, join kind, normals and concavity, and the
 // adjacencies by the kinds they connect, motion and flags.
-std::multiset<std::string> signature(const PlaceVocabulary& v) {
+std::multiset<std::string> pair_signature(const PlaceVocabulary& v) {
     std::multiset<std::string> out;
     for (const auto& p : v.places) {
         std::ostringstream s;
@@ -108,7 +108,7 @@ TEST_CASE("geometry/pair_vocabulary: FCL and the exact lines-and-arcs oracle giv
         const auto with_fcl = build_place_vocabulary(*fcl, request);
         const auto with_exact = build_place_vocabulary(exact, request);
         INFO(m.name);
-        check_same(signature(with_fcl.vocabulary), signature(with_exact.vocabulary));
+        check_same(pair_signature(with_fcl.vocabulary), pair_signature(with_exact.vocabulary));
         // Each boundary point FCL found is a configuration where the exact parts touch to within
         // the tessellation: apart by at most the chordal tolerance, or overlapping.
         const double chordal = pair_chordal_tolerance(m, sel.modelled[0]);
@@ -225,11 +225,11 @@ TEST_CASE("geometry/pair_vocabulary: a surface along an axis keeps normal 0 ther
 }
 
 TEST_CASE("geometry/pair_vocabulary: the escapement scaled 1e-3..1e3, moved, and turned by quarter turns has one vocabulary") {
-    const auto base = signature(build(read(escapement(1, 0, 0, 0))).result.vocabulary);
+    const auto base = pair_signature(build(read(escapement(1, 0, 0, 0))).result.vocabulary);
     for (const auto& [s, k, dx, dy] : std::vector<std::tuple<double, int, double, double>>{
              {1e-3, 0, 0, 0}, {1e3, 0, 0, 0}, {1, 0, 7.25, -3.5}, {1, 1, 0, 0}, {1, 2, 0, 0}, {1, 3, 2, 1}, {1e3, 1, -400, 900}}) {
         INFO("scale ", s, " quarter turns ", k, " moved ", dx, " ", dy);
-        check_same(signature(build(read(escapement(s, k, dx, dy))).result.vocabulary), base);
+        check_same(pair_signature(build(read(escapement(s, k, dx, dy))).result.vocabulary), base);
     }
 }
 
@@ -280,7 +280,7 @@ TEST_CASE("geometry/pair_vocabulary: the ratchet's place vocabulary settles as t
         INFO("grid ", n0, " x ", n1);
         const auto v = build(read(ratchet(n0, n1))).result.vocabulary;
         CHECK(v.places.size() == base.places.size());
-        check_same(signature(v), signature(base));
+        check_same(pair_signature(v), pair_signature(base));
     }
 }
 
@@ -303,5 +303,5 @@ TEST_CASE("geometry/pair_vocabulary: the escapement's place vocabulary settles a
     CHECK(base.places.size() == 49);
     const auto fine = build(read(escapement_at(256))).result.vocabulary;
     CHECK(fine.places.size() == base.places.size());
-    check_same(signature(fine), signature(base));
+    check_same(pair_signature(fine), pair_signature(base));
 }

@@ -32,7 +32,7 @@ bool same(const PlaceVocabulary& a, const PlaceVocabulary& b) {
     return true;
 }
 
-std::string slurp(const std::filesystem::path& p) {
+std::string slurp_cache(const std::filesystem::path& p) {
     std::ifstream in(p, std::ios::binary);
     std::stringstream s;
     s << in.rdbuf();
@@ -104,7 +104,7 @@ TEST_CASE("geometry/place_cache: a truncated file is never served, at any length
     const PlaceCache cache(fresh_dir("truncated"));
     REQUIRE(cache.store(f.material, f.vocabulary));
     const auto path = cache.path_for(f.material);
-    const std::string whole = slurp(path);
+    const std::string whole = slurp_cache(path);
     REQUIRE(cache.load(f.material).status == CacheStatus::hit);
     for (std::size_t n = 0; n < whole.size(); n += 1 + n / 40) {
         spit(path, whole.substr(0, n));
@@ -120,7 +120,7 @@ TEST_CASE("geometry/place_cache: a corrupted byte anywhere is never served") {
     const PlaceCache cache(fresh_dir("corrupted"));
     REQUIRE(cache.store(f.material, f.vocabulary));
     const auto path = cache.path_for(f.material);
-    const std::string whole = slurp(path);
+    const std::string whole = slurp_cache(path);
     for (std::size_t i = 0; i < whole.size(); i += 1 + i / 10) {
         for (char replacement : {'\0', '7', static_cast<char>(whole[i] ^ 0x20)}) {
             if (replacement == whole[i]) continue;
@@ -140,7 +140,7 @@ TEST_CASE("geometry/place_cache: a well-formed edit (a flipped normal, a changed
     const PlaceCache cache(fresh_dir("edited"));
     REQUIRE(cache.store(f.material, f.vocabulary));
     const auto path = cache.path_for(f.material);
-    const std::string whole = slurp(path);
+    const std::string whole = slurp_cache(path);
     // After the magic line and the key (its length, a space, the text), the body's lines: "np na",
     // then a line per place, then one per adjacency.
     const std::size_t key_at = whole.find('\n') + 1, space = whole.find(' ', key_at);
@@ -230,7 +230,7 @@ TEST_CASE("geometry/place_cache: files of both format /6s are refused as stale a
     const PlaceCache cache(fresh_dir("format6"));
     const auto path = cache.path_for(f.material);
     REQUIRE(cache.store(f.material, f.vocabulary));
-    const std::string current = slurp(path);
+    const std::string current = slurp_cache(path);
     REQUIRE(current.rfind("qm-place-cache/16\n", 0) == 0);
     const std::string body = current.substr(current.find('\n') + 1);
     const std::string unsealed = body.substr(0, body.rfind('\n', body.size() - 2) + 1);
@@ -246,7 +246,7 @@ TEST_CASE("geometry/place_cache: files of both format /6s are refused as stale a
         CHECK(rebuilt.cache_status == CacheStatus::stale);
         CHECK(rebuilt.note.find("format qm-place-cache/6") != std::string::npos);
         CHECK(same(rebuilt.vocabulary, f.vocabulary));
-        CHECK(slurp(path) == current);
+        CHECK(slurp_cache(path) == current);
         const auto again = build_or_load(f.c.exact, f.req, cache);
         CHECK(again.from_cache);
         CHECK(same(again.vocabulary, f.vocabulary));

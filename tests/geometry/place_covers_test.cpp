@@ -27,7 +27,7 @@ namespace {
 
 constexpr int density = 2;  // dense samples per grid step
 
-Mechanism load(const std::string& name) {
+Mechanism load_mechanism(const std::string& name) {
     qm::Diagnostics d;
     auto m = read_mechanism_file((std::filesystem::path(QM_SOURCE_DIR) / "scenarios/clock" / name).string(), d);
     REQUIRE(m);
@@ -357,7 +357,7 @@ struct PairCase {
 };
 
 Report check(const PairCase& c) {
-    const auto m = load(c.file);
+    const auto m = load_mechanism(c.file);
     const auto pairs = kinematic_pairs(m).modelled;
     const auto spec = std::find_if(pairs.begin(), pairs.end(), [&](const PairSpec& p) { return m.parts[p.a].name == c.a && m.parts[p.b].name == c.b; });
     REQUIRE(spec != pairs.end());

@@ -16,9 +16,9 @@ using namespace qm::geometry;
 
 namespace {
 
-class Box final : public PairOracle {  // blocked iff q in the open box (x0,x1) x (y0,y1)
+class BoxOracle final : public PairOracle {  // blocked iff q in the open box (x0,x1) x (y0,y1)
 public:
-    Box(double x0, double x1, double y0, double y1) : x0_(x0), x1_(x1), y0_(y0), y1_(y1) {}
+    BoxOracle(double x0, double x1, double y0, double y1) : x0_(x0), x1_(x1), y0_(y0), y1_(y1) {}
     bool blocked(const Eigen::Vector2d& q) const override { return q[0] > x0_ && q[0] < x1_ && q[1] > y0_ && q[1] < y1_; }
     Eigen::Vector2d free_normal(const Eigen::Vector2d& q) const override {
         const double d[4] = {q[0] - x0_, x1_ - q[0], q[1] - y0_, y1_ - q[1]};
@@ -31,9 +31,9 @@ private:
     double x0_, x1_, y0_, y1_;
 };
 
-class Band final : public PairOracle {  // blocked iff y0 < q1 < y1
+class BandOracle final : public PairOracle {  // blocked iff y0 < q1 < y1
 public:
-    Band(double y0, double y1) : y0_(y0), y1_(y1) {}
+    BandOracle(double y0, double y1) : y0_(y0), y1_(y1) {}
     bool blocked(const Eigen::Vector2d& q) const override { return q[1] > y0_ && q[1] < y1_; }
     Eigen::Vector2d free_normal(const Eigen::Vector2d& q) const override { return {0.0, q[1] < 0.5 * (y0_ + y1_) ? -1.0 : 1.0}; }
     std::string fingerprint() const override { return "band"; }
@@ -41,7 +41,7 @@ private:
     double y0_, y1_;
 };
 
-class Nothing final : public PairOracle {
+class NothingOracle final : public PairOracle {
 public:
     bool blocked(const Eigen::Vector2d&) const override { return false; }
     Eigen::Vector2d free_normal(const Eigen::Vector2d&) const override { return {0, 0}; }
@@ -50,7 +50,7 @@ public:
 
 // A relabelling-invariant summary: each place's kind, join kind, normals and concavity, plus
 // how many adjacencies connect each pair of kinds under each motion.
-std::multiset<std::string> signature(const PlaceVocabulary& v) {
+std::multiset<std::string> builder_signature(const PlaceVocabulary& v) {
     std::multiset<std::string> out;
     for (const auto& p : v.places) {
         std::ostringstream s;
@@ -69,7 +69,7 @@ std::multiset<std::string> signature(const PlaceVocabulary& v) {
     return out;
 }
 
-PlaceRequest square(double lo, double hi, bool periodic, int n = 40) {
+PlaceRequest square_request(double lo, double hi, bool periodic, int n = 40) {
     PlaceRequest r;
     r.cspace.axes = {CSpaceAxis{lo, hi, periodic, n}, CSpaceAxis{lo, hi, periodic, n}};
     return r;
@@ -84,8 +84,8 @@ bool has(const PlaceVocabulary& v, PlaceId from, PlaceKind to, QualDirection d, 
 }  // namespace
 
 TEST_CASE("geometry/place_vocabulary_builder: an all-free space is one unbounded full face") {
-    Nothing none;
-    const auto res = build_place_vocabulary(none, square(0, 1, true));
+    NothingOracle none;
+    const auto res = build_place_vocabulary(none, square_request(0, 1, true));
     REQUIRE(res.status == PlaceStatus::ok);
     REQUIRE(res.vocabulary.places.size() == 1);
     CHECK(res.vocabulary.places[0].kind == PlaceKind::face);
@@ -94,8 +94,8 @@ TEST_CASE("geometry/place_vocabulary_builder: an all-free space is one unbounded
 }
 
 TEST_CASE("geometry/place_vocabulary_builder: CSEGs spanning the space parallel to an axis") {
-    Band band(0.3, 0.6);
-    auto req = square(0, 1, true);
+    BandOracle band(0.3, 0.6);
+    auto req = square_request(0, 1, true);
     const auto res = build_place_vocabulary(band, req);
     const auto& v = res.vocabulary;
     CHECK(v.count(PlaceKind::cseg) == 2);
@@ -116,8 +116,8 @@ TEST_CASE("geometry/place_vocabulary_builder: CSEGs spanning the space parallel 
 }
 
 TEST_CASE("geometry/place_vocabulary_builder: a box obstacle has 4 CSEGs, 4 convex joins, 8 FSDs, 8 faces") {
-    Box box(0.3, 0.6, 0.4, 0.7);
-    const auto res = build_place_vocabulary(box, square(0, 1, false, 41));
+    BoxOracle box(0.3, 0.6, 0.4, 0.7);
+    const auto res = build_place_vocabulary(box, square_request(0, 1, false, 41));
     const auto& v = res.vocabulary;
     CHECK(v.count(PlaceKind::cseg) == 4);
     CHECK(v.count(PlaceKind::fsd) == 8);
@@ -164,7 +164,7 @@ TEST_CASE("geometry/place_vocabulary_builder: a concave corner is a concave join
         }
         std::string fingerprint() const override { return "ell"; }
     } ell;
-    const auto res = build_place_vocabulary(ell, square(0, 1, false, 41));
+    const auto res = build_place_vocabulary(ell, square_request(0, 1, false, 41));
     int concave = 0, convex = 0;
     for (const auto& p : res.vocabulary.places)
         if (p.kind == PlaceKind::join && p.join_kind == JoinKind::normal_change) (*p.concave ? concave : convex)++;
@@ -195,13 +195,13 @@ TEST_CASE("geometry/place_vocabulary_builder: the vocabulary does not change whe
     for (double scale : {1e-3, 1.0, 1e3})
         for (double shift : {0.0, 7.25}) {
             // Edges off the sample grid: a sample exactly on a CSEG is on either side by rounding.
-            Box base(0.31, 0.61, 0.41, 0.71);
-            Box moved(shift + scale * 0.31, shift + scale * 0.61, shift + scale * 0.41, shift + scale * 0.71);
-            auto req = square(shift, shift + scale, false, 41);
+            BoxOracle base(0.31, 0.61, 0.41, 0.71);
+            BoxOracle moved(shift + scale * 0.31, shift + scale * 0.61, shift + scale * 0.41, shift + scale * 0.71);
+            auto req = square_request(shift, shift + scale, false, 41);
             req.cspace.boundary_tolerance = 1e-9 * scale;
             INFO("scale ", scale, " shift ", shift);
-            const auto a = signature(build_place_vocabulary(moved, req).vocabulary);
-            const auto b = signature(build_place_vocabulary(base, square(0, 1, false, 41)).vocabulary);
+            const auto a = builder_signature(build_place_vocabulary(moved, req).vocabulary);
+            const auto b = builder_signature(build_place_vocabulary(base, square_request(0, 1, false, 41)).vocabulary);
             std::vector<std::string> only_a, only_b;
             std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(only_a));
             std::set_difference(b.begin(), b.end(), a.begin(), a.end(), std::back_inserter(only_b));
@@ -230,15 +230,15 @@ TEST_CASE("geometry/place_vocabulary_builder: rotating the whole scene by 90 deg
         PolygonPart a{{turn(cam)}, {PolygonDof::Kind::rotation, {0, 0}, {1, 0}}};
         PolygonPart b{{turn(follower)}, {PolygonDof::Kind::translation, {0, 0}, rot * Eigen::Vector2d(0, 1)}};
         const PolygonPairOracle oracle(a, b);
-        const auto sig = signature(build_place_vocabulary(oracle, req).vocabulary);
+        const auto sig = builder_signature(build_place_vocabulary(oracle, req).vocabulary);
         if (k == 0) first = sig;
         CHECK(sig == first);
     }
 }
 
 TEST_CASE("geometry/place_vocabulary_builder: external divisions are ignored in blocked space") {
-    Band band(0.3, 0.6);
-    auto req = square(0, 1, true);
+    BandOracle band(0.3, 0.6);
+    auto req = square_request(0, 1, true);
     req.external.push_back({0, 0.5, "gravity flips"});  // the line q0 = 0.5, along q1
     const auto v = build_place_vocabulary(band, req).vocabulary;
     std::vector<const Place*> divs;
@@ -259,8 +259,8 @@ TEST_CASE("geometry/place_vocabulary_builder: an external division free at an ax
     // limit, not at a blocked-to-free change. Mirrored bands must give the same.
     for (const auto& [y0, y1] : {std::pair{0.3, 0.6}, std::pair{0.4, 0.7}}) {
         CAPTURE(y0);
-        Band band(y0, y1);
-        auto req = square(0, 1, true);
+        BandOracle band(y0, y1);
+        auto req = square_request(0, 1, true);
         req.cspace.axes[1].periodic = false;
         req.external.push_back({0, 0.5, "torque changes sign"});
         const auto v = build_place_vocabulary(band, req).vocabulary;
@@ -292,7 +292,7 @@ TEST_CASE("geometry/place_vocabulary_builder: 8.1.6 merge epsilon absorbs a shor
         }
         std::string fingerprint() const override { return "notch"; }
     } notch;
-    auto req = square(0, 1, true, 100);
+    auto req = square_request(0, 1, true, 100);
     req.cspace.axes[1].periodic = false;
     req.cspace.axes[1].lo = 0.25;
     const auto fine = build_place_vocabulary(notch, req).vocabulary;
@@ -374,8 +374,8 @@ TEST_CASE("geometry/place_vocabulary_builder: a division through grid samples st
                 REQUIRE(b);
                 CHECK(*a != *b);
             }
-        if (n == 64) first = signature(v);
-        else CHECK(signature(v) == first);
+        if (n == 64) first = builder_signature(v);
+        else CHECK(builder_signature(v) == first);
     }
 }
 
@@ -424,8 +424,8 @@ TEST_CASE("geometry/place_vocabulary_builder: stops on two ending axes meet at t
     // A box obstacle in the middle of [0, 1] x [0, 1], both axes ending in stops: each end is a
     // stop split where the box's FSDs reach it; the four corners of the domain are limit joins
     // with both stops' normals, and every motion out of the domain from one is constrained.
-    Box box(0.31, 0.61, 0.41, 0.71);
-    auto req = square(0, 1, false, 41);
+    BoxOracle box(0.31, 0.61, 0.41, 0.71);
+    auto req = square_request(0, 1, false, 41);
     for (auto& a : req.cspace.axes) a.stops = true;
     const auto v = build_place_vocabulary(box, req).vocabulary;
     CHECK(v.count(PlaceKind::stop) == 4 * 3);  // each side cut by the two FSDs that reach it
@@ -446,20 +446,20 @@ TEST_CASE("geometry/place_vocabulary_builder: stops on two ending axes meet at t
 TEST_CASE("geometry/place_vocabulary_builder: a place without a next place or a constraint under some motion is incomplete") {
     // Every vocabulary the builder returns is complete (the box, the band, a space with stops),
     // and the check names what a broken one lacks.
-    for (const PlaceVocabulary& v : {build_place_vocabulary(Box(0.31, 0.61, 0.41, 0.71), square(0, 1, false, 41)).vocabulary,
-                                     build_place_vocabulary(Band(0.4, 0.6), square(0, 1, true)).vocabulary})
-        CHECK(!detail::incompleteness(square(0, 1, false).cspace, v));
-    PlaceVocabulary v = build_place_vocabulary(Box(0.31, 0.61, 0.41, 0.71), square(0, 1, false, 41)).vocabulary;
+    for (const PlaceVocabulary& v : {build_place_vocabulary(BoxOracle(0.31, 0.61, 0.41, 0.71), square_request(0, 1, false, 41)).vocabulary,
+                                     build_place_vocabulary(BandOracle(0.4, 0.6), square_request(0, 1, true)).vocabulary})
+        CHECK(!detail::incompleteness(square_request(0, 1, false).cspace, v));
+    PlaceVocabulary v = build_place_vocabulary(BoxOracle(0.31, 0.61, 0.41, 0.71), square_request(0, 1, false, 41)).vocabulary;
     const QualDirection up{{0, 1}};
     const auto dropped = std::find_if(v.adjacency.begin(), v.adjacency.end(), [&](const Adjacency& a) { return a.from == PlaceId{0} && a.motion == up; });
     REQUIRE(dropped != v.adjacency.end());
     v.adjacency.erase(std::remove_if(v.adjacency.begin(), v.adjacency.end(), [&](const Adjacency& a) { return a.from == PlaceId{0} && a.motion == up; }),
                       v.adjacency.end());
-    const auto why = detail::incompleteness(square(0, 1, false).cspace, v);
+    const auto why = detail::incompleteness(square_request(0, 1, false).cspace, v);
     REQUIRE(why);
     CHECK(*why == "place 0 (join) under motion (0 +) has neither a next place nor a constraint");
     // A face that leads only back to itself along an axis ending in stops: incomplete there.
-    auto stops = square(0, 1, false);
+    auto stops = square_request(0, 1, false);
     stops.cspace.axes[1].stops = true;
     PlaceVocabulary one;
     one.places.push_back(Place{});

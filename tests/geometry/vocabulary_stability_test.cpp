@@ -24,7 +24,7 @@ using namespace qm::geometry;
 
 namespace {
 
-PlaceVocabulary build(const Mechanism& m, std::size_t pair = 0, std::array<int, 2> grid = {0, 0}) {
+PlaceVocabulary build_gridded(const Mechanism& m, std::size_t pair = 0, std::array<int, 2> grid = {0, 0}) {
     const auto sel = kinematic_pairs(m);
     REQUIRE(sel.modelled.size() > pair);
     const auto oracle = pair_oracle(m, sel.modelled[pair]);
@@ -36,13 +36,13 @@ PlaceVocabulary build(const Mechanism& m, std::size_t pair = 0, std::array<int, 
     return built.vocabulary;
 }
 
-void same(const PlaceVocabulary& a, const PlaceVocabulary& b) {
+void check_same_vocabulary(const PlaceVocabulary& a, const PlaceVocabulary& b) {
     const std::string sa = vocabulary_signature(a), sb = vocabulary_signature(b);
     INFO(vocabulary_difference(sa, sb));
     CHECK(sa == sb);
 }
 
-Mechanism scene(const std::string& name) {
+Mechanism metric_scene(const std::string& name) {
     qm::Diagnostics d;
     auto m = read_mechanism_file((std::filesystem::path(QM_SOURCE_DIR) / "scenarios/metric" / name).string(), d);
     REQUIRE(m);
@@ -124,7 +124,7 @@ TEST_CASE("geometry/vocabulary_stability: a division running to a translation li
 }
 
 TEST_CASE("geometry/vocabulary_stability: the signature ignores numbering and sees every change") {
-    const auto v = build(tilted_cam(0, "0.2 1", 40));
+    const auto v = build_gridded(tilted_cam(0, "0.2 1", 40));
     // Renumber the places at random: the same signature.
     std::vector<std::uint32_t> perm(v.places.size());
     for (std::uint32_t i = 0; i < perm.size(); ++i) perm[i] = i;
@@ -184,11 +184,11 @@ TEST_CASE("geometry/vocabulary_stability: a cam against a follower on a tilted a
     // "Topology against grid and drawing", rule 1): a join at the middle of two boundary points
     // would lie up to half a cell from the extremum, and the divisions from it would depend on
     // where the columns fell.
-    const auto base = build(tilted_cam(0, "0.2 1", 40));
+    const auto base = build_gridded(tilted_cam(0, "0.2 1", 40));
     check_hand_count(base);
     for (int g : {41, 44, 47, 50, 52, 56, 64, 113, 160}) {
         INFO("grid " << g);
-        same(build(tilted_cam(0, "0.2 1", g)), base);
+        check_same_vocabulary(build_gridded(tilted_cam(0, "0.2 1", g)), base);
     }
 }
 
@@ -196,17 +196,17 @@ TEST_CASE("geometry/vocabulary_stability: a cam against a tilted follower: 18 pl
     // The follower's face turned by 20 degrees and its axis with it: the contact q1 = A sin(q0 -
     // 20 deg) + B, the same topology with the extremes off the grid's columns.
     const std::string axis = "-0.3420201433 0.9396926208";
-    const auto base = build(tilted_cam(20, axis, 40));
+    const auto base = build_gridded(tilted_cam(20, axis, 40));
     check_hand_count(base);
     for (int g : {43, 67, 113, 160}) {
         INFO("grid " << g);
-        same(build(tilted_cam(20, axis, g)), base);
+        check_same_vocabulary(build_gridded(tilted_cam(20, axis, g)), base);
     }
     const auto m = tilted_cam(20, axis, 40);
     for (const auto& [s, quarter, moved] : std::vector<std::tuple<double, int, bool>>{
              {1e-3, 1, true}, {1.0, 3, true}, {1e2, 0, false}, {1e3, 1, true}}) {
         INFO("scale " << s << " turned " << 90 * quarter << (moved ? " moved" : ""));
-        same(build(transformed(m, s, quarter * std::numbers::pi / 2, moved ? Eigen::Vector2d(3.7 * s, -1.3 * s) : Eigen::Vector2d::Zero())), base);
+        check_same_vocabulary(build_gridded(transformed(m, s, quarter * std::numbers::pi / 2, moved ? Eigen::Vector2d(3.7 * s, -1.3 * s) : Eigen::Vector2d::Zero())), base);
     }
 }
 
@@ -218,15 +218,15 @@ TEST_CASE("geometry/vocabulary_stability: the bundled cam, Scotch yoke and gear 
     };
     for (const Case& c : {Case{"cam.def", 0, {64, 160, 256}}, Case{"scotch_yoke.def", 0, {64, 129, 256}},
                           Case{"gear_train.def", 0, {48, 192}}}) {
-        const auto m = scene(c.file);
-        const auto base = build(m, c.pair);
+        const auto m = metric_scene(c.file);
+        const auto base = build_gridded(m, c.pair);
         for (std::size_t k = 1; k < c.grids.size(); ++k) {
             INFO(c.file << " at grid " << c.grids[k]);
-            same(build(m, c.pair, {c.grids[k], c.grids[k]}), base);
+            check_same_vocabulary(build_gridded(m, c.pair, {c.grids[k], c.grids[k]}), base);
         }
         for (const auto& [s, quarter] : std::vector<std::pair<double, int>>{{1e3, 2}}) {
             INFO(c.file << " scaled " << s << " turned " << 90 * quarter << " and moved");
-            same(build(transformed(m, s, quarter * std::numbers::pi / 2, Eigen::Vector2d(3.7 * s, -1.3 * s)), c.pair), base);
+            check_same_vocabulary(build_gridded(transformed(m, s, quarter * std::numbers::pi / 2, Eigen::Vector2d(3.7 * s, -1.3 * s)), c.pair), base);
         }
     }
 }
@@ -236,21 +236,21 @@ TEST_CASE("geometry/vocabulary_stability: the bundled ratchet and escapement at 
     // escapement from 160 (128 resolves its window's top CSEG but differs in one adjacency,
     // docs/ACCURACY.md) to 4 times that (512 takes seconds; 256 stands in for it here, the sweep
     // of bench/geometry/vocabulary_sweep.sh has every grid).
-    const auto ratchet = scene("ratchet.def");
-    const auto r = build(ratchet);
+    const auto ratchet = metric_scene("ratchet.def");
+    const auto r = build_gridded(ratchet);
     CHECK(r.places.size() == 77);
     for (const std::array<int, 2> g : {std::array<int, 2>{112, 448}, std::array<int, 2>{256, 1024}}) {
         INFO("ratchet at " << g[0] << " x " << g[1]);
-        same(build(ratchet, 0, g), r);
+        check_same_vocabulary(build_gridded(ratchet, 0, g), r);
     }
     for (const auto& [s, quarter] : std::vector<std::pair<double, int>>{{1e-3, 3}}) {
         INFO("ratchet scaled " << s << " turned " << 90 * quarter << " and moved");
-        same(build(transformed(ratchet, s, quarter * std::numbers::pi / 2, Eigen::Vector2d(3.7 * s, -1.3 * s))), r);
+        check_same_vocabulary(build_gridded(transformed(ratchet, s, quarter * std::numbers::pi / 2, Eigen::Vector2d(3.7 * s, -1.3 * s))), r);
     }
-    const auto escapement = scene("escapement.def");
-    const auto e = build(escapement, 0, {160, 160});
+    const auto escapement = metric_scene("escapement.def");
+    const auto e = build_gridded(escapement, 0, {160, 160});
     CHECK(e.places.size() == 49);
-    same(build(escapement, 0, {256, 256}), e);
-    const auto own = build(escapement);
-    same(build(transformed(escapement, 1e3, std::numbers::pi / 2, Eigen::Vector2d(3700, -1300))), own);
+    check_same_vocabulary(build_gridded(escapement, 0, {256, 256}), e);
+    const auto own = build_gridded(escapement);
+    check_same_vocabulary(build_gridded(transformed(escapement, 1e3, std::numbers::pi / 2, Eigen::Vector2d(3700, -1300))), own);
 }

@@ -6,7 +6,7 @@ using qm::test::Laws;
 using S = std::set<std::string>;
 
 namespace {
-const std::vector<std::string> laws{"directions.rules", "reference_frame.rules", "contact.rules",
+const std::vector<std::string> contact_laws{"directions.rules", "reference_frame.rules", "contact.rules",
                                     "contact_constraint.rules", "uniqueness_of_motion.rules"};
 const std::string block_and_table =
     "fact (dimensions 2)\nfact (rigid-body block)\nfact (rigid-body table)\n"
@@ -18,7 +18,7 @@ const std::string block_and_table =
 }  // namespace
 
 TEST_CASE("rules/contact_constraint: a fixed table blocks the downward half plane (Figure 7.5)") {
-    Laws l(laws, block_and_table + "fact (contact tb bl)\nfact (contact tb bm)\nfact (contact tb br)\n");
+    Laws l(contact_laws, block_and_table + "fact (contact tb bl)\nfact (contact tb bm)\nfact (contact tb br)\n");
     CHECK(l.all("trans-constraint") >= S{"(trans-constraint block (+ -))", "(trans-constraint block (0 -))",
                                          "(trans-constraint block (- -))"});
     CHECK_FALSE(l.holds("(trans-constraint block (+ 0))"));
@@ -32,7 +32,7 @@ TEST_CASE("rules/contact_constraint: a fixed table blocks the downward half plan
 }
 
 TEST_CASE("rules/contact_constraint: the middle of the bottom alone does not stop rotation") {
-    Laws l(laws, block_and_table + "fact (contact tb bm)\n");
+    Laws l(contact_laws, block_and_table + "fact (contact tb bm)\n");
     CHECK(l.holds("(trans-constraint block (0 -))"));
     CHECK_FALSE(l.holds("(rot-constraint block (+))"));
     CHECK_FALSE(l.holds("(rot-constraint block (-))"));
@@ -44,11 +44,11 @@ TEST_CASE("rules/contact_constraint: constraints flow up a stack, not from a fre
         "fact (surface block tm)\nfact (surface-normal tm (0 +))\nfact (origin-dir tm (0 -))\n"
         "fact (surface top um)\nfact (surface-normal um (0 -))\nfact (origin-dir um (0 +))\nfact (contact tm um)\n";
     {
-        Laws l(laws, block_and_table + upper + "fact (contact tb bm)\n");
+        Laws l(contact_laws, block_and_table + upper + "fact (contact tb bm)\n");
         CHECK(l.holds("(trans-constraint top (0 -))"));  // through the block, which the table holds
     }
     {
-        Laws l(laws, block_and_table + upper);           // the block floats: it blocks nothing
+        Laws l(contact_laws, block_and_table + upper);           // the block floats: it blocks nothing
         CHECK_FALSE(l.holds("(trans-constraint top (0 -))"));
         CHECK_FALSE(l.holds("(trans-constraint block (0 -))"));
     }
@@ -57,7 +57,7 @@ TEST_CASE("rules/contact_constraint: constraints flow up a stack, not from a fre
 TEST_CASE("rules/contact_constraint: an obstacle free to yield sideways does not block (Figure 3.2)") {
     // A wedge with a sloped underside on a fixed ramp sloping down to the right: the wedge can
     // still slide (+ -), so the block on its level top is not blocked downwards.
-    Laws l(laws,
+    Laws l(contact_laws,
            "fact (dimensions 2)\nfact (rigid-body block)\nfact (rigid-body wedge)\nfact (rigid-body ramp)\n" +
                qm::test::fixed("ramp") +
                "fact (surface ramp r)\nfact (surface-normal r (+ +))\nfact (origin-dir r (0 0))\n"

@@ -5,7 +5,7 @@ using qm::test::Laws;
 using S = std::set<std::string>;
 
 namespace {
-const std::vector<std::string> laws{"directions.rules", "reference_frame.rules", "contact.rules", "corners.rules",
+const std::vector<std::string> corner_laws{"directions.rules", "reference_frame.rules", "contact.rules", "corners.rules",
                                     "contact_constraint.rules", "uniqueness_of_motion.rules"};
 // The upper triangle's lowest corner, between its faces c (normal (+ -)) and e (normal (- -)).
 // Its blocked space is (+ +), (0 +), (- +): a face with normal (- +) (A) can touch it, one with
@@ -20,13 +20,13 @@ const std::string triangle =
 }  // namespace
 
 TEST_CASE("rules/corners: which surfaces can touch a corner (Def 25, Figure 3.3)") {
-    Laws l(laws, triangle);
+    Laws l(corner_laws, triangle);
     CHECK(l.holds("(can-contact tip a)"));
     CHECK_FALSE(l.holds("(can-contact tip b)"));
 }
 
 TEST_CASE("rules/corners: a corner on a surface takes the reverse of its normal (3.1.1)") {
-    Laws l(laws, triangle + qm::test::fixed("lower") + "fact (contact tip a)\n");
+    Laws l(corner_laws, triangle + qm::test::fixed("lower") + "fact (contact tip a)\n");
     CHECK(l.holds("(touch tip a {(+ -)})"));
     CHECK(l.holds("(touch a tip {(- +)})"));
     // The fixed lower block then blocks the triangle's corner from moving into a.
@@ -35,7 +35,7 @@ TEST_CASE("rules/corners: a corner on a surface takes the reverse of its normal 
 }
 
 TEST_CASE("rules/corners: a corner against a surface it cannot touch imposes nothing") {
-    Laws l(laws, triangle + qm::test::fixed("lower") + "fact (contact tip b)\n");
+    Laws l(corner_laws, triangle + qm::test::fixed("lower") + "fact (contact tip b)\n");
     CHECK(l.all("touch").empty());
     CHECK(l.all("trans-constraint").size() == 8);  // only the lower block's own frame constraints
 }
@@ -46,7 +46,7 @@ TEST_CASE("rules/corners: two corners constrain only where every potential conta
                             "fact (surface lower t)\nfact (surface-normal t (0 +))\nfact (origin-dir t (0 -))\n"
                             "fact (surface lower ridge)\nfact (corner lower ridge a t)\nfact (origin-dir ridge (0 -))\n"
                             "fact (contact tip ridge)\n";
-    Laws l(laws, two);
+    Laws l(corner_laws, two);
     // Each corner may touch both sides of the other (an ambiguous dot product counts as "may"):
     // tip against a and t, the ridge against c and e.
     CHECK(l.holds("(can-contact tip a)"));

@@ -6,7 +6,7 @@ using qm::test::Laws;
 using Sets = std::set<std::set<std::string>>;
 
 namespace {
-const std::vector<std::string> laws{"directions.rules", "reference_frame.rules", "contact.rules",
+const std::vector<std::string> transfer_laws{"directions.rules", "reference_frame.rules", "contact.rules",
                                     "contact_constraint.rules", "uniqueness_of_motion.rules", "motion_transfer.rules"};
 const std::string gears =
     "fact (dimensions 2)\nfact (rigid-body driver)\nfact (rigid-body follower)\n"
@@ -16,7 +16,7 @@ const std::string gears =
 }  // namespace
 
 TEST_CASE("rules/motion_transfer: turning into the other gear forces it to turn away (Figure 7.14)") {
-    Laws l(laws, gears + "fact (contact l1 d1)\n");
+    Laws l(transfer_laws, gears + "fact (contact l1 d1)\n");
     const Sets expected{{"(rot-motion driver (-))", "(rot-motion follower (-))", "(trans-motion driver (0 0))"},
                         {"(rot-motion driver (-))", "(rot-motion follower (-))", "(trans-motion follower (0 0))"},
                         {"(rot-motion driver (-))", "(rot-motion follower (0))", "(trans-motion follower (0 0))"},
@@ -29,7 +29,7 @@ TEST_CASE("rules/motion_transfer: turning into the other gear forces it to turn 
 }
 
 TEST_CASE("rules/motion_transfer: without contact nothing is pushed") {
-    Laws l(laws, gears);
+    Laws l(transfer_laws, gears);
     for (const auto& n : l.law_nogoods()) CHECK(n.size() == 1);  // only the frame's constraints
     CHECK(l.interpretations().size() == 9);
 }
@@ -37,7 +37,7 @@ TEST_CASE("rules/motion_transfer: without contact nothing is pushed") {
 TEST_CASE("rules/motion_transfer: a body pushing a free boulder leaves it the moves of Figure 3.4") {
     // The block moves right into the boulder's left face; the boulder's centre is down-right of the
     // contact. It must translate right-ish or turn clockwise.
-    Laws l(laws,
+    Laws l(transfer_laws,
            "fact (dimensions 2)\nfact (rigid-body block)\nfact (rigid-body boulder)\n"
            "fact (surface block k)\nfact (surface-normal k (+ 0))\nfact (origin-dir k (- 0))\n"
            "fact (surface boulder o)\nfact (surface-normal o (- 0))\nfact (origin-dir o (+ -))\n"

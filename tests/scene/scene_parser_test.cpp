@@ -18,7 +18,7 @@ using qm::test::printed;
 using qm::test::read_ok;
 
 std::string scenes_dir() { return std::string(QM_SOURCE_DIR) + "/scenarios/alex"; }
-Scene load(const std::string& file) { return qm::test::load_ok("scenarios/alex/" + file); }
+Scene load_alex(const std::string& file) { return qm::test::load_ok("scenarios/alex/" + file); }
 
 const Direction up{Sign::zero, Sign::plus};
 const Direction down{Sign::zero, Sign::minus};
@@ -69,7 +69,7 @@ TEST_CASE("scene/scene_parser: every bundled scene parses and checks") {
     for (const auto& e : std::filesystem::directory_iterator(scenes_dir())) {
         if (e.path().extension() != ".def") continue;
         INFO(e.path().string());
-        Scene s = load(e.path().filename().string());
+        Scene s = load_alex(e.path().filename().string());
         CHECK(!s.objects.empty());
         CHECK(!s.situations.empty());
         ++n;
@@ -78,7 +78,7 @@ TEST_CASE("scene/scene_parser: every bundled scene parses and checks") {
 }
 
 TEST_CASE("scene/scene_parser: block.def is Figure 7.2") {
-    Scene s = load("block.def");
+    Scene s = load_alex("block.def");
     CHECK(s.name == "block");
     CHECK(s.dimensions == 2);
     REQUIRE(s.objects.size() == 2);
@@ -119,7 +119,7 @@ TEST_CASE("scene/scene_parser: surface normals of the bundled scenes point out o
     for (const auto& e : std::filesystem::directory_iterator(scenes_dir())) {
         if (e.path().extension() != ".def") continue;
         INFO(e.path().string());
-        Scene s = load(e.path().filename().string());
+        Scene s = load_alex(e.path().filename().string());
         for (const auto& sit : s.situations)
             for (const auto& c : sit.contacts) {
                 const Surface& a = s.surfaces[c.first];
@@ -146,7 +146,7 @@ TEST_CASE("scene/scene_parser: surface normals of the bundled scenes point out o
 }
 
 TEST_CASE("scene/scene_parser: corner_contacts.def is Figure 3.3, with a Corners section") {
-    Scene s = load("corner_contacts.def");
+    Scene s = load_alex("corner_contacts.def");
     const ObjectId upper = *s.find_object("upper");
     const ObjectId lower = *s.find_object("lower");
     const SurfaceId tip = *s.find_surface("tip");
@@ -191,7 +191,7 @@ TEST_CASE("scene/scene_parser: corner_contacts.def is Figure 3.3, with a Corners
 }
 
 TEST_CASE("scene/scene_parser: linked_gears.def links gears A and B (Def 21)") {
-    Scene s = load("linked_gears.def");
+    Scene s = load_alex("linked_gears.def");
     REQUIRE(s.linkages.size() == 1);
     CHECK(s.linkages[0].first == *s.find_object("gear-a"));
     CHECK(s.linkages[0].second == *s.find_object("gear-b"));
@@ -208,7 +208,7 @@ TEST_CASE("scene/scene_parser: linked_gears.def links gears A and B (Def 21)") {
 }
 
 TEST_CASE("scene/scene_parser: Corners and Linkages in either notation and any section order") {
-    const Scene file = load("corner_contacts.def");
+    const Scene file = load_alex("corner_contacts.def");
     // corner_contacts.def by hand in the keyword notation, Corners before Surfaces.
     const Scene kw = read_ok(R"(Corner-Contacts 2
         Individuals : upper, lower, table
@@ -224,7 +224,7 @@ TEST_CASE("scene/scene_parser: Corners and Linkages in either notation and any s
         Situation : Contact (tip a), Contact (lower-b-l tb), Contact (lower-b-r tb)
         Situation : Contact (tip left-corner), Contact (lower-b-l tb), Contact (lower-b-r tb))");
     CHECK(kw == file);
-    const Scene gears = load("linked_gears.def");
+    const Scene gears = load_alex("linked_gears.def");
     std::string text = print_scene_keywords(gears);
     // The keyword form of the section, with the pair reversed: a linkage is read as written.
     const Scene linked = read_ok("l 2 Individuals : a, b, c Linkages : (b a), (B c)");
@@ -241,7 +241,7 @@ TEST_CASE("scene/scene_parser: Corners and Linkages in either notation and any s
 }
 
 TEST_CASE("scene/scene_parser: gears.def (keyword notation) is Figure 7.12") {
-    Scene s = load("gears.def");
+    Scene s = load_alex("gears.def");
     CHECK(s.name == "gears");
     REQUIRE(s.objects.size() == 2);
     CHECK(s.objects[ObjectId{0}].name == "driver");
@@ -257,7 +257,7 @@ TEST_CASE("scene/scene_parser: gears.def (keyword notation) is Figure 7.12") {
 }
 
 TEST_CASE("scene/scene_parser: recoil_escapement.def gives the pallet (+) in its second situation") {
-    Scene s = load("recoil_escapement.def");
+    Scene s = load_alex("recoil_escapement.def");
     REQUIRE(s.situations.size() == 2);
     CHECK(s.situations[0].motions.empty());
     REQUIRE(s.situations[1].motions.size() == 1);
@@ -269,7 +269,7 @@ TEST_CASE("scene/scene_parser: recoil_escapement.def gives the pallet (+) in its
 }
 
 TEST_CASE("scene/scene_parser: explicit causes are shared by name; lever.def names its cause") {
-    Scene lever = load("lever.def");
+    Scene lever = load_alex("lever.def");
     REQUIRE(lever.forces.size() == 1);
     CHECK(lever.causes[lever.forces[0].cause].name == "hand");
     CHECK(lever.causes[lever.forces[0].cause].is_explicit);
@@ -285,7 +285,7 @@ TEST_CASE("scene/scene_parser: explicit causes are shared by name; lever.def nam
 }
 
 TEST_CASE("scene/scene_parser: block_3d.def has 3-D translations and rotation triples") {
-    Scene s = load("block_3d.def");
+    Scene s = load_alex("block_3d.def");
     CHECK(s.dimensions == 3);
     CHECK(s.rotation_arity() == 3);
     const ObjectId table = *s.find_object("table");
@@ -298,7 +298,7 @@ TEST_CASE("scene/scene_parser: block_3d.def has 3-D translations and rotation tr
 
 TEST_CASE("scene/scene_parser: both notations give the same Scene") {
     // Figure 7.12 written by hand in the s-expression notation must equal gears.def.
-    const Scene kw = load("gears.def");
+    const Scene kw = load_alex("gears.def");
     const Scene sx = read_ok(R"((defscenario 2 GEARS
         individuals (driver follower)
         descriptions ((rigid-ob driver) (rigid-ob follower))
@@ -327,7 +327,7 @@ TEST_CASE("scene/scene_parser: keyword notation details") {
 }
 
 TEST_CASE("scene/scene_parser: --given motions") {
-    const Scene s = load("recoil_escapement.def");
+    const Scene s = load_alex("recoil_escapement.def");
     qm::Diagnostics diags;
     auto m = parse_given(s, "pallet (0 0) (+)", diags);
     REQUIRE(m.has_value());
@@ -353,7 +353,7 @@ TEST_CASE("scene/scene_parser: --given motions") {
 }
 
 TEST_CASE("scene/scene_parser: query facts") {
-    const Scene s = load("gears.def");
+    const Scene s = load_alex("gears.def");
     using K = QueryFact::Kind;
     auto ok = [&](const std::string& text) {
         qm::Diagnostics d;
@@ -410,7 +410,7 @@ TEST_CASE("scene/scene_parser: never throws, whatever the input; syntax errors n
     std::vector<std::string> texts;
     for (const char* file : {"block.def", "gears.def", "corner_contacts.def", "linked_gears.def"}) {
         texts.push_back(qm::test::slurp(scenes_dir() + "/" + file));
-        const Scene s = load(file);
+        const Scene s = load_alex(file);
         texts.push_back(print_scene_keywords(s));
     }
     // The thesis' own spellings (tests/scene/figures/): figure headers, bare constraint lists,
