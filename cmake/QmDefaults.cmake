@@ -113,6 +113,13 @@ endfunction()
 # <module>_<file>, selecting its test cases by source file (one link per module, not per file: a
 # sanitized link is slow). SLOW files are started first (ctest COST),
 # so that none is left running alone at the end of a parallel run.
+# The files are compiled a batch to a translation unit (QM_UNITY_TESTS, CMake's unity build), so that
+# doctest and the module's headers are parsed, and their inline code compiled, once a batch instead of
+# once a file. The files of a batch share one scope, and which files share a batch changes as files
+# are added: a name a test file defines at file scope (in its anonymous namespace too) must be one no
+# other test file of the module defines, even with other parameters (a call could silently pick the
+# other file's overload), and a using-directive reaches the files after it. ctest still selects by
+# file: doctest records each test case's __FILE__, which is the included file's own path.
 # A LARGE file's test cases named "[large]" (the largest envisionments) are registered apart, as
 # <module>_<file>_large with the ctest label `large`, which the sanitizer tree of .ci/run leaves out:
 # the same code runs there on the smaller mechanisms. A selection that finds no test case fails
@@ -126,6 +133,9 @@ function(qm_module_tests module)
   target_compile_definitions(${exe} PRIVATE QM_ENABLE_ASSERTS=1
     QM_SOURCE_DIR="${CMAKE_SOURCE_DIR}" QM_BINARY_DIR="${CMAKE_BINARY_DIR}")
   qm_defaults(${exe})
+  if(QM_UNITY_TESTS)
+    set_target_properties(${exe} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${QM_UNITY_TESTS_BATCH})
+  endif()
   foreach(t ${tests})
     get_filename_component(stem ${t} NAME_WE)
     set(name ${module}_${stem})
