@@ -111,7 +111,7 @@ endfunction()
 # tests/<module>/*_test.cpp (one test file per header) are linked into one doctest executable,
 # <module>_tests, which run alone runs them all; ctest runs each file as its own entry,
 # <module>_<file>, selecting its test cases by source file (one link per module, not per file: a
-# sanitized link is slow). SLOW files are started first (ctest COST),
+# sanitized link is slow). SLOW files, and their LARGE entries, are started first (ctest COST),
 # so that none is left running alone at the end of a parallel run.
 # The files are compiled a batch to a translation unit (QM_UNITY_TESTS, CMake's unity build), so that
 # doctest and the module's headers are parsed, and their inline code compiled, once a batch instead of
@@ -149,6 +149,9 @@ function(qm_module_tests module)
     endif()
     if(stem IN_LIST T_SLOW)
       set_tests_properties(${name} PROPERTIES COST 100)
+      if(stem IN_LIST T_LARGE)
+        set_tests_properties(${name}_large PROPERTIES COST 100)
+      endif()
     endif()
   endforeach()
 endfunction()
