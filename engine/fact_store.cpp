@@ -142,7 +142,7 @@ std::span<const FactId> FactStore::with_argument(ValueId predicate, std::uint32_
 bool FactStore::activate(FactId f) {
     QM_REQUIRE(facts_.contains(f), "fact id out of range");
     if (active_[f] != 0) return false;
-    active_[f] = 1;
+    active_[f] = ++active_count_;
     index(active_lists_, f);
     return true;
 }
@@ -150,6 +150,11 @@ bool FactStore::activate(FactId f) {
 bool FactStore::is_active(FactId f) const {
     QM_REQUIRE(facts_.contains(f), "fact id out of range");
     return active_[f] != 0;
+}
+
+std::uint32_t FactStore::activation_rank(FactId f) const {
+    QM_REQUIRE(facts_.contains(f) && active_[f] != 0, "an active fact");
+    return active_[f] - 1;
 }
 
 std::span<const FactId> FactStore::active_with_predicate(ValueId predicate) const {

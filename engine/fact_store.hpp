@@ -36,6 +36,8 @@ public:
     // Marks f active and indexes it. Returns false if it already was. Pre: f valid.
     bool activate(FactId f);
     [[nodiscard]] bool is_active(FactId f) const;
+    // The number of facts activated before f: every active list is in this order. Pre: f active.
+    [[nodiscard]] std::uint32_t activation_rank(FactId f) const;
     [[nodiscard]] std::span<const FactId> active_with_predicate(ValueId predicate) const;
     [[nodiscard]] std::span<const FactId> active_with_argument(ValueId predicate, std::uint32_t position,
                                                                ValueId value) const;
@@ -63,7 +65,8 @@ private:
     void index(Lists& lists, FactId f);
 
     IdVector<FactId, Fact> facts_;
-    IdVector<FactId, std::uint8_t> active_;  // 1 = active (not bool: IdVector returns references)
+    IdVector<FactId, std::uint32_t> active_;  // 0 = inactive, else the activation rank plus one
+    std::uint32_t active_count_ = 0;
     IdVector<FactId, std::uint32_t> hash_;   // hash(predicate, args) of each fact
     std::vector<std::uint32_t> by_key_;      // open-addressed: FactId plus one; 0 = empty
     Lists all_, active_lists_;

@@ -1,6 +1,8 @@
 // engine/match_plan.cpp: the facts-independent analysis of a rule's conditions (match_plan.hpp).
 #include "engine/match_plan.hpp"
+#include <algorithm>
 #include <map>
+#include <span>
 
 namespace qm::engine {
 namespace {
@@ -97,6 +99,89 @@ std::vector<std::uint8_t> seed_first_safety(const CompiledRule& rule) {
     return safe;
 }
 
+std::vector<Slot> slots_of(std::span<const CompiledTerm> terms, bool calls_only) {
+    std::vector<Slot> out;
+    for (const auto& t : terms) {
+        if (calls_only && t.kind != CompiledTerm::Kind::call) continue;
+        for_each_slot(t, [&](Slot s) { out.push_back(s); });
+    }
+    return out;
+}
+
+// The order of the prefix's conditions, seeded at `seed` (or unseeded): at each step the first
+// test (in written order) whose arguments are bound, else the first `match` with a ground argument
+// (a constant or a bound variable: an index lookup), else the first `match` whose function calls
+// can be evaluated. A repeat follows the condition it repeats. A test that binds (`=` with its left
+// variable unbound where it is written) may do so wherever its right side is bound. Empty if the
+// order is the written one (for a seed, apart from where the seed stands: it matches one fact).
+std::vector<std::uint32_t> plan_order(const CompiledRule& rule, const MatchPlan& plan, std::optional<std::uint32_t> seed,
+                                      const std::vector<std::uint8_t>& binds_left) {
+    const std::uint32_t n = plan.prefix;
+    std::vector<std::uint8_t> bound(rule.slot_count(), 0), placed(n, 0);
+    std::vector<std::uint32_t> order;
+    auto all_bound = [&](const std::vector<Slot>& slots) {
+        return std::all_of(slots.begin(), slots.end(), [&](Slot s) { return bound[s] != 0; });
+    };
+    auto place = [&](std::uint32_t i) {
+        const CompiledCondition& c = rule.conditions[i];
+        const auto& args = c.kind == CompiledCondition::Kind::match ? c.atom.args : c.test.args;
+        for (Slot s : slots_of(args, false)) bound[s] = 1;
+        placed[i] = 1;
+        order.push_back(i);
+        for (std::uint32_t j = i + 1; j < n; ++j)
+            if (plan.repeat_of[j] == i) {
+                placed[j] = 1;
+                order.push_back(j);
+            }
+    };
+    if (seed) place(*seed);
+    while (order.size() < n) {
+        std::optional<std::uint32_t> ready_test, indexed, evaluable;
+        for (std::uint32_t i = 0; i < n && !ready_test; ++i) {
+            if (placed[i]) continue;
+            const CompiledCondition& c = rule.conditions[i];
+            if (c.kind == CompiledCondition::Kind::test) {
+                std::span<const CompiledTerm> args = c.test.args;
+                if (binds_left[i]) args = args.subspan(1);
+                if (all_bound(slots_of(args, false))) ready_test = i;
+                continue;
+            }
+            if (!all_bound(slots_of(c.atom.args, true))) continue;
+            if (!evaluable) evaluable = i;
+            bool ground = std::any_of(c.atom.args.begin(), c.atom.args.end(), [&](const CompiledTerm& t) {
+                return t.kind == CompiledTerm::Kind::constant || (t.kind == CompiledTerm::Kind::variable && bound[t.slot]);
+            });
+            if (ground && !indexed) indexed = i;
+        }
+        auto next = ready_test ? ready_test : indexed ? indexed : evaluable;
+        if (!next) return {};  // cannot happen for a checked rule; match as written
+        place(*next);
+    }
+    std::vector<std::uint32_t> written;
+    for (std::uint32_t i = 0; i < n; ++i) written.push_back(i);
+    std::vector<std::uint32_t> without_seed = order;
+    if (seed) {
+        std::erase(without_seed, *seed);
+        std::erase(written, *seed);
+    }
+    return without_seed == written ? std::vector<std::uint32_t>{} : order;
+}
+
+// Per test condition: 1 if it is `(= ?x TERM)`-shaped with ?x not bound by the conditions written
+// before it, so that it binds ?x there (the checker lets only `=` do that).
+std::vector<std::uint8_t> binding_tests(const CompiledRule& rule, std::uint32_t prefix) {
+    std::vector<std::uint8_t> bound(rule.slot_count(), 0), binds(prefix, 0);
+    for (std::uint32_t i = 0; i < prefix; ++i) {
+        const CompiledCondition& c = rule.conditions[i];
+        const auto& args = c.kind == CompiledCondition::Kind::match ? c.atom.args : c.test.args;
+        if (c.kind == CompiledCondition::Kind::test && args.size() == 2 && args[0].kind == CompiledTerm::Kind::variable &&
+            !bound[args[0].slot])
+            binds[i] = 1;
+        for (Slot s : slots_of(args, false)) bound[s] = 1;
+    }
+    return binds;
+}
+
 }  // namespace
 
 MatchPlan plan_matching(const CompiledRule& rule) {
@@ -113,6 +198,16 @@ MatchPlan plan_matching(const CompiledRule& rule) {
             plan.has_repeat = true;
         }
     }
+    const auto n = static_cast<std::uint32_t>(rule.conditions.size());
+    while (plan.prefix < n && (rule.conditions[plan.prefix].kind == CompiledCondition::Kind::match ||
+                               rule.conditions[plan.prefix].kind == CompiledCondition::Kind::test))
+        ++plan.prefix;
+    const auto binds_left = binding_tests(rule, plan.prefix);
+    plan.order.resize(n + 1);
+    for (std::uint32_t s = 0; s < plan.prefix; ++s)
+        if (rule.conditions[s].kind == CompiledCondition::Kind::match && !plan.repeat_of[s])
+            plan.order[s] = plan_order(rule, plan, s, binds_left);
+    plan.order[n] = plan_order(rule, plan, std::nullopt, binds_left);
     return plan;
 }
 

@@ -1,6 +1,7 @@
 // engine/matcher.cpp: depth-first evaluation of a rule's conditions in written order.
 #include "engine/matcher.hpp"
 #include "qm/assert.hpp"
+#include <algorithm>
 #include <array>
 #include <limits>
 
@@ -168,6 +169,68 @@ struct Matcher::Run {
         return decidable;
     }
 
+    // A prefix matched in the plan's order (match_plan.hpp): each match is kept with its facts in
+    // written order and its activation ranks, the key of the written order's depth-first walk
+    // (every candidate list is in activation order), then walked on from the end of the prefix in
+    // that order, so that answers come out as the written order would give them.
+    struct Found {
+        std::vector<std::uint32_t> key;
+        std::vector<FactId> facts;
+        Binding binding;
+    };
+
+    void planned(std::span<const std::uint32_t> order, std::vector<Found>& found) {
+        if (m.stopped_) return;
+        if (order.empty()) {
+            Found f{{}, {}, binding};
+            for (std::uint32_t i = 0; i < plan->prefix; ++i)
+                if (rule.conditions[i].kind == CompiledCondition::Kind::match) {
+                    f.key.push_back(m.facts_.activation_rank(matched_at[i]));
+                    f.facts.push_back(matched_at[i]);
+                }
+            found.push_back(std::move(f));
+            return;
+        }
+        const std::uint32_t i = order.front();
+        const CompiledCondition& c = rule.conditions[i];
+        auto rest = order.subspan(1);
+        if (c.kind == CompiledCondition::Kind::test) {
+            if (plan->repeat_of[i]) return planned(rest, found);
+            return test_then(c.test, [&] { planned(rest, found); });
+        }
+        auto take = [&](FactId f) {
+            std::size_t mark = trail.size();
+            if (unify(c.atom, f)) {
+                matched_at[i] = f;
+                planned(rest, found);
+            }
+            undo(mark);
+        };
+        if (seed && seed->condition == i) return take(seed->fact);
+        if (const auto& first = plan->repeat_of[i]) return take(matched_at[*first]);
+        for (FactId f : candidates(c.atom, true)) {
+            if (!tick()) return;
+            take(f);
+        }
+    }
+
+    void step_planned(std::span<const std::uint32_t> order) {
+        matched_at.resize(rule.conditions.size());
+        std::vector<Found> found;
+        planned(order, found);
+        std::stable_sort(found.begin(), found.end(), [](const Found& a, const Found& b) { return a.key < b.key; });
+        for (const Found& f : found) {
+            if (m.stopped_) return;
+            binding.assign(f.binding.begin(), f.binding.end());
+            trail.clear();
+            antecedents.assign(f.facts.begin(), f.facts.end());
+            std::size_t k = 0;
+            for (std::uint32_t i = 0; i < plan->prefix; ++i)
+                if (rule.conditions[i].kind == CompiledCondition::Kind::match) matched_at[i] = f.facts[k++];
+            step(plan->prefix);
+        }
+    }
+
     void step(std::size_t i) {
         if (m.stopped_) return;
         if (i == rule.conditions.size()) return on_match(binding, antecedents);
@@ -208,7 +271,12 @@ struct Matcher::Run {
         // An identical earlier test held on this path (with the same arguments: they were ground
         // there, or its `=` bound them), so this one holds too.
         if (plan->repeat_of[i]) return step(i + 1);
-        const CompiledTest& t = c.test;
+        test_then(c.test, [&] { step(i + 1); });
+    }
+
+    // Goes on (next()) if test t holds, or with its variable bound by `(= ?x TERM)`.
+    template <class Next>
+    void test_then(const CompiledTest& t, Next&& next) {
         // `(= ?x TERM)` with ?x unbound binds ?x (the checker guarantees TERM is ground here).
         if (m.equals_ && t.test == *m.equals_ && t.args.size() == 2 &&
             t.args[0].kind == CompiledTerm::Kind::variable && !binding[t.args[0].slot]) {
@@ -219,11 +287,11 @@ struct Matcher::Run {
             }
             std::size_t mark = trail.size();
             bind(t.args[0].slot, *v);
-            step(i + 1);
+            next();
             undo(mark);
             return;
         }
-        if (test_holds(t)) step(i + 1);
+        if (test_holds(t)) next();
     }
 
     void step_negation(std::size_t i, const CompiledCondition& c) {
@@ -353,6 +421,12 @@ void Matcher::match(const CompiledRule& rule, const MatchPlan& plan, std::option
     // before it are looked up through the argument index instead of scanned. This gives the same
     // matches in the same order unless an earlier `not`, aggregate or quantifier would see one of
     // those variables unbound (then local to it): such rules are matched as written.
+    // A prefix whose written order would scan a predicate while another condition could be looked
+    // up through a bound argument is matched in the plan's order instead (match_plan.hpp).
+    if (!initial && (!seed || seed->condition < plan.prefix)) {
+        const auto& order = plan.order[seed ? seed->condition : rule.conditions.size()];
+        if (!order.empty()) return run.step_planned(order);
+    }
     if (seed && plan.seed_first_safe[seed->condition]) {
         if (!run.unify(rule.conditions[seed->condition].atom, seed->fact)) return;
         run.trail.clear();
