@@ -62,9 +62,7 @@ int main(int argc, char** argv) {
             const auto t0 = Clock::now();
             Engine e(std::move(p.program), std::move(p.values));
             qm::Diagnostics d;
-            RunOptions options;
-            options.max_facts = 10 * static_cast<std::size_t>(states);
-            e.run(d, options);
+            e.run(d);
             ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
             found = e.facts().size();
         }
