@@ -163,15 +163,21 @@ void Builder::end_on_boundary(Division& d, double t, JoinKind kind) {
     const PlaceId j = add_join(kind, e, {qual});
     d.joins.push_back({t, j});
     if (chains.empty()) return;
-    // Insert next to the nearest node, on the side whose neighbour is closer to e.
+    // Insert next to the nearest node, on the side of it that e lies towards along the chain.
+    // Which neighbour is nearer says nothing where the nodes are closer together than their
+    // neighbours: a join put on the far side of its nearest point cuts no CSEG (the boundary
+    // points between two joins make the CSEG), and a face beside the CSEG then seems to span it all.
     auto& nodes = chains[best_c];
     const std::size_t n = nodes.size();
     std::size_t pos = best_k + 1;
     if (best_k > 0 || closed[best_c]) {
-        const auto& prev = nodes[(best_k + n - 1) % n];
-        const auto& next = nodes[(best_k + 1) % n];
-        if (difference(r, prev.q, e).cwiseProduct(scale).norm() < difference(r, next.q, e).cwiseProduct(scale).norm())
-            pos = best_k == 0 ? n : best_k;
+        const Eigen::Vector2d to_e = difference(r, nodes[best_k].q, e).cwiseProduct(scale);
+        auto towards = [&](std::size_t k) {
+            const Eigen::Vector2d to_k = difference(r, nodes[best_k].q, nodes[k].q).cwiseProduct(scale);
+            return to_k.norm() > 0 ? to_e.dot(to_k.normalized()) : 0.0;
+        };
+        const bool has_next = closed[best_c] || best_k + 1 < n;
+        if (!has_next || towards((best_k + n - 1) % n) > towards((best_k + 1) % n)) pos = best_k == 0 ? n : best_k;
     }
     if (!closed[best_c]) pos = std::clamp<std::size_t>(pos, 1, n - 1);  // stay inside the limit joins
     nodes.insert(nodes.begin() + static_cast<std::ptrdiff_t>(pos), ChainNode{e, -1, j, qual, normal});
