@@ -253,7 +253,8 @@ void Builder::add_external_divisions() {
     }
 }
 
-// Crossings of divisions along different axes are joins (8.1.2) that split both.
+// Crossings of divisions along different axes are joins (8.1.2) that split both; a division
+// ending on another's line splits that one (meet).
 void Builder::cross_divisions() {
     for (std::size_t a = 0; a < divisions.size(); ++a)
         for (std::size_t b = a + 1; b < divisions.size(); ++b) {
@@ -273,11 +274,35 @@ void Builder::cross_divisions() {
             // there or not by rounding (the Scotch yoke at odd grids).
             const double ea = std::max(4 * r.boundary_tolerance, 0.1 * r.axes[static_cast<std::size_t>(da.axis)].step());
             const double eb = std::max(4 * r.boundary_tolerance, 0.1 * r.axes[static_cast<std::size_t>(db.axis)].step());
-            if (ta <= ea || ta >= da.length - ea || tb <= eb || tb >= db.length - eb) continue;
-            const PlaceId j = add_join(JoinKind::crossing, da.at(ta), {});
-            da.joins.push_back({ta, j});
-            db.joins.push_back({tb, j});
+            const bool a_inside = ta > ea && ta < da.length - ea, b_inside = tb > eb && tb < db.length - eb;
+            if (a_inside && b_inside) {
+                const PlaceId j = add_join(JoinKind::crossing, da.at(ta), {});
+                da.joins.push_back({ta, j});
+                db.joins.push_back({tb, j});
+            } else if (a_inside) {
+                meet(da, ta, db, tb, eb);
+            } else if (b_inside) {
+                meet(db, tb, da, ta, ea);
+            }
         }
+}
+
+// A division that ends on another one's line (a T-junction) splits it there, at the join it ends
+// at: the faces either side of that end border different pieces of the line it meets, and a
+// line's piece borders one face on each side (8.1.2), so no two faces meet with no place between.
+// `through` is crossed at its parameter t; `ending` meets its line at its parameter u, which is
+// at one of its ends if within `near` of it (a periodic axis' parameter is within a period).
+void Builder::meet(Division& through, double t, const Division& ending, double u, double near) {
+    const auto& ax = r.axes[static_cast<std::size_t>(ending.axis)];
+    const bool at_start = std::abs(u) <= near || (ax.periodic && u >= ax.span() - near);
+    const bool at_end = std::abs(u - ending.length) <= near;
+    if ((!at_start && !at_end) || ending.joins.empty()) return;
+    const auto by_param = [](const auto& x, const auto& y) { return x.first < y.first; };
+    const auto end = at_start ? std::min_element(ending.joins.begin(), ending.joins.end(), by_param)
+                              : std::max_element(ending.joins.begin(), ending.joins.end(), by_param);
+    const PlaceId j = end->second;
+    if (std::none_of(through.joins.begin(), through.joins.end(), [&](const auto& x) { return x.second == j; }))
+        through.joins.push_back({t, j});
 }
 
 }  // namespace qm::geometry::detail
