@@ -325,10 +325,17 @@ void add_adjacency(const PairOracle& oracle, const CSpaceRequest& r, const std::
             if (s == QualSign::zero || s == QualSign::ambiguous) slide();
         }
     }
-    // (5) joins to lines by reciprocity.
+    // (5) joins to lines by reciprocity. A division that passes a contact's join (it is cut at
+    // that join where another division ends on it) runs off the boundary by a little: the motion
+    // along it from the join is the join's own to decide, by its normals.
     const std::vector<Adjacency> line_moves = out;
-    for (const auto& a : line_moves)
-        if (a.to != a.from && v.at(a.to).kind == PlaceKind::join) add(a.to, a.from, negated(a.motion), true, false);
+    for (const auto& a : line_moves) {
+        if (a.to == a.from || v.at(a.to).kind != PlaceKind::join) continue;
+        const PlaceKind from = v.at(a.from).kind;
+        const bool division = from == PlaceKind::fsd || from == PlaceKind::external_division;
+        if (division && leads_into_free_space(v.at(a.to), negated(a.motion)) == false) continue;
+        add(a.to, a.from, negated(a.motion), true, false);
+    }
     // (3) joins to faces. A join lies on the boundary only to within the bisection tolerance, on
     // either side of it; a motion straight along a CSEG through the join would then reach the
     // face or not by rounding. The sample is nudged a thousandth of a cell into blocked space

@@ -163,15 +163,21 @@ void Builder::end_on_boundary(Division& d, double t, JoinKind kind) {
     const PlaceId j = add_join(kind, e, {qual});
     d.joins.push_back({t, j});
     if (chains.empty()) return;
-    // Insert next to the nearest node, on the side whose neighbour is closer to e.
+    // Insert next to the nearest node, on the side of it that e lies towards along the chain.
+    // Which neighbour is nearer says nothing where the nodes are closer together than their
+    // neighbours: a join put on the far side of its nearest point cuts no CSEG (the boundary
+    // points between two joins make the CSEG), and a face beside the CSEG then seems to span it all.
     auto& nodes = chains[best_c];
     const std::size_t n = nodes.size();
     std::size_t pos = best_k + 1;
     if (best_k > 0 || closed[best_c]) {
-        const auto& prev = nodes[(best_k + n - 1) % n];
-        const auto& next = nodes[(best_k + 1) % n];
-        if (difference(r, prev.q, e).cwiseProduct(scale).norm() < difference(r, next.q, e).cwiseProduct(scale).norm())
-            pos = best_k == 0 ? n : best_k;
+        const Eigen::Vector2d to_e = difference(r, nodes[best_k].q, e).cwiseProduct(scale);
+        auto towards = [&](std::size_t k) {
+            const Eigen::Vector2d to_k = difference(r, nodes[best_k].q, nodes[k].q).cwiseProduct(scale);
+            return to_k.norm() > 0 ? to_e.dot(to_k.normalized()) : 0.0;
+        };
+        const bool has_next = closed[best_c] || best_k + 1 < n;
+        if (!has_next || towards((best_k + n - 1) % n) > towards((best_k + 1) % n)) pos = best_k == 0 ? n : best_k;
     }
     if (!closed[best_c]) pos = std::clamp<std::size_t>(pos, 1, n - 1);  // stay inside the limit joins
     nodes.insert(nodes.begin() + static_cast<std::ptrdiff_t>(pos), ChainNode{e, -1, j, qual, normal});
@@ -247,7 +253,8 @@ void Builder::add_external_divisions() {
     }
 }
 
-// Crossings of divisions along different axes are joins (8.1.2) that split both.
+// Crossings of divisions along different axes are joins (8.1.2) that split both; a division
+// ending on another's line splits that one (meet).
 void Builder::cross_divisions() {
     for (std::size_t a = 0; a < divisions.size(); ++a)
         for (std::size_t b = a + 1; b < divisions.size(); ++b) {
@@ -267,11 +274,35 @@ void Builder::cross_divisions() {
             // there or not by rounding (the Scotch yoke at odd grids).
             const double ea = std::max(4 * r.boundary_tolerance, 0.1 * r.axes[static_cast<std::size_t>(da.axis)].step());
             const double eb = std::max(4 * r.boundary_tolerance, 0.1 * r.axes[static_cast<std::size_t>(db.axis)].step());
-            if (ta <= ea || ta >= da.length - ea || tb <= eb || tb >= db.length - eb) continue;
-            const PlaceId j = add_join(JoinKind::crossing, da.at(ta), {});
-            da.joins.push_back({ta, j});
-            db.joins.push_back({tb, j});
+            const bool a_inside = ta > ea && ta < da.length - ea, b_inside = tb > eb && tb < db.length - eb;
+            if (a_inside && b_inside) {
+                const PlaceId j = add_join(JoinKind::crossing, da.at(ta), {});
+                da.joins.push_back({ta, j});
+                db.joins.push_back({tb, j});
+            } else if (a_inside) {
+                meet(da, ta, db, tb, eb);
+            } else if (b_inside) {
+                meet(db, tb, da, ta, ea);
+            }
         }
+}
+
+// A division that ends on another one's line (a T-junction) splits it there, at the join it ends
+// at: the faces either side of that end border different pieces of the line it meets, and a
+// line's piece borders one face on each side (8.1.2), so no two faces meet with no place between.
+// `through` is crossed at its parameter t; `ending` meets its line at its parameter u, which is
+// at one of its ends if within `near` of it (a periodic axis' parameter is within a period).
+void Builder::meet(Division& through, double t, const Division& ending, double u, double near) {
+    const auto& ax = r.axes[static_cast<std::size_t>(ending.axis)];
+    const bool at_start = std::abs(u) <= near || (ax.periodic && u >= ax.span() - near);
+    const bool at_end = std::abs(u - ending.length) <= near;
+    if ((!at_start && !at_end) || ending.joins.empty()) return;
+    const auto by_param = [](const auto& x, const auto& y) { return x.first < y.first; };
+    const auto end = at_start ? std::min_element(ending.joins.begin(), ending.joins.end(), by_param)
+                              : std::max_element(ending.joins.begin(), ending.joins.end(), by_param);
+    const PlaceId j = end->second;
+    if (std::none_of(through.joins.begin(), through.joins.end(), [&](const auto& x) { return x.second == j; }))
+        through.joins.push_back({t, j});
 }
 
 }  // namespace qm::geometry::detail

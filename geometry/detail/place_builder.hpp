@@ -103,6 +103,8 @@ struct Builder {
     void add_external_divisions();
     void end_on_boundary(Division& d, double t, JoinKind kind);
     void cross_divisions();
+    // A T-junction: `ending` meets the line of `through` (at t along it) at one of its ends.
+    void meet(Division& through, double t, const Division& ending, double u, double near);
     [[nodiscard]] std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> barriers_at_joins() const;
     // Where along each axis the free space may be divided: the divisions' lines and the joins
     // (where a CSEG turns back along an axis its normal changes, so its turning points are joins

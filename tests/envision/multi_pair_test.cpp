@@ -98,12 +98,7 @@ TEST_CASE("envision/multi_pair: pawl_ratchet, a crank rocks a lever whose pawl d
     CHECK(path_follows_transitions(s.c, a.path));
 }
 
-// Waits for: a division met from one side by another (a T-junction) borders a face on each side
-// of the meeting, and the adjacency gives one: lever/ratchet-wheel FSD 26 leads only to face 47,
-// which lies apart from crank/lever's next place at the lever's angle there (#233 with the crank
-// turning), so the crank stops. Probing every cell of a division found both faces but made the
-// vocabulary depend on the grid (tests/geometry/vocabulary_stability_test.cpp).
-TEST_CASE("envision/multi_pair: pawl_ratchet, the crank never stops in free space" * doctest::may_fail()) {
+TEST_CASE("envision/multi_pair: pawl_ratchet, the crank never stops in free space") {
     const PairsScene s(envisioned_once("scenarios/clock/pawl_ratchet.def"));
     CHECK(stuck_in_free_space(s, s.object("crank"), {s.pair("crank/lever")}).empty());
 }
@@ -130,11 +125,11 @@ TEST_CASE("envision/multi_pair: [large] geneva_detent, the pin turns the wheel a
     CHECK(held);
 }
 
-// Waits for: as above: wheel/detent FSD 29 (detent 355.185 degrees, wheel 0 to 82.4) is crossed,
-// with no join, by FSDs 31, 37 and 33 (wheel 7.4, 27.5 and 34.9), which divide the strip above
-// it, and leads under detent + only to face 53 (wheel 34.8 to 82.5); so with the wheel at
-// driver/wheel join 5 (7.7 degrees) no step finds a state (#629: the driver at rest while the
-// detent turns).
+// Waits for: faces whose values only their margins make overlap: driver/wheel face 84 (the
+// wheel up to the division at 82.26 degrees) and wheel/detent face 46 (from the corner join at
+// 82.41) each reach a tenth of a step past their corner joins, so a state pairs them though no
+// wheel angle lies in both, and the wheel turning back from it finds no consistent next place
+// (#21999 with the driver turning).
 TEST_CASE("envision/multi_pair: [large] geneva_detent, the driver never stops in free space" * doctest::may_fail()) {
     const PairsScene s(envisioned_once("scenarios/clock/geneva_detent.def"));
     CHECK(stuck_in_free_space(s, s.object("driver"), {s.pair("driver/wheel")}).empty());
@@ -215,12 +210,11 @@ TEST_CASE("envision/multi_pair: [large] the escapement with its train keeps the 
     keeps_the_invariants("scenarios/clock/escapement_train.def");
 }
 
-// Waits for: the same simultaneous changes of place in two pairs as the checks above.
-TEST_CASE("envision/multi_pair: the pawl and ratchet keep the invariants" * doctest::may_fail()) {
+TEST_CASE("envision/multi_pair: the pawl and ratchet keep the invariants") {
     keeps_the_invariants("scenarios/clock/pawl_ratchet.def");
 }
 
-// Waits for: as above.
+// Waits for: as the driver's stop in free space above.
 TEST_CASE("envision/multi_pair: [large] the Geneva drive keeps the invariants" * doctest::may_fail()) {
     keeps_the_invariants("scenarios/clock/geneva_detent.def");
 }
