@@ -10,6 +10,7 @@
 #include "geometry/kinematic_pairs.hpp"
 #include "geometry/metric_scene_parser.hpp"
 
+#include "division_pieces.hpp"
 #include <doctest/doctest.h>
 #include <algorithm>
 #include <cmath>
@@ -19,6 +20,8 @@
 #include <vector>
 
 using namespace qm::geometry;
+using qm::geometry::test::division_pieces;
+using qm::geometry::test::Piece;
 
 namespace {
 
@@ -43,29 +46,6 @@ Built build(const std::string& file, const std::string& a, const std::string& b)
     out.request = place_request(out.mechanism, *spec);
     out.result = build_place_vocabulary(*out.oracle, out.request);
     REQUIRE(out.result.status == PlaceStatus::ok);
-    return out;
-}
-
-// One division piece: along `axis` at `c` on the other axis, from `a` to `b` (a <= b, unwrapped
-// the short way on a periodic axis).
-struct Piece {
-    std::uint32_t id;
-    int axis;
-    double c, a, b;
-};
-
-std::vector<Piece> division_pieces(const CSpaceRequest& r, const PlaceVocabulary& v) {
-    std::vector<Piece> out;
-    for (const auto& p : v.places) {
-        if (p.kind != PlaceKind::fsd && p.kind != PlaceKind::external_division) continue;
-        const auto& ax = r.axes[static_cast<std::size_t>(p.axis)];
-        for (std::size_t k = 0; k + 1 < p.points.size(); ++k) {
-            const double x = p.points[k][p.axis];
-            double y = p.points[k + 1][p.axis];
-            if (ax.periodic) y = x + std::remainder(y - x, ax.span());
-            out.push_back({p.id.value, p.axis, p.points[k][1 - p.axis], std::min(x, y), std::max(x, y)});
-        }
-    }
     return out;
 }
 
@@ -153,12 +133,12 @@ std::vector<std::string> loose_slivers(const Built& b) {
             std::array<double, 2> lo{}, hi{};
         };
         auto fill = [&](const Eigen::Vector2d& s) {
-            std::vector<std::pair<int, int>> todo{{0, 0}};
+            std::vector<std::pair<int, int>> stack{{0, 0}};
             std::set<std::pair<int, int>> seen{{0, 0}};
             Fill out{1, {s[0], s[1]}, {s[0], s[1]}};
-            while (!todo.empty() && seen.size() <= 20000) {
-                const auto [i, j] = todo.back();
-                todo.pop_back();
+            while (!stack.empty() && seen.size() <= 20000) {
+                const auto [i, j] = stack.back();
+                stack.pop_back();
                 const Eigen::Vector2d p = s + Eigen::Vector2d(i * h[0], j * h[1]);
                 for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
                     const int ni = i + di, nj = j + dj;
@@ -173,7 +153,7 @@ std::vector<std::string> loose_slivers(const Built& b) {
                         !crossed(r, pieces, p, q, std::uint32_t(-1)).empty())
                         continue;
                     seen.insert({ni, nj});
-                    todo.emplace_back(ni, nj);
+                    stack.emplace_back(ni, nj);
                     for (std::size_t k = 0; k < 2; ++k) {
                         out.lo[k] = std::min(out.lo[k], q[static_cast<Eigen::Index>(k)]);
                         out.hi[k] = std::max(out.hi[k], q[static_cast<Eigen::Index>(k)]);

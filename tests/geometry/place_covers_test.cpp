@@ -10,6 +10,7 @@
 #include "geometry/kinematic_pairs.hpp"
 #include "geometry/metric_scene_parser.hpp"
 
+#include "division_pieces.hpp"
 #include <doctest/doctest.h>
 #include <algorithm>
 #include <array>
@@ -22,6 +23,8 @@
 #include <sstream>
 
 using namespace qm::geometry;
+using qm::geometry::test::division_pieces;
+using qm::geometry::test::Piece;
 
 namespace {
 
@@ -51,31 +54,6 @@ struct Dense {
     }
     [[nodiscard]] std::size_t index(int i, int j) const { return static_cast<std::size_t>(i) + static_cast<std::size_t>(n[0]) * static_cast<std::size_t>(j); }
 };
-
-// One straight piece of a division: along `axis`, at `c` on the other axis, from `a` to `b` (a <= b,
-// unwrapped the short way on a periodic axis).
-struct Piece {
-    int axis;
-    double c, a, b;
-};
-
-std::vector<Piece> division_pieces(const CSpaceRequest& r, const PlaceVocabulary& v) {
-    std::vector<Piece> out;
-    for (const auto& p : v.places) {
-        if (p.kind != PlaceKind::fsd && p.kind != PlaceKind::external_division) continue;
-        const int a = p.axis;
-        const auto& ax = r.axes[static_cast<std::size_t>(a)];
-        for (std::size_t k = 0; k + 1 < p.points.size(); ++k) {
-            double x = p.points[k][a], y = p.points[k + 1][a];
-            if (ax.periodic) {
-                while (y - x > ax.span() / 2) y -= ax.span();
-                while (x - y > ax.span() / 2) y += ax.span();
-            }
-            out.push_back({a, p.points[k][1 - a], std::min(x, y), std::max(x, y)});
-        }
-    }
-    return out;
-}
 
 // Is x within [lo, hi] (a copy of it a whole number of periods on, on a periodic axis)?
 bool within(const CSpaceAxis& ax, double x, double lo, double hi, double slack) {
