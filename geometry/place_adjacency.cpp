@@ -15,6 +15,7 @@
 #include "geometry/detail/place_parts.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -417,10 +418,35 @@ void add_adjacency(const PairOracle& oracle, const CSpaceRequest& r, const std::
     const std::vector<Adjacency> so_far = out;
     for (const auto& a : so_far)
         if (a.to != a.from && v.at(a.to).kind == PlaceKind::face) add(a.to, a.from, negated(a.motion), false, false);
+    std::vector<bool> thin(face_places.size(), false);
+    {
+        const FaceGrid& g = faces.grid();
+        std::vector<std::array<std::set<int>, 2>> lines(face_places.size());
+        for (int j = 0; j < g.size(1); ++j)
+            for (int i = 0; i < g.size(0); ++i)
+                if (const int f = faces.face_of_sample(i, j); f >= 0) {
+                    lines[static_cast<std::size_t>(f)][0].insert(i);
+                    lines[static_cast<std::size_t>(f)][1].insert(j);
+                }
+        // Thinner than a grid step along an axis: all its samples on lines inserted between close
+        // features, or on one of the configuration space's own.
+        for (std::size_t f = 0; f < face_places.size(); ++f)
+            for (int k = 0; k < 2; ++k) {
+                const auto& ks = lines[f][static_cast<std::size_t>(k)];
+                if (!ks.empty() && g.coordinate(k, *ks.rbegin()) - g.coordinate(k, *ks.begin()) < r.axes[static_cast<std::size_t>(k)].step())
+                    thin[f] = true;
+            }
+    }
     for (std::size_t f = 0; f < face_places.size(); ++f)
         for (const auto d : all) {
             const PlaceId face = face_places[f];
             const bool any = std::any_of(out.begin(), out.end(), [&](const Adjacency& a) { return a.from == face && a.motion == d; });
+            // A face thinner than a grid step (a sliver between close lines) is one the probes from its
+            // lines may pass by: what its samples meet is added to what they found.
+            if (any && thin[f]) {
+                for (const PlaceId to : reached_by_walking(oracle, r, faces, static_cast<int>(f), d, v)) add(face, to, d, false, false);
+                continue;
+            }
             if (any) continue;
             if (wraps(faces, static_cast<int>(f), d)) {
                 add(face, face, d, false, false);

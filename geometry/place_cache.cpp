@@ -19,7 +19,7 @@ namespace {
 // The format's number changes whenever the builder would give another vocabulary for the same
 // geometry and settings, so that a file of an older number is stale and recomputed, never served.
 constexpr std::string_view family = "qm-place-cache/";
-constexpr const char* magic = "qm-place-cache/17";
+constexpr const char* magic = "qm-place-cache/18";
 constexpr std::uintmax_t largest_file = std::uintmax_t{1} << 30;
 
 void write_text(std::ostream& os, const std::string& s) { os << s.size() << ' ' << s; }

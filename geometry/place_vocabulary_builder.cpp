@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace qm::geometry::detail {
 
@@ -65,7 +66,8 @@ Eigen::Vector2d Builder::corner(const std::vector<ChainNode>& nodes, std::size_t
     if (in_cells(a.normal).dot(in_cells(b.normal)) > 0) return normal_change(a, pb, b.normal);
     if (std::abs(cross(in_cells(a.normal), in_cells(b.normal))) > 0.2) {
         const Eigen::Vector2d x = crossing(a.normal, b.normal);
-        return project(near(x, a.normal, b.normal, true) ? x : mid, a.normal + b.normal);
+        if (!near(x, a.normal, b.normal, true)) return project(mid, a.normal + b.normal);
+        return refine_corner(a.q, a.normal, a.qual, pb, b.normal, b.qual, project(x, a.normal + b.normal));
     }
     // The secant from the run's point a cell or two back (at most 4 points) to the run's end.
     auto secant = [&](std::size_t from, int step, const Eigen::Vector2d& normal) -> std::optional<Eigen::Vector2d> {
@@ -89,6 +91,43 @@ Eigen::Vector2d Builder::corner(const std::vector<ChainNode>& nodes, std::size_t
         if (near(x, *sa, *sb, false)) return project(x, *sa + *sb);
     }
     return project(mid, a.normal + b.normal);
+}
+
+// Where two curved sides meet, the crossing of the tangents at the last points of each lies off
+// the corner by the sides' sag, and moved onto the boundary it sits on one side, short of the
+// corner (a concave corner's extreme value would be missed by the faces' values, Def 34). Each
+// point found replaces the last point of its side, bracketing the corner ever closer: the next
+// is the new tangents' crossing, or, where that found the same side twice running (the other
+// side's tangent stale), the bracket's middle moved onto the boundary.
+Eigen::Vector2d Builder::refine_corner(Eigen::Vector2d pa, Eigen::Vector2d na, QualDirection qa, Eigen::Vector2d pb, Eigen::Vector2d nb,
+                                       QualDirection qb, Eigen::Vector2d y) {
+    auto crossing = [](const Eigen::Vector2d& p, const Eigen::Vector2d& n, const Eigen::Vector2d& q, const Eigen::Vector2d& m)
+        -> std::optional<Eigen::Vector2d> {
+        Eigen::Matrix2d mat;
+        mat << n.x(), n.y(), m.x(), m.y();
+        if (std::abs(mat.determinant()) < 1e-12 * n.norm() * m.norm()) return std::nullopt;
+        return Eigen::Vector2d(mat.inverse() * Eigen::Vector2d(n.dot(p), m.dot(q)));
+    };
+    const Eigen::Vector2d first = y;
+    int last_side = 0, repeats = 0;
+    for (int i = 0; i < 64; ++i) {
+        const Eigen::Vector2d n = oracle.free_normal(wrap(r, y));
+        if (!(n.norm() > 0)) return y;
+        const QualDirection q = qualitative(n, r.normal_zero_tolerance);
+        const int side = q == qa ? 1 : (q == qb ? 2 : 0);
+        if (side == 0) return y;  // at the corner itself
+        (side == 1 ? pa : pb) = y;
+        (side == 1 ? na : nb) = n.normalized();
+        repeats = side == last_side ? repeats + 1 : 0;
+        last_side = side;
+        const Eigen::Vector2d gap = (pb - pa).cwiseQuotient(cell());
+        if (gap.norm() < 1e-7) return y;
+        if (gap.norm() > 8) return first;  // left the corner's neighbourhood
+        const auto x = crossing(pa, na, pb, nb);
+        const bool inside = x && ((*x - pa).cwiseQuotient(cell()).norm() < 4 * gap.norm() + 1e-7);
+        y = project(repeats == 0 && inside ? *x : 0.5 * (pa + pb), na + nb);
+    }
+    return y;
 }
 
 // Def 29: a join at q between boundary points a and b (next along the chain) is concave if the
@@ -201,6 +240,28 @@ void Builder::insert_normal_joins(std::size_t c) {
     nodes = std::move(out);
 }
 
+// Two joins closer than a boundary sample's spacing (a division's end a part of a cell from a
+// corner) still have the boundary between them: a CSEG of the qualitative normal the first join
+// hands on (Def 28), so that a motion from the face beside it meets a place there, not a gap.
+void Builder::emit_between_joins(const ChainNode& a, const ChainNode& b) {
+    const Eigen::Vector2d d = difference(r, a.q, b.q);
+    const double same = std::max(1e-3, 8 * r.boundary_tolerance * cell().cwiseInverse().maxCoeff());
+    if (a.join == b.join || d.cwiseQuotient(cell()).norm() <= same) return;
+    const QualDirection qual = v.at(*a.join).normals.back();
+    const Eigen::Vector2d guess = a.normal.norm() > 0 ? a.normal : b.normal;
+    const Eigen::Vector2d mid = wrap(r, project(a.q + 0.5 * d, guess));
+    Eigen::Vector2d normal = oracle.free_normal(mid);
+    normal = normal.norm() > 0 ? Eigen::Vector2d(normal.normalized()) : guess;
+    Place p;
+    p.kind = PlaceKind::cseg;
+    p.normals = {qual};
+    p.points = {a.q, mid, b.q};
+    const PlaceId id = add(std::move(p));
+    Eigen::Vector2d tangent(-normal.y(), normal.x());
+    if (tangent.dot(d) < 0) tangent = -tangent;
+    lines.push_back(LineInfo{id, a.join, b.join, mid, normal, tangent, false});
+}
+
 void Builder::emit_csegs() {
     for (std::size_t c = 0; c < chains.size(); ++c) {
         const auto& nodes = chains[c];
@@ -212,22 +273,27 @@ void Builder::emit_csegs() {
             std::vector<std::size_t> pts;
             for (auto k : members)
                 if (nodes[k].point >= 0) pts.push_back(k);
-            if (pts.empty()) return;
+            if (pts.empty()) {
+                if (from && to) emit_between_joins(nodes[*from], nodes[*to]);
+                return;
+            }
             Place p;
             p.kind = PlaceKind::cseg;
             p.normals = {nodes[pts.front()].qual};
             if (from) p.points.push_back(nodes[*from].q);
             for (auto k : pts) p.points.push_back(nodes[k].q);
             if (to) p.points.push_back(nodes[*to].q);
+            // The tangent runs from the start join towards the end join: along the points, step by
+            // step (a CSEG may run more than half round a periodic axis, where the short way
+            // between its ends is the other way), joins included (one boundary point between them
+            // says no direction by itself).
+            Eigen::Vector2d chord = Eigen::Vector2d::Zero();
+            for (std::size_t k = 0; k + 1 < p.points.size(); ++k) chord += difference(r, p.points[k], p.points[k + 1]);
             const PlaceId id = add(std::move(p));
             const auto& m = nodes[pts[pts.size() / 2]];
             LineInfo li{id, from ? nodes[*from].join : std::nullopt, to ? nodes[*to].join : std::nullopt, m.q,
                         m.normal, Eigen::Vector2d(-m.normal.y(), m.normal.x()), false};
-            // Orient the tangent from the start join towards the end join.
-            if (pts.size() >= 2) {
-                const Eigen::Vector2d chord = difference(r, nodes[pts.front()].q, nodes[pts.back()].q);
-                if (li.tangent.dot(chord) < 0) li.tangent = -li.tangent;
-            }
+            if (li.tangent.dot(chord) < 0) li.tangent = -li.tangent;
             lines.push_back(li);
         };
         if (cuts.empty()) {  // a closed boundary of one normal: one CSEG, no joins

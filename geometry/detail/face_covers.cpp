@@ -113,12 +113,11 @@ std::vector<Span> covered_values(const FaceGrid& grid, int k, const std::vector<
                                 : (s.hi + c * period >= x && s.lo + c * period < x - wide);
         return found ? best : x + dir * wide;
     };
-    // The boundary's points lie on it, but a corner's join may sit a little off the tip it stands
-    // for (the tangents' crossing moved onto the boundary): a tenth of a step more either side.
-    const double margin = 0.1 * step;
+    // The boundary's values are taken as they are, with no margin: two pairs' faces whose values
+    // only touch at a corner share no configuration (Def 34), and a margin would correlate them.
     std::vector<Span> out;
     for (const auto& [a, b] : runs) out.push_back({reach(a, -1), reach(b, +1)});
-    for (const auto& s : bound) out.push_back({s.lo - margin, s.hi + margin});
+    out.insert(out.end(), bound.begin(), bound.end());
     if (!axis.periodic) {  // one interval, within the axis
         Span hull{axis.hi, axis.lo};
         for (const auto& s : out) hull = {std::min(hull.lo, s.lo), std::max(hull.hi, s.hi)};

@@ -58,7 +58,10 @@ FaceGrid::FaceGrid(const PairOracle& oracle, const CSpaceResult& space, const st
         }
         std::sort(f.begin(), f.end());
         if (ax.periodic && !f.empty()) f.push_back(f.front() + ax.span());
-        const double tiny = 2 * on_line_cells * ax.step();
+        // Features closer than a thousandth of a cell are one feature, as joins that close are one
+        // join (a flat CSEG's two ends, found by bisection a few ten-millionths apart): a line
+        // between them would lie in the boundary's own tolerance, its samples free by it.
+        const double tiny = 1e-3 * ax.step();
         std::vector<double> extra;
         for (std::size_t a = 0; a + 1 < f.size(); ++a) {
             // Two features closer than a step: a line between them, whether or not a sample line
@@ -181,6 +184,10 @@ void FaceLocator::cut_along(const std::vector<std::pair<Eigen::Vector2d, Eigen::
                 int o = grid_.below(1 - k, q[1 - k]);
                 if (ao.periodic && o < 0) o = no - 1;
                 if (line < 0 || line >= nk || o < 0 || o >= no || (!ao.periodic && o >= no - 1)) continue;
+                // A barrier through a sample (one on the boundary, inserted between two joins
+                // whose straight line the barrier is) touches the edges from it, and crosses none.
+                const double on = on_line_cells * grid_.step(1 - k);
+                if (std::abs(q[1 - k] - grid_.coordinate(1 - k, o)) <= on || std::abs(grid_.coordinate(1 - k, o + 1) - q[1 - k]) <= on) continue;
                 // The edge on grid line `line` (across axis k) from sample o along the other axis.
                 const int i = k == 0 ? line : o, j = k == 0 ? o : line;
                 cut_[1 - k][static_cast<std::size_t>(i + n0_ * j)] = 1;

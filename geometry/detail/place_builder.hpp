@@ -95,6 +95,8 @@ struct Builder {
     Eigen::Vector2d corner(const std::vector<ChainNode>& nodes, std::size_t k, bool is_closed);
     [[nodiscard]] std::size_t sound_node(const std::vector<ChainNode>& nodes, std::size_t k, int step, bool is_closed) const;
     Eigen::Vector2d normal_change(const ChainNode& a, const Eigen::Vector2d& pb, const Eigen::Vector2d& nb);
+    Eigen::Vector2d refine_corner(Eigen::Vector2d pa, Eigen::Vector2d na, QualDirection qa, Eigen::Vector2d pb, Eigen::Vector2d nb,
+                                  QualDirection qb, Eigen::Vector2d y);
     [[nodiscard]] bool concave(const ChainNode& a, const ChainNode& b, const Eigen::Vector2d& q) const;
     bool on_tangents(const Eigen::Vector2d& p, const Eigen::Vector2d& n, const Eigen::Vector2d& x);
     bool duplicate(const Division& d) const;
@@ -112,6 +114,7 @@ struct Builder {
     [[nodiscard]] std::array<std::vector<double>, 2> feature_coordinates() const;
     void add_stops();
     void emit_csegs();
+    void emit_between_joins(const ChainNode& a, const ChainNode& b);
     void emit_divisions();
 };
 

@@ -201,7 +201,7 @@ TEST_CASE("geometry/place_cache: stale, foreign and alien files are not served, 
     spit(path, "qm-place-cache/6\n5 other\n0 0\n");
     auto l = cache.load(f.material);
     CHECK(l.status == CacheStatus::stale);
-    CHECK(l.why == "it was written in format qm-place-cache/6, not qm-place-cache/17");
+    CHECK(l.why == "it was written in format qm-place-cache/6, not qm-place-cache/18");
     // A whole, sound file of another computation under this name (a hash collision, a copy).
     const auto other = bar_and_block();
     PlaceRequest other_req;
@@ -231,7 +231,7 @@ TEST_CASE("geometry/place_cache: files of both format /6s are refused as stale a
     const auto path = cache.path_for(f.material);
     REQUIRE(cache.store(f.material, f.vocabulary));
     const std::string current = slurp_cache(path);
-    REQUIRE(current.rfind("qm-place-cache/17\n", 0) == 0);
+    REQUIRE(current.rfind("qm-place-cache/18\n", 0) == 0);
     const std::string body = current.substr(current.find('\n') + 1);
     const std::string unsealed = body.substr(0, body.rfind('\n', body.size() - 2) + 1);
     const std::string with_stops = "qm-place-cache/6\n" + unsealed;                 // no checksum line
@@ -240,7 +240,7 @@ TEST_CASE("geometry/place_cache: files of both format /6s are refused as stale a
         spit(path, old);
         const auto l = cache.load(f.material);
         CHECK(l.status == CacheStatus::stale);
-        CHECK(l.why == "it was written in format qm-place-cache/6, not qm-place-cache/17");
+        CHECK(l.why == "it was written in format qm-place-cache/6, not qm-place-cache/18");
         const auto rebuilt = build_or_load(f.c.exact, f.req, cache);
         CHECK(!rebuilt.from_cache);
         CHECK(rebuilt.cache_status == CacheStatus::stale);
