@@ -257,9 +257,8 @@ void Builder::emit_between_joins(const ChainNode& a, const ChainNode& b) {
     p.normals = {qual};
     p.points = {a.q, mid, b.q};
     const PlaceId id = add(std::move(p));
-    Eigen::Vector2d tangent(-normal.y(), normal.x());
-    if (tangent.dot(d) < 0) tangent = -tangent;
-    lines.push_back(LineInfo{id, a.join, b.join, mid, normal, tangent, false});
+    // A slide along it goes from one join to the other: its tangent is their chord.
+    lines.push_back(LineInfo{id, a.join, b.join, mid, normal, d.normalized(), false});
 }
 
 void Builder::emit_csegs() {

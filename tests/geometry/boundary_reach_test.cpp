@@ -12,6 +12,7 @@
 #include "geometry/kinematic_pairs.hpp"
 #include "geometry/metric_scene_parser.hpp"
 
+#include "../support/random_mechanism.hpp"
 #include "division_pieces.hpp"
 #include <doctest/doctest.h>
 #include <algorithm>
@@ -36,22 +37,27 @@ struct PairBuild {
     PlaceVocabulary vocabulary;
 };
 
-// Every modelled pair of a bundled mechanism with more than one place.
+// Every modelled pair of a mechanism with more than one place; a pair whose vocabulary the
+// geometry refuses (a random drawing whose parts never touch) is left out, unless `all` is asked.
+std::vector<PairBuild> pairs_of(const Mechanism& m, const std::string& name, bool all) {
+    std::vector<PairBuild> out;
+    for (const auto& spec : kinematic_pairs(m).modelled) {
+        const auto request = place_request(m, spec);
+        auto oracle = pair_oracle(m, spec);
+        auto result = build_place_vocabulary(*oracle, request);
+        if (all) REQUIRE(result.status == PlaceStatus::ok);
+        if (result.status != PlaceStatus::ok || result.vocabulary.places.size() < 2) continue;
+        out.push_back({name + " " + m.parts[spec.a].name + "/" + m.parts[spec.b].name, request.cspace, std::move(oracle),
+                       std::move(result.vocabulary)});
+    }
+    return out;
+}
+
 std::vector<PairBuild> bundled_pairs(const std::string& file) {
     qm::Diagnostics d;
     auto m = read_mechanism_file((std::filesystem::path(QM_SOURCE_DIR) / "scenarios/clock" / file).string(), d);
     REQUIRE(m);
-    std::vector<PairBuild> out;
-    for (const auto& spec : kinematic_pairs(*m).modelled) {
-        const auto request = place_request(*m, spec);
-        auto oracle = pair_oracle(*m, spec);
-        auto result = build_place_vocabulary(*oracle, request);
-        REQUIRE(result.status == PlaceStatus::ok);
-        if (result.vocabulary.places.size() < 2) continue;
-        out.push_back({file + " " + m->parts[spec.a].name + "/" + m->parts[spec.b].name, request.cspace, std::move(oracle),
-                       std::move(result.vocabulary)});
-    }
-    return out;
+    return pairs_of(*m, file, true);
 }
 
 Eigen::Vector2d cell_of(const CSpaceRequest& r) { return {r.axes[0].step(), r.axes[1].step()}; }
@@ -230,16 +236,18 @@ std::vector<std::string> wrong_way_slides(const PairBuild& b, int& checked) {
     return out;
 }
 
+void check_walks(const PairBuild& b) {
+    const FaceWalks w = walk_from_faces(b);
+    MESSAGE(b.name << ": " << w.walks << " walks (" << w.to_divisions << " to divisions, " << w.to_contacts << " to contacts), "
+                   << w.unchecked << " ending at a limit or nowhere");
+    CHECK(w.walks > 0);
+    for (const auto& m : w.missed) FAIL_CHECK(m);
+}
+
 // The walks from the faces of every pair of these mechanisms.
 void check_walks(const std::vector<std::string>& files) {
     for (const auto& file : files)
-        for (const auto& b : bundled_pairs(file)) {
-            const FaceWalks w = walk_from_faces(b);
-            MESSAGE(b.name << ": " << w.walks << " walks (" << w.to_divisions << " to divisions, " << w.to_contacts << " to contacts), "
-                           << w.unchecked << " ending at a limit or nowhere");
-            CHECK(w.walks > 0);
-            for (const auto& m : w.missed) FAIL_CHECK(m);
-        }
+        for (const auto& b : bundled_pairs(file)) check_walks(b);
 }
 
 }  // namespace
@@ -259,4 +267,51 @@ TEST_CASE("geometry/boundary_reach: [large] the Geneva drive's, the escapement's
 
 TEST_CASE("geometry/boundary_reach: the ratchet's, cams', Scotch yoke's and crank latch's motions meet the places their adjacency names") {
     check_walks({"ratchet.def", "cam.def", "cam_free.def", "scotch_yoke.def", "crank_latch.def"});
+}
+
+// Known holes, which is why the walks' check may fail here: at the random drawings' grid (48 x 48)
+// blocked features thinner than a cell go unseen (a walk meets blocked space with no boundary place
+// within a twentieth of a cell), and faces bordered by such features, or by lines closer than a
+// cell, lead elsewhere than the walk goes. The slides always hold.
+TEST_CASE("geometry/boundary_reach: [large] random mechanisms' slides reach the joins they move towards") {
+    int pairs = 0, slides = 0;
+    for (int seed = 1; pairs < 200 && seed < 4000; ++seed) {
+        const std::string text = qm::test::random_mechanism_text(seed);
+        CAPTURE(text);
+        qm::Diagnostics d;
+        const auto m = read_mechanism("random-" + std::to_string(seed) + ".def", text, d);
+        if (!m) continue;
+        for (const auto& b : pairs_of(*m, "random-" + std::to_string(seed), false)) {
+            ++pairs;
+            for (const auto& problem : wrong_way_slides(b, slides)) FAIL_CHECK(problem);
+        }
+    }
+    MESSAGE(pairs << " random pairs, " << slides << " slides checked");
+    CHECK(pairs == 200);
+    CHECK(slides > 1000);
+}
+
+TEST_CASE("geometry/boundary_reach: [large] random mechanisms' motions meet the places their adjacency names" * doctest::may_fail()) {
+    int pairs = 0, walks = 0, missed = 0, unseen = 0, elsewhere = 0;
+    for (int seed = 1; pairs < 200 && seed < 4000; ++seed) {
+        const std::string text = qm::test::random_mechanism_text(seed);
+        CAPTURE(text);
+        qm::Diagnostics d;
+        const auto m = read_mechanism("random-" + std::to_string(seed) + ".def", text, d);
+        if (!m) continue;
+        for (const auto& b : pairs_of(*m, "random-" + std::to_string(seed), false)) {
+            ++pairs;
+            const FaceWalks w = walk_from_faces(b);
+            walks += w.walks;
+            for (const auto& miss : w.missed) {
+                ++missed;
+                (miss.find("near;") != std::string::npos ? unseen : elsewhere) += 1;
+                FAIL_CHECK(miss);
+            }
+        }
+    }
+    MESSAGE(pairs << " random pairs, " << walks << " walks, " << missed << " missed: " << unseen << " into blocked space no place lies near, "
+                  << elsewhere << " to a place not named");
+    CHECK(pairs == 200);
+    CHECK(missed == 0);
 }
