@@ -36,7 +36,7 @@ double across(const CSpaceRequest& r, const Division& d, const Eigen::Vector2d& 
 }  // namespace
 
 FaceGrid::FaceGrid(const PairOracle& oracle, const CSpaceResult& space, const std::array<std::vector<double>, 2>& features)
-    : space_(space) {
+    : oracle_(oracle), space_(space) {
     const auto& r = space.request;
     std::array<std::vector<bool>, 2> inserted;
     for (std::size_t k = 0; k < 2; ++k) {
@@ -188,6 +188,18 @@ void FaceLocator::cut_along(const std::vector<std::pair<Eigen::Vector2d, Eigen::
                 // whose straight line the barrier is) touches the edges from it, and crosses none.
                 const double on = on_line_cells * grid_.step(1 - k);
                 if (std::abs(q[1 - k] - grid_.coordinate(1 - k, o)) <= on || std::abs(grid_.coordinate(1 - k, o + 1) - q[1 - k]) <= on) continue;
+                // The edge passes through blocked space beside the crossing (the tip, on one side of
+                // a chord that runs along its flank), or the barrier, a chord across free space (a
+                // strip thinner than a cell under a join), separates nothing there.
+                bool through = false;
+                for (const double f : {0.0, 1e-4, 1e-3, 1e-2, 0.05, 0.1, 0.2})
+                    for (const double sign : {-1.0, 1.0}) {
+                        Eigen::Vector2d y = q;
+                        y[1 - k] += sign * f * grid_.step(1 - k);
+                        const bool on_edge = y[1 - k] >= grid_.coordinate(1 - k, o) && y[1 - k] <= grid_.coordinate(1 - k, o + 1);
+                        through = through || (on_edge && grid_.oracle().blocked(wrap(r, y)));
+                    }
+                if (!through) continue;
                 // The edge on grid line `line` (across axis k) from sample o along the other axis.
                 const int i = k == 0 ? line : o, j = k == 0 ? o : line;
                 cut_[1 - k][static_cast<std::size_t>(i + n0_ * j)] = 1;

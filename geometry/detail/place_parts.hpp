@@ -68,8 +68,11 @@ public:
     [[nodiscard]] bool sampled(int k, int i) const { return !inserted_[static_cast<std::size_t>(k)][static_cast<std::size_t>(i)]; }
     // The uniform grid's step along axis k (tolerances are measured in it).
     [[nodiscard]] double step(int k) const noexcept { return space_.request.axes[static_cast<std::size_t>(k)].step(); }
+    // The pair's geometry, for configurations off the grid (it outlives the grid).
+    [[nodiscard]] const PairOracle& oracle() const noexcept { return oracle_; }
 
 private:
+    const PairOracle& oracle_;
     const CSpaceResult& space_;
     std::array<std::vector<double>, 2> at_;
     std::array<std::vector<bool>, 2> inserted_;
