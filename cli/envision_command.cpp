@@ -4,6 +4,8 @@
 #include "geometry_usage.hpp"
 #include "bridge/pair_places.hpp"
 #include "graph_svg.hpp"
+#include "progress_bar.hpp"
+#include "resource_limits.hpp"
 #include "rules_location.hpp"
 
 #include "envision/envisionment.hpp"
@@ -18,10 +20,9 @@
 #include "envision/why_not.hpp"
 #include "geometry/metric_scene_parser.hpp"
 
-#include <chrono>
 #include <filesystem>
 #include <fstream>
-#include <cstdio>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <unistd.h>
@@ -41,6 +42,7 @@ struct Options {
     std::optional<std::string> next, previous, from, path, why_not;
     std::vector<std::string> avoid;
     std::optional<std::filesystem::path> dot, svg;
+    ResourceLimits limits;  // --max-memory (the engines' fact and environment limits are not the envisioner's)
 };
 
 int usage_error(std::ostream& err, const std::string& what) {
@@ -90,31 +92,6 @@ std::optional<bridge::ForceRef> parse_without(const g::Mechanism& m, const std::
     return ref;
 }
 
-// A progress bar on stderr, once the run has taken a second, only when stderr is a terminal.
-class ProgressBar {
-public:
-    ProgressBar() : start_(std::chrono::steady_clock::now()), on_(isatty(STDERR_FILENO) == 1) {}
-    ~ProgressBar() {
-        if (drawn_) std::fprintf(stderr, "\r%-78s\r", "");
-    }
-    void operator()(const ev::Progress& p) {
-        if (!on_ || std::chrono::steady_clock::now() - start_ < std::chrono::seconds(1)) return;
-        drawn_ = true;
-        if (p.total == 0) {
-            std::fprintf(stderr, "\r%-40s %zu", p.phase.c_str(), p.done);
-        } else {
-            const int width = 30, filled = static_cast<int>(width * p.done / p.total);
-            std::fprintf(stderr, "\r%-32s [%s%s] %zu/%zu", p.phase.c_str(), std::string(static_cast<std::size_t>(filled), '#').c_str(),
-                         std::string(static_cast<std::size_t>(width - filled), ' ').c_str(), p.done, p.total);
-        }
-        std::fflush(stderr);
-    }
-
-private:
-    std::chrono::steady_clock::time_point start_;
-    bool on_ = false, drawn_ = false;
-};
-
 // Writes text to path whole, or not at all (a file beside it, renamed).
 bool write_whole(const std::filesystem::path& path, const std::string& text, std::ostream& err) {
     const std::filesystem::path part = path.string() + ".part";
@@ -132,14 +109,11 @@ bool write_whole(const std::filesystem::path& path, const std::string& text, std
     return !ec;
 }
 
-// The graph laid out and drawn by Graphviz's library (cli/graph_svg.hpp), written whole.
-bool render_svg(const std::filesystem::path& path, const std::string& graph, std::ostream& err) {
-    const GraphSvg drawn = graph_svg(graph);
-    if (!drawn.svg) {
-        err << "qm-atms: cannot draw '" << path.string() << "': " << drawn.why_not << '\n';
-        return false;
-    }
-    return write_whole(path, *drawn.svg, err);
+// The graph laid out and drawn by Graphviz's library (cli/graph_svg.hpp), for the file at path.
+std::optional<std::string> render_svg(const std::filesystem::path& path, const std::string& graph, std::ostream& err) {
+    GraphSvg drawn = graph_svg(graph);
+    if (!drawn.svg) err << "qm-atms: cannot draw '" << path.string() << "': " << drawn.why_not << '\n';
+    return std::move(drawn.svg);
 }
 
 // The command line (usage in cli/geometry_usage.cpp). nullopt: `o` read; otherwise the exit status
@@ -155,6 +129,7 @@ std::optional<int> parse_options(std::span<const std::string> args, Options& o, 
     cl.flag("--stats", o.stats);
     cl.flag("--verify", o.verify);
     cl.single("--max-states", "a positive whole number", max_states);
+    declare_memory_option(cl, o.limits);
     cl.repeated("--without", "an external force to take away, e.g. --without 'Force follower' or --without 'Force follower spring'",
                 o.without);
     cl.single("--from", "a state, e.g. --from '#3'", o.from);
@@ -168,6 +143,7 @@ std::optional<int> parse_options(std::span<const std::string> args, Options& o, 
     cl.place_cache(cache, no_cache);
     cl.single("--rules", "a folder of .rules files (the Clock laws)", rules);
     if (auto status = cl.parse(args, out, err)) return status;
+    if (auto status = read_limit_options(cl, o.limits, err)) return status;
     if (scenes.empty()) return cl.error(err, "envision takes a metric scene");
     if (scenes.size() > 1) return cl.error(err, "envision takes one metric scene, not '" + scenes[0] + "' and '" + scenes[1] + "'");
     o.scene = scenes[0];
@@ -225,11 +201,9 @@ int answer_questions(const Options& o, const g::Mechanism& m, const ev::Envision
     return 0;
 }
 
-}  // namespace
-
-int envision_command(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
-    Options o;
-    if (auto status = parse_options(args, o, out, err)) return *status;
+// Everything after the options: the envisionment, then the answer, made whole before any of it is
+// written (so that a limit reached on the way leaves no file and nothing on `out`).
+int envision_and_answer(const Options& o, ProgressBar& bar, std::ostream& out, std::ostream& err) {
     Diagnostics diags;
     const auto m = g::read_mechanism_file(o.scene, diags);
     if (!m) return bad_input(diags, err);
@@ -247,12 +221,9 @@ int envision_command(std::span<const std::string> args, std::ostream& out, std::
     const std::optional<g::PlaceCache> cache = bridge::open_place_cache(o.use_cache, o.cache);
     options.cache = cache ? &*cache : nullptr;
     options.max_states = o.max_states;
-    std::optional<ev::Envisionment> e;
-    {
-        ProgressBar bar;
-        options.progress = [&bar](const ev::Progress& p) { bar(p); };
-        e = ev::envision(*m, options, diags);
-    }
+    options.progress = [&bar](const ev::Progress& p) { bar(p); };
+    auto e = ev::envision(*m, options, diags);
+    bar.envisioned();
     diags.print(err);
     if (!e || diags.has_errors()) return 2;
     std::ostringstream text;
@@ -269,25 +240,52 @@ int envision_command(std::span<const std::string> args, std::ostream& out, std::
         if (!s) return bad_input(diags, err);
         ev::restrict_to_reachable(*e, s->chain, s->state);
     }
-    if (o.dot || o.svg) {
-        std::ostringstream graph;
-        ev::write_dot(graph, *e);
-        if (o.dot && !write_whole(*o.dot, graph.str(), err)) return 2;
-        if (o.svg && !render_svg(*o.svg, graph.str(), err)) return 2;
+    std::ostringstream graph;
+    if (o.dot || o.svg) ev::write_dot(graph, *e);
+    std::optional<std::string> svg;
+    if (o.svg) {
+        svg = render_svg(*o.svg, graph.str(), err);
+        if (!svg) return 2;
     }
     if (o.json) ev::write_json(text, *m, *e);
     else if (o.table) ev::write_table(text, *m, *e);
     else ev::write_text(text, *m, *e);
+    // --verify: the invariants of envision/verify.hpp; a broken one is the laws' failure (exit 1).
+    const auto problems = o.verify ? ev::verify(*m, *e) : std::vector<std::string>{};
+    if (o.dot && !write_whole(*o.dot, graph.str(), err)) return 2;
+    if (svg && !write_whole(*o.svg, *svg, err)) return 2;
     out << text.str();
     if (o.stats) print_stats(*e, err);
-    // --verify: the invariants of envision/verify.hpp; a broken one is the laws' failure (exit 1).
     if (o.verify) {
-        const auto problems = ev::verify(*m, *e);
         for (const auto& p : problems) err << "qm-atms: verify: " << p << '\n';
         if (!problems.empty()) return 1;
         err << "qm-atms: verify: every invariant holds (terminal states are jams, cycles can repeat, moving states lead on)\n";
     }
     return 0;
+}
+
+}  // namespace
+
+int envision_command(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
+    Options o;
+    if (auto status = parse_options(args, o, out, err)) return *status;
+    apply_memory_limit(o.limits);
+    // A limit (--max-states, --max-memory) ends the run with what it had found, and nothing written.
+    ProgressBar bar(isatty(STDERR_FILENO) == 1);
+    try {
+        return envision_and_answer(o, bar, out, err);
+    } catch (LimitReached& limit) {
+        bar.clear();
+        limit.doing = bar.run_so_far(o.scene);
+        err << limit_message(limit, "");
+        return 2;
+    } catch (const std::bad_alloc&) {
+        const auto message = memory_limit_message(bar.run_so_far(o.scene));
+        if (!message) throw;
+        bar.clear();
+        err << *message;
+        return 2;
+    }
 }
 
 }  // namespace qm::cli

@@ -3,12 +3,17 @@
 //             (docs/ENVISION.md): every mechanical state and transition of each kinematic chain of a
 //             metric mechanism (docs/METRIC_SCENE_FORMAT.md), as text, as the transition table of the
 //             thesis' Appendices A-D (--table), or as JSON (--json, schema qm-envisionment/1).
-//             Options: --max-states N (default 1000000), --without 'Force PART [CAUSE]' (repeatable),
-//             --cache DIR | --no-cache (place vocabularies), --rules DIR (the laws; default the
-//             rules/clock folder beside the other laws), --stats (timings on stderr).
-// Errors:     bad input (the scene, the options, the laws' files, too many states) is reported on
-//             `err` as `file:line:col: error: ...` and the command returns 2, having written nothing
-//             on `out`. A progress bar goes to stderr when it is a terminal and the run takes more
+//             Options: --max-states N (default 1000000), --max-memory SIZE (cli/resource_limits.hpp),
+//             --without 'Force PART [CAUSE]' (repeatable), --cache DIR | --no-cache (place
+//             vocabularies), --rules DIR (the laws; default the rules/clock folder beside the other
+//             laws), --stats (timings on stderr).
+// Errors:     bad input (the scene, the options, the laws' files) is reported on `err` as
+//             `file:line:col: error: ...` and the command returns 2, having written nothing on
+//             `out` and no file. So is a limit reached (--max-states, --max-memory), as
+//             `qm-atms: error: state limit 1500 reached while finding the states of chain 2 of
+//             clock.def (after 0.4 s: 1500 states and 2352 transitions found); raise it with
+//             --max-states`. A progress line
+//             (cli/progress_bar.hpp) goes to stderr when it is a terminal and the run takes more
 //             than a second. qm::InternalError propagates to main (exit 1).
 #pragma once
 #include <ostream>

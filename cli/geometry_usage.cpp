@@ -21,8 +21,9 @@ const char* explore_usage() noexcept {
 }
 
 const char* envision_usage() noexcept {
-    return "       qm-atms envision METRIC-SCENE [--table | --json] [--max-states N] [--without 'Force PART [CAUSE]']...\n"
-           "                        [--from STATE] [--next STATE] [--previous STATE] [--path 'DESC; DESC; ...' [--avoid 'DESC']...]\n"
+    return "       qm-atms envision METRIC-SCENE [--table | --json] [--max-states N] [--max-memory SIZE]\n"
+           "                        [--without 'Force PART [CAUSE]']... [--from STATE] [--next STATE] [--previous STATE]\n"
+           "                        [--path 'DESC; DESC; ...' [--avoid 'DESC']...]\n"
            "                        [--why-not 'STATE -> STATE'] [--dot FILE] [--svg FILE]\n"
            "                        [--cache DIR | --no-cache] [--rules DIR] [--stats] [--verify]\n"
            "                                                  the envisionment: states, transitions, cycles (docs/ENVISION.md)\n";

@@ -74,6 +74,10 @@ constexpr const char* size_what = "a size like 4G, 512M or 2000000000 (bytes)";
 void declare_limit_options(CommandOptions& options, ResourceLimits& limits) {
     options.single("--max-facts", count_what, limits.given.facts);
     options.single("--max-environments", count_what, limits.given.environments);
+    declare_memory_option(options, limits);
+}
+
+void declare_memory_option(CommandOptions& options, ResourceLimits& limits) {
     options.single("--max-memory", size_what, limits.given.memory);
 }
 
@@ -93,11 +97,15 @@ std::optional<int> read_limit_options(const CommandOptions& options, ResourceLim
     return std::nullopt;
 }
 
-const char* limits_usage() noexcept {
+std::string limits_usage() {
     return "  --max-facts N   stop with an error when the laws hold more than N facts (default 500000)\n"
            "  --max-environments N\n"
-           "                  stop with an error when the ATMS holds more than N environments (default 1000000)\n"
-           "  --max-memory SIZE\n"
+           "                  stop with an error when the ATMS holds more than N environments (default 1000000)\n" +
+           std::string(memory_usage());
+}
+
+const char* memory_usage() noexcept {
+    return "  --max-memory SIZE\n"
            "                  stop with an error when the process needs more memory, e.g. 4G or 512M\n"
            "                  (default: half the machine's)\n";
 }
@@ -119,9 +127,11 @@ void apply_memory_limit(const ResourceLimits& limits) {
 std::string limit_message(const LimitReached& limit, const std::string& doing) {
     std::string where = "qm-atms: ";
     if (limit.where) where = to_string(*limit.where) + ": ";
-    const bool facts = limit.kind == LimitReached::Kind::facts;
+    const char* option = limit.kind == LimitReached::Kind::facts          ? "--max-facts"
+                         : limit.kind == LimitReached::Kind::environments ? "--max-environments"
+                                                                          : "--max-states";
     return where + "error: " + limit_noun(limit.kind) + " limit " + std::to_string(limit.limit) + " reached while " +
-           (limit.doing.empty() ? doing : limit.doing) + "; raise it with " + (facts ? "--max-facts" : "--max-environments") + "\n";
+           (limit.doing.empty() ? doing : limit.doing) + "; raise it with " + option + "\n";
 }
 
 std::optional<std::string> memory_limit_message(const std::string& doing) {

@@ -1,12 +1,13 @@
 // cli/resource_limits.hpp
 // Provides:   the resource limits of the commands that run laws or rule programs (`qm-atms
-//             SCENE.def`, `qm-atms run`; an envisioner command takes the same): ResourceLimits, the
+//             SCENE.def`, `qm-atms run`; `qm-atms envision` takes --max-memory): ResourceLimits, the
 //             options that set them (--max-facts N, --max-environments N, --max-memory SIZE),
-//             declared by declare_limit_options() and checked by read_limit_options(), their usage
-//             text, apply_memory_limit() (the process' address
-//             space, RLIMIT_AS), and the message a reached limit ends a run with:
+//             declared by declare_limit_options() (or --max-memory alone, declare_memory_option())
+//             and checked by read_limit_options(), their usage text, apply_memory_limit() (the
+//             process' address space, RLIMIT_AS), and the message a reached limit ends a run with
+//             (the envisioner's state limit, --max-states, included):
 //               grow.rules:2:1: error: fact limit 500000 reached while firing rule 'grow'; raise it with --max-facts
-//               qm-atms: error: memory limit 11.7 GB reached while running grow.rules; raise it with --max-memory
+//               qm-atms: error: memory limit 11.7G reached while running grow.rules; raise it with --max-memory
 //             (exit 2: a program or scene that needs more is bad input at these settings; nothing
 //             is written to standard output).
 // Defaults:   chosen so that runaway programs (a rule that counts up for ever) stop within
@@ -41,11 +42,14 @@ struct ResourceLimits {
 
 // Declares the limit options on a command's line, into limits.given.
 void declare_limit_options(CommandOptions& options, ResourceLimits& limits);
+// Declares --max-memory alone, for a command whose other limits are its own (envision's --max-states).
+void declare_memory_option(CommandOptions& options, ResourceLimits& limits);
 // After options.parse(): the values given, checked, into limits; nullopt, or 2 after reporting a bad one.
 [[nodiscard]] std::optional<int> read_limit_options(const CommandOptions& options, ResourceLimits& limits, std::ostream& err);
 
-// The options' lines for a usage text.
-[[nodiscard]] const char* limits_usage() noexcept;
+// The options' lines for a usage text: all three, or --max-memory's alone.
+[[nodiscard]] std::string limits_usage();
+[[nodiscard]] const char* memory_usage() noexcept;
 
 // Limits this process' address space to limits.max_memory (RLIMIT_AS; not under AddressSanitizer,
 // which reserves terabytes of address space for its shadow memory), so that an allocation beyond it

@@ -10,6 +10,9 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <exception>
+#include <mutex>
+#include <system_error>
 #include <thread>
 
 namespace qm::envision {
@@ -24,38 +27,63 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 // (One engine per place vector with its states as contexts was measured slower: the contexts'
 // labels cost more than the engines, docs/PERFORMANCE.md.) The states are independent: workers
 // take them in turn, each with its own engines and diagnostics; the results are put in state order.
+// An exception in a worker (std::bad_alloc under a memory limit) stops them all and is rethrown here.
 bool find_transitions(const Laws& laws, const geometry::Mechanism& m, const Envisionment& e, ChainEnvisionment& c,
-                      const ChainTables& tables, const EnvisionOptions& options, const std::string& phase, Diagnostics& diagnostics) {
+                      const ChainTables& tables, const EnvisionOptions& options, Diagnostics& diagnostics) {
     const std::size_t n = c.states.size();
+    Progress report{.phase = Progress::Phase::transitions, .chain = c.chain.index + 1, .states = n};
+    if (options.progress) options.progress(report);
     std::vector<std::vector<Transition>> out(n);
     std::vector<std::vector<std::int8_t>> net(n);
     std::vector<char> rest(n, 0);
-    std::atomic<std::size_t> next{0}, done{0};
+    std::atomic<std::size_t> next{0}, done{0}, found{0};
     std::atomic<bool> failed{false};
+    std::exception_ptr thrown;
+    std::mutex thrown_mutex;
     const unsigned workers = std::max(1u, std::min<unsigned>(options.threads, static_cast<unsigned>(std::max<std::size_t>(1, n / 64))));
     std::vector<Diagnostics> reported(workers);
     auto work = [&](unsigned w) {
-        for (std::size_t i = next++; i < n && !failed; i = next++) {
-            const StateId id{static_cast<std::uint32_t>(i)};
-            const State* const only[] = {&c.states[id]};
-            PlaceVectorEngine engine(laws, m, e.pairs, c.chain, only, options.without, /*labelled=*/false);
-            const auto env = engine.run(0, reported[w]);
-            const auto dynamics = env ? read_dynamics(engine.engine(), *env, m, e.pairs, c.chain, reported[w]) : std::nullopt;
-            if (!dynamics) {
-                failed = true;
-                return;
+        try {
+            for (std::size_t i = next++; i < n && !failed; i = next++) {
+                const StateId id{static_cast<std::uint32_t>(i)};
+                const State* const only[] = {&c.states[id]};
+                PlaceVectorEngine engine(laws, m, e.pairs, c.chain, only, options.without, /*labelled=*/false);
+                const auto env = engine.run(0, reported[w]);
+                const auto dynamics = env ? read_dynamics(engine.engine(), *env, m, e.pairs, c.chain, reported[w]) : std::nullopt;
+                if (!dynamics) {
+                    failed = true;
+                    return;
+                }
+                net[i] = dynamics->net_force;
+                rest[i] = dynamics->may_rest ? 1 : 0;
+                out[i] = successors(id, c.states, c.chain, e.pairs, tables, *dynamics);
+                found += out[i].size();
+                const std::size_t finished = ++done;
+                if (w == 0 && options.progress && finished % 16 == 0) {
+                    report.transitions = found;
+                    report.done = finished;
+                    options.progress(report);
+                }
             }
-            net[i] = dynamics->net_force;
-            rest[i] = dynamics->may_rest ? 1 : 0;
-            out[i] = successors(id, c.states, c.chain, e.pairs, tables, *dynamics);
-            const std::size_t finished = ++done;
-            if (w == 0 && options.progress && finished % 16 == 0) options.progress({phase, finished, n});
+        } catch (...) {
+            failed = true;
+            const std::lock_guard lock(thrown_mutex);
+            if (!thrown) thrown = std::current_exception();
         }
     };
     std::vector<std::thread> threads;
-    for (unsigned w = 1; w < workers; ++w) threads.emplace_back(work, w);
+    try {
+        for (unsigned w = 1; w < workers; ++w) threads.emplace_back(work, w);
+    } catch (const std::system_error&) {  // no thread to be had (a memory limit): the others do its share
+    }
     work(0);
     for (auto& t : threads) t.join();
+    if (thrown) {  // the caller still learns how far the phase got
+        report.transitions = found;
+        report.done = done;
+        if (options.progress) options.progress(report);
+        std::rethrow_exception(thrown);
+    }
     for (const auto& r : reported)
         for (const auto& d : r.items()) diagnostics.add(d);
     if (failed) return false;
@@ -64,6 +92,9 @@ bool find_transitions(const Laws& laws, const geometry::Mechanism& m, const Envi
         c.states[StateId{static_cast<std::uint32_t>(i)}].may_rest = rest[i] != 0;
         c.transitions.insert(c.transitions.end(), out[i].begin(), out[i].end());
     }
+    report.transitions = c.transitions.size();
+    report.done = n;
+    if (options.progress) options.progress(report);
     return true;
 }
 
@@ -108,25 +139,24 @@ std::optional<Envisionment> envision(const geometry::Mechanism& m, const Envisio
     e.mechanism = m.name;
     for (const auto& part : m.parts) e.parts.push_back(part.name);
     auto t0 = std::chrono::steady_clock::now();
-    if (options.progress) options.progress({"place vocabularies", 0, 0});
+    if (options.progress) options.progress({});
     auto pairs = bridge::mechanism_places(m, {.cache = options.cache, .forces = true}, diagnostics);
     if (!pairs) return std::nullopt;
     e.pairs = std::move(*pairs);
     e.seconds_places = seconds_since(t0);
-    std::size_t budget = options.max_states;
+    StateLimit limit{.max_states = options.max_states};
     for (auto& chain : kinematic_chains(m, e.pairs)) {
         ChainEnvisionment c;
         c.chain = std::move(chain);
         t0 = std::chrono::steady_clock::now();
-        auto space = enumerate_states(*laws, m, e.pairs, c.chain, budget, options.progress, diagnostics);
+        auto space = enumerate_states(*laws, m, e.pairs, c.chain, limit, options.progress, diagnostics);
         if (!space) return std::nullopt;
-        budget -= space->states.size();
+        limit.found_before += space->states.size();
         c.states = StateIndex(std::move(space->states));
         c.nogoods = space->nogoods;
         c.seconds_states = seconds_since(t0);
         t0 = std::chrono::steady_clock::now();
-        const std::string phase = "chain " + std::to_string(c.chain.index + 1) + ": transitions";
-        if (!find_transitions(*laws, m, e, c, space->tables, options, phase, diagnostics)) return std::nullopt;
+        if (!find_transitions(*laws, m, e, c, space->tables, options, diagnostics)) return std::nullopt;
         c.seconds_transitions = seconds_since(t0);
         c.tables = std::move(space->tables);
         c.graph = behaviour_graph(c.states.states(), c.transitions, bounded_objects(e, c.chain), kept_by_places(e, c));

@@ -7,8 +7,10 @@
 //             envisioned separately and never multiplied (9.1.3).
 // Ownership:  Envisionment is a value type owning the pairs' vocabularies and the chains' states
 //             and transitions; it refers to the mechanism by nothing (printers take both).
-// Errors:     bad input (the scene's pairs, the laws' files, more states than options.max_states):
-//             located diagnostics, and nothing is returned. InternalError for bugs.
+// Errors:     bad input (the scene's pairs, the laws' files): located diagnostics, and nothing is
+//             returned. More states than options.max_states: qm::LimitReached{states}, thrown after
+//             a progress report with the states found (envision/progress.hpp); std::bad_alloc
+//             (under a memory limit) is thrown on from any worker. InternalError for bugs.
 // Knows no law: every consequence of a law comes from the rule files.
 #pragma once
 #include "bridge/place_facts.hpp"
@@ -53,7 +55,7 @@ struct EnvisionOptions {
     std::size_t max_states = 1'000'000;           // over all chains
     std::vector<bridge::ForceRef> without;        // external forces taken away (what-if)
     unsigned threads = 2;                         // workers finding the states' transitions (1: none)
-    ProgressFn progress;
+    ProgressFn progress;                          // called as envision/progress.hpp says
 };
 
 [[nodiscard]] std::optional<Envisionment> envision(const geometry::Mechanism& m, const EnvisionOptions& options,

@@ -5,6 +5,7 @@
 #include "engine/preferences.hpp"
 #include "envision/fact_reader.hpp"
 #include "qm/assert.hpp"
+#include "qm/limit_reached.hpp"
 
 #include <algorithm>
 #include <array>
@@ -328,8 +329,9 @@ std::optional<StateSpaceEngine> state_space_engine(const Laws& laws, const g::Me
 }
 
 std::optional<StateSpace> enumerate_states(const Laws& laws, const g::Mechanism& m, std::span<const bridge::PairPlaces> pairs,
-                                           const Chain& chain, std::size_t max_states, const ProgressFn& progress,
-                                           Diagnostics& diagnostics) {
+                                           const Chain& chain, StateLimit limit, const ProgressFn& progress, Diagnostics& diagnostics) {
+    Progress report{.phase = Progress::Phase::states, .chain = chain.index + 1};
+    if (progress) progress(report);
     auto e = run_laws(laws, m, pairs, chain, diagnostics);
     if (!e) return std::nullopt;
     const auto ordered = order_choice_sets(*e, m, pairs, chain, diagnostics);
@@ -337,9 +339,8 @@ std::optional<StateSpace> enumerate_states(const Laws& laws, const g::Mechanism&
 
     StateSpace out;
     bool exceeded = false;
-    const std::string phase = "chain " + std::to_string(chain.index + 1) + ": states";
-    e->atms().for_each_interpretation(ordered->sets, e->atms().empty_environment(), [&](const atms::Environment& env) {
-        if (out.states.size() >= max_states) {
+    auto each = [&](const atms::Environment& env) {
+        if (limit.found_before + out.states.size() >= limit.max_states) {
             exceeded = true;
             return false;
         }
@@ -355,15 +356,22 @@ std::optional<StateSpace> enumerate_states(const Laws& laws, const g::Mechanism&
                     break;
                 }
         out.states.push_back(std::move(s));
-        if (progress && out.states.size() % 4096 == 0) progress({phase, out.states.size(), 0});
+        if (progress && out.states.size() % 4096 == 0) {
+            report.states = out.states.size();
+            progress(report);
+        }
         return true;
-    });
-    if (exceeded) {
-        diagnostics.error({m.where.file.empty() ? m.name : m.where.file, m.where.line, m.where.column},
-                          "chain " + std::to_string(chain.index + 1) + " has more than " + std::to_string(max_states) +
-                              " states (the limit of --max-states): nothing was written; raise the limit or simplify the mechanism");
-        return std::nullopt;
+    };
+    try {
+        e->atms().for_each_interpretation(ordered->sets, e->atms().empty_environment(), each);
+    } catch (...) {  // out of memory: the caller still learns how many states were found
+        report.states = out.states.size();
+        if (progress) progress(report);
+        throw;
     }
+    report.states = out.states.size();
+    if (progress) progress(report);
+    if (exceeded) throw LimitReached(LimitReached::Kind::states, limit.max_states);
     std::sort(out.states.begin(), out.states.end(), state_less);
     read_tables(*e, pairs, chain, out.tables);
     if (!read_preference(*e, m, chain, *ordered, out.tables, diagnostics)) return std::nullopt;

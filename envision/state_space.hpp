@@ -15,8 +15,9 @@
 //             or whose preference or settling the tables cannot read (a `prefer` on motions
 //             without a (step-allows O H) assumption for each motion, an assumption of the
 //             settling vocabulary concluded as a plain fact or made for only some motions):
-//             located diagnostics, at the `prefer` or the rule. More than max_states states: an error saying so (nothing is
-//             returned).
+//             located diagnostics, at the `prefer` or the rule. More states than the limit allows:
+//             qm::LimitReached{states} (qm/limit_reached.hpp), thrown as soon as one state too many
+//             is found, after a progress report with the states found.
 #pragma once
 #include "bridge/place_facts.hpp"
 #include "envision/chain.hpp"
@@ -50,9 +51,14 @@ struct StateSpaceEngine {
                                                                  std::span<const bridge::PairPlaces> pairs, const Chain& chain,
                                                                  Diagnostics& diagnostics);
 
+// The most states over all chains, and how many the chains before this one have.
+struct StateLimit {
+    std::size_t max_states = 0;
+    std::size_t found_before = 0;
+};
+
 [[nodiscard]] std::optional<StateSpace> enumerate_states(const Laws& laws, const geometry::Mechanism& m,
                                                          std::span<const bridge::PairPlaces> pairs, const Chain& chain,
-                                                         std::size_t max_states, const ProgressFn& progress,
-                                                         Diagnostics& diagnostics);
+                                                         StateLimit limit, const ProgressFn& progress, Diagnostics& diagnostics);
 
 }  // namespace qm::envision

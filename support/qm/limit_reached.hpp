@@ -1,7 +1,8 @@
 // support/qm/limit_reached.hpp
 // Provides:   LimitReached, the exception a module throws when a resource limit its driver set is
-//             reached (the ATMS' environment limit, the engine's fact limit): a runaway program or
-//             scene stops there instead of running until the machine's memory is gone.
+//             reached (the ATMS' environment limit, the engine's fact limit, the envisioner's state
+//             limit): a runaway program or scene stops there instead of running until the machine's
+//             memory is gone.
 //             It is bad input, not a bug: the command line reports it as
 //             `error: fact limit 500000 reached while firing rule 'grow'; raise it with --max-facts`
 //             and exits with 2 (cli/resource_limits.hpp).
@@ -22,20 +23,20 @@
 namespace qm {
 
 struct LimitReached : std::exception {
-    enum class Kind { facts, environments };
+    enum class Kind { facts, environments, states };
     LimitReached(Kind k, std::size_t n) : kind(k), limit(n) {}
     Kind kind;
     std::size_t limit = 0;               // the limit that was reached
     std::string doing;                   // e.g. "firing rule 'grow'"; empty: not known
     std::optional<SourceLocation> where;  // what the work was about, e.g. the rule's location
     [[nodiscard]] const char* what() const noexcept override {
-        return kind == Kind::facts ? "fact limit reached" : "environment limit reached";
+        return kind == Kind::facts ? "fact limit reached" : kind == Kind::environments ? "environment limit reached" : "state limit reached";
     }
 };
 
-// "fact" or "environment", for messages.
+// "fact", "environment" or "state", for messages.
 [[nodiscard]] inline const char* limit_noun(LimitReached::Kind k) noexcept {
-    return k == LimitReached::Kind::facts ? "fact" : "environment";
+    return k == LimitReached::Kind::facts ? "fact" : k == LimitReached::Kind::environments ? "environment" : "state";
 }
 
 }  // namespace qm

@@ -265,7 +265,7 @@ TEST_CASE("cli/envision: bad input is a located error, exit status 2, and nothin
         {lonely, "envision_lonely.def:1:1: error: mechanism 'lonely' has no kinematic pair"},
         {apart, "envision_apart.def:4:10: error: the parts 'a' and 'b' never touch"},
         {free, "envision_free.def:4:10: error: 'crank' and 'hub' never touch: their configuration space is all free"},
-        {metric_scene("cam.def") + " --max-states 10", "has more than 10 states (the limit of --max-states): nothing was written"},
+        {metric_scene("cam.def") + " --max-states 10", "qm-atms: error: state limit 10 reached while finding the states of chain 1 of "},
         {metric_scene("cam.def") + " --max-states 0", "--max-states expects a positive whole number, not '0'"},
         {metric_scene("cam.def") + " --next 'cam/follower-99 0 0'", "--next:1:1: error: pair 'cam/follower' has no place 99"},
         {metric_scene("cam.def") + " --next 'wheel/follower-1 0 0'", "--next:1:1: error: unknown pair 'wheel/follower'"},

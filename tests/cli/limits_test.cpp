@@ -1,15 +1,18 @@
 // tests/cli/limits_test.cpp: the resource limits and the uniform option errors of the command
 // line, end to end through the built qm-atms. A program that counts for
-// ever, 40 binary choice sets (2^40 interpretations) and a scene analysed under a tiny limit stop
-// with `error: ... limit N reached while ...; raise it with --...`, exit 2 and an empty standard
-// output; every option error names the option and what it expected (exact texts); a scene or rule
-// file that starts with a UTF-8 byte-order mark reads as without it; a folder given as a scene
-// says so.
+// ever, 40 binary choice sets (2^40 interpretations), a scene analysed under a tiny limit and an
+// envisionment beyond --max-states or --max-memory stop with `error: ... limit N reached while
+// ...; raise it with --...` (the envisioner's saying how far it got), exit 2, an empty standard
+// output and no output file; every option error names the option and what it expected (exact
+// texts); a scene or rule file that starts with a UTF-8 byte-order mark reads as without it; a
+// folder given as a scene says so.
 #include "qm_atms_run.hpp"
 #include "qm/address_sanitizer.hpp"
 #include <doctest/doctest.h>
 #include <fcntl.h>
+#include <filesystem>
 #include <fstream>
+#include <regex>
 #include <spawn.h>
 #include <string>
 #include <tuple>
@@ -36,6 +39,26 @@ std::string choices(int n) {
     std::string text;
     for (int i = 1; i <= n; ++i) text += "fact (o " + std::to_string(i) + ")\n";
     return text + "rule pick\n  when (o ?x)\n  then [exactly one ?v in {a b}: assume (v ?x ?v)]\n";
+}
+
+// `qm-atms envision` with the tests' place cache, asked to write its graph to `limits_test.dot`
+// and `limits_test.svg` (removed first, so that a file there after the run was written by it).
+const std::string limit_dot = dir + "/limits_test.dot", limit_svg = dir + "/limits_test.svg";
+qm::test::Run envision_with_files(const std::string& args) {
+    for (const auto& f : {limit_dot, limit_svg}) std::filesystem::remove(f);
+    return qm_atms("envision " + args + " --dot " + limit_dot + " --svg " + limit_svg + " --cache " + dir + "/envision-test-place-cache",
+                   "limits");
+}
+
+bool any_graph_file() {
+    for (const auto& f : {limit_dot, limit_svg})
+        if (std::filesystem::exists(f) || std::filesystem::exists(f + ".part")) return true;
+    return false;
+}
+
+// The message with its elapsed time, which differs from run to run, as `T`.
+std::string with_time_as_t(const std::string& message) {
+    return std::regex_replace(message, std::regex("\\(after [0-9]+\\.[0-9] s: "), "(after T s: ");
 }
 }  // namespace
 
@@ -124,6 +147,62 @@ TEST_CASE("cli/limits: a small --max-memory still bounds the process") {
 }
 #endif
 
+TEST_CASE("cli/limits: envision stops at --max-states over all chains, says how far it got, and writes nothing") {
+    const std::string cam = src_dir + "/scenarios/metric/cam.def";
+    auto r = envision_with_files(cam + " --max-states 10");
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK_FALSE(any_graph_file());
+    CHECK(with_time_as_t(r.err) == "qm-atms: error: state limit 10 reached while finding the states of chain 1 of " + cam +
+                                       " (after T s: 10 states and 0 transitions found); raise it with --max-states\n");
+    // Chain 1 (a gear pair) has 3 states and 4 transitions; chain 2 reaches the limit, which is the
+    // one given, not what chain 1 left of it.
+    const std::string two = src_dir + "/tests/envision/scenes/two_chains.def";
+    auto t = envision_with_files(two + " --max-states 10");
+    CHECK(t.status == 2);
+    CHECK(t.out.empty());
+    CHECK_FALSE(any_graph_file());
+    CHECK(with_time_as_t(t.err) == "qm-atms: error: state limit 10 reached while finding the states of chain 2 of " + two +
+                                       " (after T s: 10 states and 4 transitions found); raise it with --max-states\n");
+    // Exactly as many states as the limit: not reached, and both files are written.
+    auto enough = envision_with_files(two + " --max-states 141");
+    CHECK(enough.status == 0);
+    CHECK(enough.out.find("summary: 2 chains, 141 states, ") != std::string::npos);
+    CHECK(std::filesystem::exists(limit_dot));
+    CHECK(std::filesystem::exists(limit_svg));
+}
+
+#ifndef QM_UNDER_ASAN
+TEST_CASE("cli/limits: envision stops at --max-memory, says how far it got, and writes nothing") {
+    // The escapement with its train has far more states than 40M of address space holds; which
+    // phase the memory runs out in depends on the machine's libraries, so any is accepted.
+    const std::string train = src_dir + "/scenarios/clock/escapement_train.def";
+    // The pairs' vocabularies are cached first, so that the limit is met by the states and
+    // transitions rather than by the geometry.
+    const auto cached = envision_with_files(train + " --max-states 1");
+    REQUIRE(cached.status == 2);
+    CHECK(cached.err.find("state limit 1 reached while finding the states of chain 1") != std::string::npos);
+    auto r = envision_with_files(train + " --max-memory 40M");
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK_FALSE(any_graph_file());
+    const std::regex message("qm-atms: error: memory limit 40M reached while (making the place vocabularies|finding the (states|transitions) "
+                             "of chain 1) of " + train + R"( \(after [0-9]+\.[0-9] s: [0-9]+ states and [0-9]+ transitions found\); )"
+                             "raise it with --max-memory\n");
+    CHECK_MESSAGE(std::regex_match(r.err, message), r.err);
+}
+#endif
+
+TEST_CASE("cli/limits: envision's limits, when not reached, change nothing") {
+    const std::string cam = src_dir + "/scenarios/metric/cam.def --json --cache " + dir + "/envision-test-place-cache";
+    auto free = qm_atms("envision " + cam, "limits");
+    REQUIRE(free.status == 0);
+    auto bounded = qm_atms("envision " + cam + " --max-states 138 --max-memory 2G", "limits");
+    CHECK(bounded.status == 0);
+    CHECK(bounded.out == free.out);
+    CHECK(bounded.err == free.err);
+}
+
 TEST_CASE("cli/options: every option error names the option and what it expected") {
     const std::string scene = src_dir + "/scenarios/alex/arch.def";
     const std::vector<std::pair<std::string, std::string>> cases = {
@@ -148,6 +227,9 @@ TEST_CASE("cli/options: every option error names the option and what it expected
         {scene + " --situation 1 --situation 2", "--situation is given twice ('1', '2'): give it once"},
         {scene + " --max-facts 1 --max-facts 1", "--max-facts is given twice ('1', '1'): give it once"},
         {scene + " --bogus", "unknown option '--bogus'"},
+        {"envision x.def --max-memory 4Q", "--max-memory expects a size like 4G, 512M or 2000000000 (bytes), not '4Q'"},
+        {"envision x.def --max-memory 1G --max-memory 2G", "--max-memory is given twice ('1G', '2G'): give it once"},
+        {"envision x.def --max-facts 10", "unknown option '--max-facts'"},
     };
     for (const auto& [args, message] : cases) {
         CAPTURE(args);
