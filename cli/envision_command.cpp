@@ -247,6 +247,7 @@ int envision_command(std::span<const std::string> args, std::ostream& out, std::
     const std::optional<g::PlaceCache> cache = bridge::open_place_cache(o.use_cache, o.cache);
     options.cache = cache ? &*cache : nullptr;
     options.max_states = o.max_states;
+    options.from = o.from;  // the states it leads to, found on the fly
     std::optional<ev::Envisionment> e;
     {
         ProgressBar bar;
@@ -263,11 +264,6 @@ int envision_command(std::span<const std::string> args, std::ostream& out, std::
         out << text.str();
         if (o.stats) print_stats(*e, err);
         return 0;
-    }
-    if (o.from) {
-        const auto s = ev::find_state(*e, *o.from, "--from", diags);
-        if (!s) return bad_input(diags, err);
-        ev::restrict_to_reachable(*e, s->chain, s->state);
     }
     if (o.dot || o.svg) {
         std::ostringstream graph;

@@ -4,6 +4,7 @@
 #include "bridge/pair_places.hpp"
 #include "bridge/place_correlation.hpp"
 #include "envision/state_dynamics.hpp"
+#include "envision/state_query.hpp"
 #include "envision/state_space.hpp"
 #include "envision/successors.hpp"
 
@@ -24,9 +25,11 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 // (One engine per place vector with its states as contexts was measured slower: the contexts'
 // labels cost more than the engines, docs/PERFORMANCE.md.) The states are independent: workers
 // take them in turn, each with its own engines and diagnostics; the results are put in state order.
+// `which`: the states to find them for (their transitions are appended in that order).
 bool find_transitions(const Laws& laws, const geometry::Mechanism& m, const Envisionment& e, ChainEnvisionment& c,
-                      const ChainTables& tables, const EnvisionOptions& options, const std::string& phase, Diagnostics& diagnostics) {
-    const std::size_t n = c.states.size();
+                      const ChainTables& tables, const EnvisionOptions& options, const std::vector<StateId>& which,
+                      const std::string& phase, Diagnostics& diagnostics) {
+    const std::size_t n = which.size();
     std::vector<std::vector<Transition>> out(n);
     std::vector<std::vector<std::int8_t>> net(n);
     std::vector<char> rest(n, 0);
@@ -36,7 +39,7 @@ bool find_transitions(const Laws& laws, const geometry::Mechanism& m, const Envi
     std::vector<Diagnostics> reported(workers);
     auto work = [&](unsigned w) {
         for (std::size_t i = next++; i < n && !failed; i = next++) {
-            const StateId id{static_cast<std::uint32_t>(i)};
+            const StateId id = which[i];
             const State* const only[] = {&c.states[id]};
             PlaceVectorEngine engine(laws, m, e.pairs, c.chain, only, options.without, /*labelled=*/false);
             const auto env = engine.run(0, reported[w]);
@@ -60,10 +63,43 @@ bool find_transitions(const Laws& laws, const geometry::Mechanism& m, const Envi
         for (const auto& d : r.items()) diagnostics.add(d);
     if (failed) return false;
     for (std::size_t i = 0; i < n; ++i) {
-        c.states[StateId{static_cast<std::uint32_t>(i)}].net_force = std::move(net[i]);
-        c.states[StateId{static_cast<std::uint32_t>(i)}].may_rest = rest[i] != 0;
+        c.states[which[i]].net_force = std::move(net[i]);
+        c.states[which[i]].may_rest = rest[i] != 0;
         c.transitions.insert(c.transitions.end(), out[i].begin(), out[i].end());
     }
+    return true;
+}
+
+// Every state's transitions, in state order.
+bool find_all_transitions(const Laws& laws, const geometry::Mechanism& m, const Envisionment& e, ChainEnvisionment& c,
+                          const ChainTables& tables, const EnvisionOptions& options, const std::string& phase, Diagnostics& diagnostics) {
+    std::vector<StateId> all(c.states.size());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = StateId{static_cast<std::uint32_t>(i)};
+    return find_transitions(laws, m, e, c, tables, options, all, phase, diagnostics);
+}
+
+// The transitions of the states `from` leads to, found on the fly (11.3.4): a breadth-first search
+// whose every layer is found as the whole space's states are, so the others' are never computed.
+// Sorted by state at the end, as the whole space's are.
+bool find_reachable_transitions(const Laws& laws, const geometry::Mechanism& m, const Envisionment& e, ChainEnvisionment& c,
+                                const ChainTables& tables, const EnvisionOptions& options, StateId from, const std::string& phase,
+                                Diagnostics& diagnostics) {
+    std::vector<bool> seen(c.states.size(), false);
+    std::vector<StateId> layer{from};
+    seen[from.value] = true;
+    while (!layer.empty()) {
+        const std::size_t before = c.transitions.size();
+        if (!find_transitions(laws, m, e, c, tables, options, layer, phase, diagnostics)) return false;
+        std::vector<StateId> next;
+        for (std::size_t t = before; t < c.transitions.size(); ++t)
+            if (const StateId to = c.transitions[t].to; !seen[to.value]) {
+                seen[to.value] = true;
+                next.push_back(to);
+            }
+        std::sort(next.begin(), next.end(), [](StateId a, StateId b) { return a.value < b.value; });
+        layer = std::move(next);
+    }
+    std::stable_sort(c.transitions.begin(), c.transitions.end(), [](const Transition& a, const Transition& b) { return a.from.value < b.from.value; });
     return true;
 }
 
@@ -113,6 +149,8 @@ std::optional<Envisionment> envision(const geometry::Mechanism& m, const Envisio
     if (!pairs) return std::nullopt;
     e.pairs = std::move(*pairs);
     e.seconds_places = seconds_since(t0);
+    // Every chain's states first (they are cheap, and --from may name a state of any chain), then
+    // their transitions: all of them, or with --from those of the states it leads to.
     std::size_t budget = options.max_states;
     for (auto& chain : kinematic_chains(m, e.pairs)) {
         ChainEnvisionment c;
@@ -123,15 +161,27 @@ std::optional<Envisionment> envision(const geometry::Mechanism& m, const Envisio
         budget -= space->states.size();
         c.states = StateIndex(std::move(space->states));
         c.nogoods = space->nogoods;
-        c.seconds_states = seconds_since(t0);
-        t0 = std::chrono::steady_clock::now();
-        const std::string phase = "chain " + std::to_string(c.chain.index + 1) + ": transitions";
-        if (!find_transitions(*laws, m, e, c, space->tables, options, phase, diagnostics)) return std::nullopt;
-        c.seconds_transitions = seconds_since(t0);
         c.tables = std::move(space->tables);
-        c.graph = behaviour_graph(c.states.states(), c.transitions, bounded_objects(e, c.chain), kept_by_places(e, c));
+        c.seconds_states = seconds_since(t0);
         e.chains.push_back(std::move(c));
     }
+    std::optional<StateRef> start;
+    if (options.from) {
+        start = find_state(e, *options.from, "--from", diagnostics);
+        if (!start) return std::nullopt;
+    }
+    for (std::size_t k = 0; k < e.chains.size(); ++k) {
+        if (start && start->chain != k) continue;
+        auto& c = e.chains[k];
+        t0 = std::chrono::steady_clock::now();
+        const std::string phase = "chain " + std::to_string(c.chain.index + 1) + ": transitions";
+        const bool found = start ? find_reachable_transitions(*laws, m, e, c, c.tables, options, start->state, phase, diagnostics)
+                                 : find_all_transitions(*laws, m, e, c, c.tables, options, phase, diagnostics);
+        if (!found) return std::nullopt;
+        c.seconds_transitions = seconds_since(t0);
+        c.graph = behaviour_graph(c.states.states(), c.transitions, bounded_objects(e, c.chain), kept_by_places(e, c));
+    }
+    if (start) restrict_to_reachable(e, start->chain, start->state);
     return e;
 }
 
