@@ -221,6 +221,7 @@ int envision_and_answer(const Options& o, ProgressBar& bar, std::ostream& out, s
     const std::optional<g::PlaceCache> cache = bridge::open_place_cache(o.use_cache, o.cache);
     options.cache = cache ? &*cache : nullptr;
     options.max_states = o.max_states;
+    options.from = o.from;  // the states it leads to, found on the fly
     options.progress = [&bar](const ev::Progress& p) { bar(p); };
     auto e = ev::envision(*m, options, diags);
     bar.envisioned();
@@ -234,11 +235,6 @@ int envision_and_answer(const Options& o, ProgressBar& bar, std::ostream& out, s
         out << text.str();
         if (o.stats) print_stats(*e, err);
         return 0;
-    }
-    if (o.from) {
-        const auto s = ev::find_state(*e, *o.from, "--from", diags);
-        if (!s) return bad_input(diags, err);
-        ev::restrict_to_reachable(*e, s->chain, s->state);
     }
     std::ostringstream graph;
     if (o.dot || o.svg) ev::write_dot(graph, *e);

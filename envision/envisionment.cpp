@@ -4,6 +4,7 @@
 #include "bridge/pair_places.hpp"
 #include "bridge/place_correlation.hpp"
 #include "envision/state_dynamics.hpp"
+#include "envision/state_query.hpp"
 #include "envision/state_space.hpp"
 #include "envision/successors.hpp"
 
@@ -28,9 +29,11 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 // labels cost more than the engines, docs/PERFORMANCE.md.) The states are independent: workers
 // take them in turn, each with its own engines and diagnostics; the results are put in state order.
 // An exception in a worker (std::bad_alloc under a memory limit) stops them all and is rethrown here.
+// `which`: the states to find them for (their transitions are appended in that order).
 bool find_transitions(const Laws& laws, const geometry::Mechanism& m, const Envisionment& e, ChainEnvisionment& c,
-                      const ChainTables& tables, const EnvisionOptions& options, Diagnostics& diagnostics) {
-    const std::size_t n = c.states.size();
+                      const ChainTables& tables, const EnvisionOptions& options, const std::vector<StateId>& which,
+                      Diagnostics& diagnostics) {
+    const std::size_t n = which.size();
     Progress report{.phase = Progress::Phase::transitions, .chain = c.chain.index + 1, .states = n};
     if (options.progress) options.progress(report);
     std::vector<std::vector<Transition>> out(n);
@@ -45,7 +48,7 @@ bool find_transitions(const Laws& laws, const geometry::Mechanism& m, const Envi
     auto work = [&](unsigned w) {
         try {
             for (std::size_t i = next++; i < n && !failed; i = next++) {
-                const StateId id{static_cast<std::uint32_t>(i)};
+                const StateId id = which[i];
                 const State* const only[] = {&c.states[id]};
                 PlaceVectorEngine engine(laws, m, e.pairs, c.chain, only, options.without, /*labelled=*/false);
                 const auto env = engine.run(0, reported[w]);
@@ -88,13 +91,45 @@ bool find_transitions(const Laws& laws, const geometry::Mechanism& m, const Envi
         for (const auto& d : r.items()) diagnostics.add(d);
     if (failed) return false;
     for (std::size_t i = 0; i < n; ++i) {
-        c.states[StateId{static_cast<std::uint32_t>(i)}].net_force = std::move(net[i]);
-        c.states[StateId{static_cast<std::uint32_t>(i)}].may_rest = rest[i] != 0;
+        c.states[which[i]].net_force = std::move(net[i]);
+        c.states[which[i]].may_rest = rest[i] != 0;
         c.transitions.insert(c.transitions.end(), out[i].begin(), out[i].end());
     }
     report.transitions = c.transitions.size();
     report.done = n;
     if (options.progress) options.progress(report);
+    return true;
+}
+
+// Every state's transitions, in state order.
+bool find_all_transitions(const Laws& laws, const geometry::Mechanism& m, const Envisionment& e, ChainEnvisionment& c,
+                          const ChainTables& tables, const EnvisionOptions& options, Diagnostics& diagnostics) {
+    std::vector<StateId> all(c.states.size());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = StateId{static_cast<std::uint32_t>(i)};
+    return find_transitions(laws, m, e, c, tables, options, all, diagnostics);
+}
+
+// The transitions of the states `from` leads to, found on the fly (11.3.4): a breadth-first search
+// whose every layer is found as the whole space's states are, so the others' are never computed.
+// Sorted by state at the end, as the whole space's are. Progress is reported a layer at a time.
+bool find_reachable_transitions(const Laws& laws, const geometry::Mechanism& m, const Envisionment& e, ChainEnvisionment& c,
+                                const ChainTables& tables, const EnvisionOptions& options, StateId from, Diagnostics& diagnostics) {
+    std::vector<bool> seen(c.states.size(), false);
+    std::vector<StateId> layer{from};
+    seen[from.value] = true;
+    while (!layer.empty()) {
+        const std::size_t before = c.transitions.size();
+        if (!find_transitions(laws, m, e, c, tables, options, layer, diagnostics)) return false;
+        std::vector<StateId> next;
+        for (std::size_t t = before; t < c.transitions.size(); ++t)
+            if (const StateId to = c.transitions[t].to; !seen[to.value]) {
+                seen[to.value] = true;
+                next.push_back(to);
+            }
+        std::sort(next.begin(), next.end(), [](StateId a, StateId b) { return a.value < b.value; });
+        layer = std::move(next);
+    }
+    std::stable_sort(c.transitions.begin(), c.transitions.end(), [](const Transition& a, const Transition& b) { return a.from.value < b.from.value; });
     return true;
 }
 
@@ -144,7 +179,17 @@ std::optional<Envisionment> envision(const geometry::Mechanism& m, const Envisio
     if (!pairs) return std::nullopt;
     e.pairs = std::move(*pairs);
     e.seconds_places = seconds_since(t0);
+    // Each chain's states, then their transitions; with --from, which may name a state of any chain,
+    // every chain's states first (they are cheap), then only the transitions of the states it leads to.
     StateLimit limit{.max_states = options.max_states};
+    auto transitions_and_graph = [&](ChainEnvisionment& c, std::optional<StateId> from) {
+        const auto t1 = std::chrono::steady_clock::now();
+        const bool found = from ? find_reachable_transitions(*laws, m, e, c, c.tables, options, *from, diagnostics)
+                                : find_all_transitions(*laws, m, e, c, c.tables, options, diagnostics);
+        c.seconds_transitions = seconds_since(t1);
+        if (found) c.graph = behaviour_graph(c.states.states(), c.transitions, bounded_objects(e, c.chain), kept_by_places(e, c));
+        return found;
+    };
     for (auto& chain : kinematic_chains(m, e.pairs)) {
         ChainEnvisionment c;
         c.chain = std::move(chain);
@@ -154,14 +199,15 @@ std::optional<Envisionment> envision(const geometry::Mechanism& m, const Envisio
         limit.found_before += space->states.size();
         c.states = StateIndex(std::move(space->states));
         c.nogoods = space->nogoods;
-        c.seconds_states = seconds_since(t0);
-        t0 = std::chrono::steady_clock::now();
-        if (!find_transitions(*laws, m, e, c, space->tables, options, diagnostics)) return std::nullopt;
-        c.seconds_transitions = seconds_since(t0);
         c.tables = std::move(space->tables);
-        c.graph = behaviour_graph(c.states.states(), c.transitions, bounded_objects(e, c.chain), kept_by_places(e, c));
+        c.seconds_states = seconds_since(t0);
+        if (!options.from && !transitions_and_graph(c, std::nullopt)) return std::nullopt;
         e.chains.push_back(std::move(c));
     }
+    if (!options.from) return e;
+    const auto start = find_state(e, *options.from, "--from", diagnostics);
+    if (!start || !transitions_and_graph(e.chains[start->chain], start->state)) return std::nullopt;
+    restrict_to_reachable(e, start->chain, start->state);
     return e;
 }
 

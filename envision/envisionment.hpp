@@ -4,13 +4,15 @@
 //             chain's mechanical states (ATMS interpretations under the laws' nogoods), the
 //             transitions out of every state (one engine per state running the laws of
 //             rules/clock/), and the behaviour graph's cycles and terminal states. Chains are
-//             envisioned separately and never multiplied (9.1.3).
+//             envisioned separately and never multiplied (9.1.3). With options.from, only the
+//             transitions of the states it leads to are found, and only they are kept.
 // Ownership:  Envisionment is a value type owning the pairs' vocabularies and the chains' states
 //             and transitions; it refers to the mechanism by nothing (printers take both).
-// Errors:     bad input (the scene's pairs, the laws' files): located diagnostics, and nothing is
-//             returned. More states than options.max_states: qm::LimitReached{states}, thrown after
-//             a progress report with the states found (envision/progress.hpp); std::bad_alloc
-//             (under a memory limit) is thrown on from any worker. InternalError for bugs.
+// Errors:     bad input (the scene's pairs, the laws' files, a --from that names no state):
+//             located diagnostics, and nothing is returned. More states than options.max_states:
+//             qm::LimitReached{states}, thrown after a progress report with the states found
+//             (envision/progress.hpp); std::bad_alloc (under a memory limit) is thrown on from any
+//             worker. InternalError for bugs.
 // Knows no law: every consequence of a law comes from the rule files.
 #pragma once
 #include "bridge/place_facts.hpp"
@@ -24,6 +26,7 @@
 #include "geometry/place_cache.hpp"
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace qm::envision {
@@ -56,6 +59,9 @@ struct EnvisionOptions {
     std::vector<bridge::ForceRef> without;        // external forces taken away (what-if)
     unsigned threads = 2;                         // workers finding the states' transitions (1: none)
     ProgressFn progress;                          // called as envision/progress.hpp says
+    // `--from`: a state (as find_state() reads it, errors located in "--from"); only what it leads
+    // to is envisioned, on the fly (11.3.4), as restrict_to_reachable() leaves it.
+    std::optional<std::string> from;
 };
 
 [[nodiscard]] std::optional<Envisionment> envision(const geometry::Mechanism& m, const EnvisionOptions& options,
