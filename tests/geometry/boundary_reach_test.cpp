@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <set>
@@ -250,6 +251,24 @@ void check_walks(const std::vector<std::string>& files) {
         for (const auto& b : bundled_pairs(file)) check_walks(b);
 }
 
+// The pairs of the first 200 random drawings (tests/support/random_mechanism.hpp) the geometry
+// takes, each handed to `check`; how many there were.
+int for_random_pairs(const std::function<void(const PairBuild&)>& check) {
+    int pairs = 0;
+    for (int seed = 1; pairs < 200 && seed < 4000; ++seed) {
+        const std::string text = qm::test::random_mechanism_text(seed);
+        CAPTURE(text);
+        qm::Diagnostics d;
+        const auto m = read_mechanism("random-" + std::to_string(seed) + ".def", text, d);
+        if (!m) continue;
+        for (const auto& b : pairs_of(*m, "random-" + std::to_string(seed), false)) {
+            ++pairs;
+            check(b);
+        }
+    }
+    return pairs;
+}
+
 }  // namespace
 
 TEST_CASE("geometry/boundary_reach: [large] a slide along a CSEG reaches the join it moves towards, on every bundled pair") {
@@ -269,47 +288,31 @@ TEST_CASE("geometry/boundary_reach: the ratchet's, cams', Scotch yoke's and cran
     check_walks({"ratchet.def", "cam.def", "cam_free.def", "scotch_yoke.def", "crank_latch.def"});
 }
 
-// Known holes, which is why the walks' check may fail here: at the random drawings' grid (48 x 48)
-// blocked features thinner than a cell go unseen (a walk meets blocked space with no boundary place
-// within a twentieth of a cell), and faces bordered by such features, or by lines closer than a
-// cell, lead elsewhere than the walk goes. The slides always hold.
 TEST_CASE("geometry/boundary_reach: [large] random mechanisms' slides reach the joins they move towards") {
-    int pairs = 0, slides = 0;
-    for (int seed = 1; pairs < 200 && seed < 4000; ++seed) {
-        const std::string text = qm::test::random_mechanism_text(seed);
-        CAPTURE(text);
-        qm::Diagnostics d;
-        const auto m = read_mechanism("random-" + std::to_string(seed) + ".def", text, d);
-        if (!m) continue;
-        for (const auto& b : pairs_of(*m, "random-" + std::to_string(seed), false)) {
-            ++pairs;
-            for (const auto& problem : wrong_way_slides(b, slides)) FAIL_CHECK(problem);
-        }
-    }
+    int slides = 0;
+    const int pairs = for_random_pairs([&](const PairBuild& b) {
+        for (const auto& problem : wrong_way_slides(b, slides)) FAIL_CHECK(problem);
+    });
     MESSAGE(pairs << " random pairs, " << slides << " slides checked");
     CHECK(pairs == 200);
     CHECK(slides > 1000);
 }
 
+// Known holes, which is why this check may fail: at the random drawings' grid (48 x 48) blocked
+// features thinner than a cell go unseen (a walk meets blocked space with no boundary place within
+// a twentieth of a cell), and faces bordered by such features, or by lines closer than a cell,
+// lead elsewhere than the walk goes.
 TEST_CASE("geometry/boundary_reach: [large] random mechanisms' motions meet the places their adjacency names" * doctest::may_fail()) {
-    int pairs = 0, walks = 0, missed = 0, unseen = 0, elsewhere = 0;
-    for (int seed = 1; pairs < 200 && seed < 4000; ++seed) {
-        const std::string text = qm::test::random_mechanism_text(seed);
-        CAPTURE(text);
-        qm::Diagnostics d;
-        const auto m = read_mechanism("random-" + std::to_string(seed) + ".def", text, d);
-        if (!m) continue;
-        for (const auto& b : pairs_of(*m, "random-" + std::to_string(seed), false)) {
-            ++pairs;
-            const FaceWalks w = walk_from_faces(b);
-            walks += w.walks;
-            for (const auto& miss : w.missed) {
-                ++missed;
-                (miss.find("near;") != std::string::npos ? unseen : elsewhere) += 1;
-                FAIL_CHECK(miss);
-            }
+    int walks = 0, missed = 0, unseen = 0, elsewhere = 0;
+    const int pairs = for_random_pairs([&](const PairBuild& b) {
+        const FaceWalks w = walk_from_faces(b);
+        walks += w.walks;
+        for (const auto& miss : w.missed) {
+            ++missed;
+            (miss.find("near;") != std::string::npos ? unseen : elsewhere) += 1;
+            FAIL_CHECK(miss);
         }
-    }
+    });
     MESSAGE(pairs << " random pairs, " << walks << " walks, " << missed << " missed: " << unseen << " into blocked space no place lies near, "
                   << elsewhere << " to a place not named");
     CHECK(pairs == 200);
