@@ -225,10 +225,14 @@ CacheLoad PlaceCache::load(const std::string& material) const {
     // Opened first and sized through the open file: another process may remove or replace the
     // file at any moment (stores rename a whole file into place), and an open file stays the one
     // that was opened. A file gone before it could be opened is a miss, not damage.
+    errno = 0;
     std::ifstream in(path, std::ios::binary);
     if (!in) {
-        if (!std::filesystem::exists(path, ec)) return {};
-        return refused(CacheStatus::corrupt, std::string("it cannot be read: ") + std::strerror(errno));
+        // Absent when it was opened is a miss, even if another process has stored it again since
+        // (asking whether it exists now would take that for damage).
+        const int why = errno;
+        if (why == ENOENT || !std::filesystem::exists(path, ec)) return {};
+        return refused(CacheStatus::corrupt, std::string("it cannot be read: ") + std::strerror(why));
     }
     in.seekg(0, std::ios::end);
     const std::streamoff end = in.tellg();

@@ -7,6 +7,7 @@
 #include "geometry/place_cache.hpp"
 
 #include <doctest/doctest.h>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <sys/stat.h>
@@ -290,9 +291,14 @@ TEST_CASE("geometry/place_cache: processes filling one cache at once leave one w
             for (int round = 0; round < 60; ++round) {
                 if (k == 0 && round % 10 == 0) std::filesystem::remove(cache.path_for(f.material));  // a reader then misses
                 const auto l = cache.load(f.material);
-                if (l.status != CacheStatus::hit && l.status != CacheStatus::miss) ++bad;
-                if (l.status == CacheStatus::hit && !same(l.vocabulary, f.vocabulary)) ++bad;
-                if (!cache.store(f.material, f.vocabulary)) ++bad;
+                // Each failure says why on standard error, for the log of a run that failed.
+                const auto fail = [&](const std::string& what) {
+                    ++bad;
+                    std::fprintf(stderr, "process %d, round %d: %s\n", k, round, what.c_str());
+                };
+                if (l.status != CacheStatus::hit && l.status != CacheStatus::miss) fail("load refused the file: " + l.why);
+                if (l.status == CacheStatus::hit && !same(l.vocabulary, f.vocabulary)) fail("load read another vocabulary");
+                if (const auto stored = cache.store(f.material, f.vocabulary); !stored) fail("store failed: " + stored.why);
             }
             ::_exit(bad == 0 ? 0 : 1);
         }
