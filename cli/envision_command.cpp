@@ -222,6 +222,10 @@ int envision_and_answer(const Options& o, ProgressBar& bar, std::ostream& out, s
     options.cache = cache ? &*cache : nullptr;
     options.max_states = o.max_states;
     options.from = o.from;  // the states it leads to, found on the fly
+    if (o.next && !o.previous && !o.path && !o.why_not) {  // one state's transitions answer it
+        options.from = o.next;
+        options.from_only = true;
+    }
     options.progress = [&bar](const ev::Progress& p) { bar(p); };
     auto e = ev::envision(*m, options, diags);
     bar.envisioned();

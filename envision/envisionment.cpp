@@ -205,8 +205,14 @@ std::optional<Envisionment> envision(const geometry::Mechanism& m, const Envisio
         e.chains.push_back(std::move(c));
     }
     if (!options.from) return e;
-    const auto start = find_state(e, *options.from, "--from", diagnostics);
-    if (!start || !transitions_and_graph(e.chains[start->chain], start->state)) return std::nullopt;
+    const auto start = find_state(e, *options.from, options.from_only ? "--next" : "--from", diagnostics);
+    if (!start) return std::nullopt;
+    if (options.from_only) {
+        if (!find_transitions(*laws, m, e, e.chains[start->chain], e.chains[start->chain].tables, options, {start->state}, diagnostics))
+            return std::nullopt;
+        return e;
+    }
+    if (!transitions_and_graph(e.chains[start->chain], start->state)) return std::nullopt;
     restrict_to_reachable(e, start->chain, start->state);
     return e;
 }

@@ -62,6 +62,9 @@ struct EnvisionOptions {
     // `--from`: a state (as find_state() reads it, errors located in "--from"); only what it leads
     // to is envisioned, on the fly (11.3.4), as restrict_to_reachable() leaves it.
     std::optional<std::string> from;
+    // With `from`: that state's own transitions alone, every chain's states kept and nothing cut
+    // down (`--next` asks no more).
+    bool from_only = false;
 };
 
 [[nodiscard]] std::optional<Envisionment> envision(const geometry::Mechanism& m, const EnvisionOptions& options,

@@ -3,7 +3,9 @@
 // (restrict_to_reachable, whose reachable set behaviour_query_test checks against a depth-first
 // search): the same states shown, transitions, cycles, transient cycles, terminal states and
 // possible rests, from seeded random states of one- and two-chain mechanisms; and the states the
-// start does not lead to were never given transitions (their net forces were never found).
+// start does not lead to were never given transitions (their net forces were never found). And
+// `--next` (from_only): one state's transitions answer it as the whole envisionment does.
+#include "envision/state_report.hpp"
 #include "envision_fixture.hpp"
 
 #include <random>
@@ -73,6 +75,38 @@ TEST_CASE("envision/reachable: --from on the fly is the whole envisionment cut d
 TEST_CASE("envision/reachable: [large] --from on the fly is the whole envisionment cut down, chains of several pairs") {
     same_as_cut_down("scenarios/clock/clock.def", 4);
     same_as_cut_down("scenarios/clock/pawl_ratchet.def", 4);
+}
+
+// `--next` with from_only: the one state's transitions, every chain kept; its answer is the one the
+// whole envisionment gives, and no other state was given transitions.
+void next_as_from_whole(const std::string& relative, int starts) {
+    const auto m = testing::mechanism(relative);
+    const Envisionment& whole = testing::envisioned_once(relative);
+    EnvisionOptions o;
+    o.rules = testing::rules_folder();
+    std::mt19937 rng(11);
+    for (int n = 0; n < starts; ++n) {
+        const std::size_t chain = std::uniform_int_distribution<std::size_t>(0, whole.chains.size() - 1)(rng);
+        const StateId s{std::uniform_int_distribution<std::uint32_t>(0, static_cast<std::uint32_t>(whole.chains[chain].states.size() - 1))(rng)};
+        CAPTURE(relative);
+        CAPTURE(from_option(whole, chain, s));
+        EnvisionOptions only = o;
+        only.from = from_option(whole, chain, s);
+        only.from_only = true;
+        const Envisionment got = testing::envisioned(m, only);
+        REQUIRE(got.chains.size() == whole.chains.size());
+        std::ostringstream a, b;
+        Diagnostics d;
+        REQUIRE(write_next(a, m, got, {chain, s}, o, d));
+        REQUIRE(write_next(b, m, whole, {chain, s}, o, d));
+        CHECK(a.str() == b.str());
+        for (const auto& t : got.chains[chain].transitions) CHECK(t.from == s);
+    }
+}
+
+TEST_CASE("envision/reachable: --next finds one state's transitions and answers as the whole envisionment does") {
+    next_as_from_whole("scenarios/clock/escapement.def", 6);
+    next_as_from_whole("tests/envision/scenes/two_chains.def", 4);
 }
 
 TEST_CASE("envision/reachable: a --from that names no state is bad input, located in the option") {
